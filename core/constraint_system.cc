@@ -1,0 +1,110 @@
+#include "core/constraint_system.h"
+
+#include <cstdio>
+#include <stdexcept>
+
+namespace icp {
+
+namespace {
+ExprGraph* SameGraph(Expr a, Expr b) {
+  if (a.graph() != b.graph())
+    throw std::invalid_argument("Expr: operands belong to different constraint systems");
+  return a.graph();
+}
+Expr Bin(Op op, Expr a, Expr b) {
+  ExprGraph* g = SameGraph(a, b);
+  return Expr(g, g->Binary(op, a.id(), b.id()));
+}
+Expr Un(Op op, Expr a) { return Expr(a.graph(), a.graph()->Unary(op, a.id())); }
+Expr Const(Expr like, double v) { return Expr(like.graph(), like.graph()->Constant(Interval(v))); }
+}  // namespace
+
+Expr operator+(Expr a, Expr b) { return Bin(Op::kAdd, a, b); }
+Expr operator-(Expr a, Expr b) { return Bin(Op::kSub, a, b); }
+Expr operator*(Expr a, Expr b) { return Bin(Op::kMul, a, b); }
+Expr operator/(Expr a, Expr b) { return Bin(Op::kDiv, a, b); }
+Expr operator-(Expr a) { return Un(Op::kNeg, a); }
+Expr operator+(Expr a, double b) { return a + Const(a, b); }
+Expr operator+(double a, Expr b) { return Const(b, a) + b; }
+Expr operator-(Expr a, double b) { return a - Const(a, b); }
+Expr operator-(double a, Expr b) { return Const(b, a) - b; }
+Expr operator*(double a, Expr b) { return Const(b, a) * b; }
+Expr operator*(Expr a, double b) { return a * Const(a, b); }
+Expr operator/(Expr a, double b) { return a / Const(a, b); }
+Expr Sqr(Expr a) { return Un(Op::kSqr, a); }
+Expr Pow(Expr a, int n) {
+  if (n == 0) return Const(a, 1.0);
+  if (n < 0) return Const(a, 1.0) / Pow(a, -n);
+  return Expr(a.graph(), a.graph()->Power(a.id(), n));
+}
+Expr Sqrt(Expr a) { return Un(Op::kSqrt, a); }
+Expr Exp(Expr a) { return Un(Op::kExp, a); }
+Expr Log(Expr a) { return Un(Op::kLog, a); }
+Expr Sin(Expr a) { return Un(Op::kSin, a); }
+Expr Cos(Expr a) { return Un(Op::kCos, a); }
+Expr Tan(Expr a) { return Un(Op::kTan, a); }
+Expr Atan(Expr a) { return Un(Op::kAtan, a); }
+Expr Sinh(Expr a) { return Un(Op::kSinh, a); }
+Expr Cosh(Expr a) { return Un(Op::kCosh, a); }
+Expr Tanh(Expr a) { return Un(Op::kTanh, a); }
+Expr Abs(Expr a) { return Un(Op::kAbs, a); }
+Expr Min(Expr a, Expr b) { return Bin(Op::kMin, a, b); }
+Expr Max(Expr a, Expr b) { return Bin(Op::kMax, a, b); }
+
+ConstraintSystem::ConstraintSystem(const ConstraintSystem& other)
+    : graph_(std::make_unique<ExprGraph>(*other.graph_)),
+      names_(other.names_),
+      domains_(other.domains_),
+      constraints_(other.constraints_) {}
+
+ConstraintSystem& ConstraintSystem::operator=(const ConstraintSystem& other) {
+  if (this != &other) *this = ConstraintSystem(other);
+  return *this;
+}
+
+Expr ConstraintSystem::AddVariable(const std::string& name, const Interval& domain) {
+  if (FindVariable(name) >= 0)
+    throw std::invalid_argument("variable '" + name + "' is declared twice");
+  names_.push_back(name);
+  domains_.push_back(domain);
+  return Var(num_variables() - 1);
+}
+
+void ConstraintSystem::AddConstraint(Expr lhs, Relation rel, Expr rhs) {
+  Interval range = rel == Relation::kEq    ? Interval(0.0)
+                   : rel == Relation::kLeq ? Interval(-kInf, 0.0)
+                                           : Interval(0.0, kInf);
+  // "f = c" with a constant right side keeps f's tree as it is.
+  const ExprNode& r = graph_->node(rhs.id());
+  if (r.op == Op::kConst) {
+    AddConstraint(lhs, range + r.value);
+    return;
+  }
+  AddConstraint(lhs - rhs, range);
+}
+
+void ConstraintSystem::AddConstraint(Expr f, const Interval& range) {
+  if (f.graph() != graph_.get())
+    throw std::invalid_argument("AddConstraint: expression from another constraint system");
+  constraints_.push_back(Constraint{f.id(), range});
+}
+
+int ConstraintSystem::FindVariable(const std::string& name) const {
+  for (int i = 0; i < num_variables(); ++i)
+    if (names_[i] == name) return i;
+  return -1;
+}
+
+std::string ConstraintSystem::ConstraintToString(int index) const {
+  const Constraint& c = constraints_.at(index);
+  std::string f = graph_->ToString(c.root, names_);
+  char buf[96];
+  if (c.range.IsPoint()) {
+    std::snprintf(buf, sizeof buf, " = %.17g", c.range.lo());
+    return f + buf;
+  }
+  std::snprintf(buf, sizeof buf, " in [%.17g, %.17g]", c.range.lo(), c.range.hi());
+  return f + buf;
+}
+
+}  // namespace icp

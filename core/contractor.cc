@@ -1,0 +1,94 @@
+#include "core/contractor.h"
+
+namespace icp {
+
+std::string_view ToString(ContractStatus status) {
+  switch (status) {
+    case ContractStatus::kContracted: return "contracted";
+    case ContractStatus::kFixpoint: return "fixpoint";
+    case ContractStatus::kEmpty: return "empty";
+    case ContractStatus::kStopped: return "stopped";
+  }
+  return "?";
+}
+
+WorkCounters& WorkCounters::operator+=(const WorkCounters& o) {
+  revise_calls += o.revise_calls;
+  newton_steps += o.newton_steps;
+  bisections += o.bisections;
+  inner_calls += o.inner_calls;
+  return *this;
+}
+
+StopCondition StopCondition::After(std::chrono::duration<double> budget) {
+  StopCondition s;
+  s.deadline_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(budget);
+  return s;
+}
+
+bool StopCondition::ShouldStop() const {
+  if (cancel_ && cancel_->load(std::memory_order_relaxed)) return true;
+  return deadline_ != Clock::time_point::max() && Clock::now() >= deadline_;
+}
+
+ContractStatus StatusOf(const Box& before, const Box& after) {
+  if (after.IsEmpty()) return ContractStatus::kEmpty;
+  return before == after ? ContractStatus::kFixpoint : ContractStatus::kContracted;
+}
+
+bool ShrankByMoreThan(const Interval& before, const Interval& after, double ratio) {
+  if (after.IsEmpty()) return !before.IsEmpty();
+  const double wb = before.Width();
+  const double wa = after.Width();
+  if (wb == kInf) return wa < kInf;
+  return wb - wa > ratio * wb;
+}
+
+ContractSummary SequenceContractor::Contract(Box& box, const StopCondition& stop) {
+  const Box before = box;
+  ContractSummary summary;
+  for (auto& part : parts_) {
+    ContractSummary s = part->Contract(box, stop);
+    summary.work += s.work;
+    if (s.status == ContractStatus::kEmpty) {
+      box.SetEmpty();
+      summary.status = ContractStatus::kEmpty;
+      return summary;
+    }
+    if (s.status == ContractStatus::kStopped) {
+      summary.status = ContractStatus::kStopped;
+      summary.message = s.message;
+      return summary;
+    }
+  }
+  summary.status = StatusOf(before, box);
+  return summary;
+}
+
+ContractSummary FixpointContractor::Contract(Box& box, const StopCondition& stop) {
+  const Box start = box;
+  ContractSummary summary;
+  for (int it = 0; it < max_iterations_; ++it) {
+    const Box before = box;
+    ContractSummary s = inner_->Contract(box, stop);
+    summary.work += s.work;
+    if (s.status == ContractStatus::kEmpty) {
+      box.SetEmpty();
+      summary.status = ContractStatus::kEmpty;
+      return summary;
+    }
+    if (s.status == ContractStatus::kStopped) {
+      summary.status = ContractStatus::kStopped;
+      summary.message = s.message;
+      return summary;
+    }
+    bool shrank = false;
+    for (std::size_t i = 0; i < box.size() && !shrank; ++i)
+      shrank = ShrankByMoreThan(before[i], box[i], ratio_);
+    if (!shrank) break;
+  }
+  summary.status = StatusOf(start, box);
+  return summary;
+}
+
+}  // namespace icp

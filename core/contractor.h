@@ -1,0 +1,103 @@
+// The Contractor interface: the unit every algorithm is built from (DESIGN.md).
+// Contract(box) shrinks box in place and never removes a point that satisfies
+// the constraints it stands for. An empty result is a value (kEmpty), a
+// timeout is a result (kStopped), never an exception.
+#ifndef ICPBENCH_CORE_CONTRACTOR_H_
+#define ICPBENCH_CORE_CONTRACTOR_H_
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/box.h"
+
+namespace icp {
+
+enum class ContractStatus {
+  kContracted,  // the box shrank
+  kFixpoint,    // nothing could be removed
+  kEmpty,       // no solution in the box; the box is empty
+  kStopped,     // the stop condition fired; the box is sound but maybe not at a fixpoint
+};
+std::string_view ToString(ContractStatus status);
+
+// Work done by a contraction, for comparisons that do not depend on the clock.
+struct WorkCounters {
+  std::int64_t revise_calls = 0;   // HC4Revise / primitive projections
+  std::int64_t newton_steps = 0;   // univariate interval Newton steps (BC3, BC4)
+  std::int64_t bisections = 0;     // bisections while shaving bounds
+  std::int64_t inner_calls = 0;    // calls of an inner contractor (3B)
+  WorkCounters& operator+=(const WorkCounters& o);
+};
+
+struct ContractSummary {
+  ContractStatus status = ContractStatus::kFixpoint;
+  std::string message;
+  WorkCounters work;
+};
+
+// When to give up: a wall-clock deadline and/or a cancellation flag.
+class StopCondition {
+ public:
+  using Clock = std::chrono::steady_clock;
+  StopCondition() = default;
+  static StopCondition After(std::chrono::duration<double> budget);
+  StopCondition& WithCancelFlag(const std::atomic<bool>* flag) {
+    cancel_ = flag;
+    return *this;
+  }
+  bool ShouldStop() const;
+
+ private:
+  Clock::time_point deadline_ = Clock::time_point::max();
+  const std::atomic<bool>* cancel_ = nullptr;
+};
+
+class Contractor {
+ public:
+  virtual ~Contractor() = default;
+  virtual std::string_view Name() const = 0;
+  virtual ContractSummary Contract(Box& box, const StopCondition& stop) = 0;
+};
+
+// Summary status for a contraction from before to after.
+ContractStatus StatusOf(const Box& before, const Box& after);
+
+// True when some component of after is narrower than in before by more than
+// ratio times its width (or became bounded).
+bool ShrankByMoreThan(const Interval& before, const Interval& after, double ratio);
+
+// Applies each contractor once, in order; stops early on an empty box.
+class SequenceContractor : public Contractor {
+ public:
+  explicit SequenceContractor(std::vector<std::unique_ptr<Contractor>> parts)
+      : parts_(std::move(parts)) {}
+  std::string_view Name() const override { return "sequence"; }
+  ContractSummary Contract(Box& box, const StopCondition& stop) override;
+
+ private:
+  std::vector<std::unique_ptr<Contractor>> parts_;
+};
+
+// Repeats an inner contractor until no component shrinks by more than ratio
+// (relative width), the box is empty, or max_iterations is reached.
+class FixpointContractor : public Contractor {
+ public:
+  FixpointContractor(std::unique_ptr<Contractor> inner, double ratio, int max_iterations)
+      : inner_(std::move(inner)), ratio_(ratio), max_iterations_(max_iterations) {}
+  std::string_view Name() const override { return "fixpoint"; }
+  ContractSummary Contract(Box& box, const StopCondition& stop) override;
+
+ private:
+  std::unique_ptr<Contractor> inner_;
+  double ratio_;
+  int max_iterations_;
+};
+
+}  // namespace icp
+
+#endif  // ICPBENCH_CORE_CONTRACTOR_H_

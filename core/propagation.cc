@@ -1,0 +1,73 @@
+#include "core/propagation.h"
+
+namespace icp {
+
+PropagationContractor::PropagationContractor(std::shared_ptr<const CompiledSystem> system,
+                                             double ratio, std::int64_t max_revise_calls)
+    : system_(std::move(system)),
+      ratio_(ratio),
+      max_revise_calls_(max_revise_calls),
+      queue_(system_->num_constraints()),
+      queued_(system_->num_constraints(), 0) {}
+
+void PropagationContractor::Push(int c) {
+  if (queued_[c]) return;
+  queued_[c] = 1;
+  queue_[(head_ + count_) % queue_.size()] = c;
+  ++count_;
+}
+
+ContractSummary PropagationContractor::Contract(Box& box, const StopCondition& stop) {
+  head_ = count_ = 0;
+  for (int c = 0; c < system_->num_constraints(); ++c) Push(c);
+  return Propagate(box, stop);
+}
+
+ContractSummary PropagationContractor::ContractFrom(Box& box, const StopCondition& stop,
+                                                    const std::vector<int>& vars) {
+  head_ = count_ = 0;
+  for (int v : vars)
+    for (int c : system_->constraints_of(v)) Push(c);
+  return Propagate(box, stop);
+}
+
+ContractSummary PropagationContractor::Propagate(Box& box, const StopCondition& stop) {
+  ContractSummary summary;
+  const Box start = box;
+  auto finish = [&](ContractStatus status, const char* message) {
+    while (count_ > 0) {  // leave the queue clean for the next call
+      queued_[queue_[head_]] = 0;
+      head_ = (head_ + 1) % queue_.size();
+      --count_;
+    }
+    if (status == ContractStatus::kEmpty) box.SetEmpty();
+    summary.status = status;
+    summary.message = message;
+    return summary;
+  };
+  while (count_ > 0) {
+    if (summary.work.revise_calls >= max_revise_calls_)
+      return finish(ContractStatus::kStopped, "max_revise_calls reached");
+    if ((summary.work.revise_calls & 255) == 255 && stop.ShouldStop())
+      return finish(ContractStatus::kStopped, "stopped (time limit)");
+    const int c = queue_[head_];
+    head_ = (head_ + 1) % queue_.size();
+    --count_;
+    queued_[c] = 0;
+    const Tape& tape = system_->tape(c);
+    before_.clear();
+    for (int v : tape.variables()) before_.push_back(box[v]);
+    ++summary.work.revise_calls;
+    if (!Revise(c, box, summary.work)) return finish(ContractStatus::kEmpty, "");
+    const auto& vars = tape.variables();
+    for (std::size_t i = 0; i < vars.size(); ++i) {
+      if (!ShrankByMoreThan(before_[i], box[vars[i]], ratio_)) continue;
+      for (int other : system_->constraints_of(vars[i]))
+        if (other != c || !IsIdempotent(c)) Push(other);
+    }
+  }
+  summary.status = StatusOf(start, box);
+  return summary;
+}
+
+}  // namespace icp

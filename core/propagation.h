@@ -1,0 +1,54 @@
+// The AC3-like propagation loop shared by HC4, BC3 and BC4 (paper 000 §3):
+// a FIFO queue of constraints; each popped constraint is revised, and every
+// variable that shrank by more than `ratio` of its width re-queues the
+// constraints it occurs in. Subclasses say what revising a constraint means.
+#ifndef ICPBENCH_CORE_PROPAGATION_H_
+#define ICPBENCH_CORE_PROPAGATION_H_
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "core/contractor.h"
+#include "core/tape.h"
+
+namespace icp {
+
+class PropagationContractor : public Contractor {
+ public:
+  PropagationContractor(std::shared_ptr<const CompiledSystem> system, double ratio,
+                        std::int64_t max_revise_calls);
+
+  // Propagates from every constraint.
+  ContractSummary Contract(Box& box, const StopCondition& stop) final;
+  // Propagates from the constraints of the given variables only: after a
+  // change of those variables in a box that was otherwise at a fixpoint
+  // (3B shaving), this reaches the same fixpoint with far less work.
+  ContractSummary ContractFrom(Box& box, const StopCondition& stop, const std::vector<int>& vars);
+
+  const CompiledSystem& system() const { return *system_; }
+  const std::shared_ptr<const CompiledSystem>& shared_system() const { return system_; }
+
+ protected:
+  // Narrows box with constraint c; returns false if c has no solution in box.
+  virtual bool Revise(int c, Box& box, WorkCounters& work) = 0;
+  // True when a second revise of c right after the first cannot narrow more.
+  virtual bool IsIdempotent(int c) const = 0;
+
+ private:
+  ContractSummary Propagate(Box& box, const StopCondition& stop);
+  void Push(int c);
+
+  std::shared_ptr<const CompiledSystem> system_;
+  double ratio_;
+  std::int64_t max_revise_calls_;
+  std::vector<int> queue_;
+  std::vector<char> queued_;
+  std::size_t head_ = 0;
+  std::size_t count_ = 0;
+  std::vector<Interval> before_;
+};
+
+}  // namespace icp
+
+#endif  // ICPBENCH_CORE_PROPAGATION_H_

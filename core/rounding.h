@@ -1,0 +1,163 @@
+// Directed rounding for Boost.Interval without touching the FPU rounding mode.
+//
+// Boost.Interval takes its rounding from a policy class. The stock policies
+// switch the processor's rounding mode, which GCC may reorder or constant-fold
+// across unless the whole program is built with -frounding-math, and which
+// leaks into libm calls. This policy instead computes each bound in the default
+// round-to-nearest mode and corrects it with an error-free transformation
+// (TwoSum, FMA residuals): the result is exactly the directed-rounded value
+// (the tightest double bound), is thread safe, and needs no global state.
+//
+// libm's transcendental functions are not correctly rounded; their results are
+// widened outward by kLibmUlps units in the last place. glibc documents its
+// measured maximum errors for x86-64 in sysdeps/x86_64/fpu/libm-test-ulps: at
+// most 2 ulps for every function used here in round-to-nearest mode, so 4 ulps
+// leaves a margin of two. The MPFR oracle tests (core/interval_oracle_test.cc)
+// check this on random and edge-case inputs.
+#ifndef ICPBENCH_CORE_ROUNDING_H_
+#define ICPBENCH_CORE_ROUNDING_H_
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace icp {
+
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+inline constexpr int kLibmUlps = 4;
+
+// The next double above x (x itself for +inf and NaN).
+inline double NextUp(double x) {
+  if (!(x < kInf)) return x;
+  if (x == 0) return std::numeric_limits<double>::denorm_min();
+  auto bits = std::bit_cast<std::uint64_t>(x);
+  bits = x > 0 ? bits + 1 : bits - 1;
+  return std::bit_cast<double>(bits);
+}
+
+// The next double below x (x itself for -inf and NaN).
+inline double NextDown(double x) { return -NextUp(-x); }
+
+inline double StepDown(double x, int ulps) {
+  for (int i = 0; i < ulps; ++i) x = NextDown(x);
+  return x;
+}
+inline double StepUp(double x, int ulps) {
+  for (int i = 0; i < ulps; ++i) x = NextUp(x);
+  return x;
+}
+
+// Below this magnitude an FMA residual may underflow and no longer be exact;
+// results there are widened by one ulp unconditionally.
+inline constexpr double kResidualExactThreshold = 0x1p-960;
+
+// The rounding policy plugged into boost::numeric::interval (see interval.h).
+struct ExactRounding {
+  // No processor state to save or restore: Boost may skip its protection.
+  using unprotected_rounding = ExactRounding;
+  // Conversions from double are exact.
+  double conv_down(double v) { return v; }
+  double conv_up(double v) { return v; }
+
+  double add_down(double x, double y) { return -add_up(-x, -y); }
+  double add_up(double x, double y) {
+    double s = x + y;
+    if (std::isnan(s)) return kInf;              // inf + -inf: no information
+    if (std::isinf(s)) {                         // exact if an input is infinite,
+      if (std::isinf(x) || std::isinf(y)) return s;  // else an overflow
+      return s > 0 ? kInf : -std::numeric_limits<double>::max();
+    }
+    double bb = s - x;                           // TwoSum (Knuth): s + err = x + y
+    double err = (x - (s - bb)) + (y - bb);
+    return err > 0 ? NextUp(s) : s;
+  }
+  double sub_down(double x, double y) { return add_down(x, -y); }
+  double sub_up(double x, double y) { return add_up(x, -y); }
+
+  double mul_down(double x, double y) { return -mul_up(-x, y); }
+  double mul_up(double x, double y) {
+    if (x == 0 || y == 0) return 0;              // 0 * inf is 0 for interval bounds
+    double p = x * y;
+    if (std::isinf(p)) {
+      if (std::isinf(x) || std::isinf(y)) return p;
+      return p > 0 ? kInf : -std::numeric_limits<double>::max();
+    }
+    if (std::fabs(p) < kResidualExactThreshold) return NextUp(p);
+    double err = std::fma(x, y, -p);             // exact: x * y = p + err
+    return err > 0 ? NextUp(p) : p;
+  }
+
+  double div_down(double x, double y) { return -div_up(-x, y); }
+  double div_up(double x, double y) {
+    if (std::isinf(x) && std::isinf(y)) return kInf;  // no information
+    if (std::isinf(y)) return 0;                 // finite / inf: the bound is 0
+    double q = x / y;
+    if (std::isinf(q)) {
+      if (std::isinf(x) || y == 0) return q;
+      return q > 0 ? kInf : -std::numeric_limits<double>::max();
+    }
+    if (std::isnan(q)) return kInf;              // 0 / 0: no information
+    if (x == 0) return q;
+    if (std::fabs(q) < kResidualExactThreshold ||
+        std::fabs(x) < kResidualExactThreshold)
+      return NextUp(q);
+    double r = std::fma(-q, y, x);               // exact: x = q * y + r
+    // x / y - q = r / y: positive when r and y have the same sign.
+    return (r > 0 && y > 0) || (r < 0 && y < 0) ? NextUp(q) : q;
+  }
+
+  double sqrt_down(double x) {
+    if (x <= 0) return 0;
+    double s = std::sqrt(x);
+    if (std::isinf(s)) return s == kInf ? std::numeric_limits<double>::max() : s;
+    if (x < kResidualExactThreshold) return NextDown(s);
+    double r = std::fma(-s, s, x);               // exact: x = s * s + r
+    return r < 0 ? NextDown(s) : s;
+  }
+  double sqrt_up(double x) {
+    if (x <= 0) return 0;
+    double s = std::sqrt(x);
+    if (std::isinf(s)) return s;
+    if (x < kResidualExactThreshold) return NextUp(s);
+    double r = std::fma(-s, s, x);
+    return r > 0 ? NextUp(s) : s;
+  }
+
+  double median(double x, double y) { return x / 2 + y / 2; }
+  double int_down(double x) { return std::floor(x); }
+  double int_up(double x) { return std::ceil(x); }
+
+  // Transcendental bounds: libm's result widened by kLibmUlps, clamped to the
+  // function's range, exact at the few points where the value is known.
+#define ICP_WIDENED(f, lo_clamp, hi_clamp)                                  \
+  double f##_down(double x) {                                               \
+    double v = std::f(x);                                                   \
+    if (std::isnan(v)) return lo_clamp;                                     \
+    return std::fmax(StepDown(v, kLibmUlps), lo_clamp);                     \
+  }                                                                         \
+  double f##_up(double x) {                                                 \
+    double v = std::f(x);                                                   \
+    if (std::isnan(v)) return hi_clamp;                                     \
+    return std::fmin(StepUp(v, kLibmUlps), hi_clamp);                       \
+  }
+  ICP_WIDENED(exp, 0.0, kInf)
+  ICP_WIDENED(log, -kInf, kInf)
+  ICP_WIDENED(sin, -1.0, 1.0)
+  ICP_WIDENED(cos, -1.0, 1.0)
+  ICP_WIDENED(tan, -kInf, kInf)
+  ICP_WIDENED(asin, -2.0, 2.0)
+  ICP_WIDENED(acos, 0.0, 4.0)
+  ICP_WIDENED(atan, -2.0, 2.0)
+  ICP_WIDENED(sinh, -kInf, kInf)
+  ICP_WIDENED(cosh, 1.0, kInf)
+  ICP_WIDENED(tanh, -1.0, 1.0)
+  ICP_WIDENED(asinh, -kInf, kInf)
+  ICP_WIDENED(acosh, 0.0, kInf)
+  ICP_WIDENED(atanh, -kInf, kInf)
+#undef ICP_WIDENED
+};
+
+}  // namespace icp
+
+#endif  // ICPBENCH_CORE_ROUNDING_H_

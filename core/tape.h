@@ -1,0 +1,77 @@
+// Tape: one constraint f(x) in range compiled into a flat instruction list
+// (the reachable part of the expression DAG in topological order). Forward
+// evaluates interval enclosures of every sub-expression; Backward projects the
+// root's range back onto the operands (HC4Revise, paper 000 §3.2). Algorithms
+// share tapes and never re-parse.
+#ifndef ICPBENCH_CORE_TAPE_H_
+#define ICPBENCH_CORE_TAPE_H_
+
+#include <vector>
+
+#include "core/box.h"
+#include "core/constraint_system.h"
+
+namespace icp {
+
+struct TapeInstr {
+  Op op;
+  int a = -1;  // operand slot
+  int b = -1;  // second operand slot
+  int n = 0;   // variable index (kVar) or exponent (kPow)
+};
+
+class Tape {
+ public:
+  Tape(const ExprGraph& graph, const Constraint& constraint);
+
+  // Evaluates every slot on box; returns the root's enclosure (empty if some
+  // sub-expression is undefined everywhere on the box).
+  Interval Forward(const Box& box, std::vector<Interval>& slots) const;
+  // Intersects the root slot with range and projects back to the variables,
+  // writing their contracted domains into box. slots must hold a Forward pass
+  // on box. Returns false when the constraint has no solution in box (box is
+  // then left partly contracted: callers mark it empty).
+  bool Backward(Box& box, std::vector<Interval>& slots) const;
+  // HC4Revise = Forward + Backward. Returns false when box has no solution.
+  bool Revise(Box& box, std::vector<Interval>& slots) const;
+
+  // Distinct variables of the constraint, ascending.
+  const std::vector<int>& variables() const { return variables_; }
+  // How often variable var occurs in the expression tree (shared
+  // sub-expressions counted once per use).
+  int Occurrences(int var) const;
+  const Interval& range() const { return range_; }
+  int size() const { return static_cast<int>(code_.size()); }
+  const std::vector<TapeInstr>& code() const { return code_; }
+  const Interval& constant(int slot) const { return constants_[slot]; }
+
+ private:
+  std::vector<TapeInstr> code_;
+  std::vector<Interval> constants_;  // per slot; used by kConst slots
+  std::vector<int> variables_;
+  std::vector<int> occurrences_;     // parallel to variables_
+  Interval range_;
+};
+
+// Every constraint of a system, compiled, with the variable -> constraints
+// incidence used by propagation queues.
+class CompiledSystem {
+ public:
+  explicit CompiledSystem(const ConstraintSystem& system);
+  int num_variables() const { return num_variables_; }
+  int num_constraints() const { return static_cast<int>(tapes_.size()); }
+  const Tape& tape(int c) const { return tapes_[c]; }
+  const std::vector<int>& constraints_of(int var) const { return constraints_of_[var]; }
+  // Largest tape, to size scratch buffers.
+  int max_tape_size() const { return max_tape_size_; }
+
+ private:
+  int num_variables_;
+  std::vector<Tape> tapes_;
+  std::vector<std::vector<int>> constraints_of_;
+  int max_tape_size_ = 0;
+};
+
+}  // namespace icp
+
+#endif  // ICPBENCH_CORE_TAPE_H_

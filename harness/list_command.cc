@@ -1,0 +1,61 @@
+#include "harness/list_command.h"
+
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <vector>
+
+#include "algorithms/registry.h"
+#include "problems/registry.h"
+
+namespace icp {
+
+namespace {
+struct Entry {
+  std::string name;
+  std::string description;
+  std::vector<ParamInfo> params;
+};
+
+std::vector<Entry> Entries(const std::string& what) {
+  std::vector<Entry> out;
+  if (what == "algorithms") {
+    for (const AlgorithmInfo& a : Algorithms())
+      out.push_back({a.name, a.description, a.params(a.name)});
+  } else if (what == "problems") {
+    for (const ProblemInfo& p : Problems())
+      out.push_back({p.name, p.description, p.params(p.name)});
+  } else {
+    throw std::invalid_argument("list " + what + ": expected 'algorithms' or 'problems'");
+  }
+  return out;
+}
+}  // namespace
+
+std::string ListPlugins(const std::string& what, const std::string& format) {
+  if (format != "text" && format != "json")
+    throw std::invalid_argument("--format " + format + ": must be text or json");
+  const std::vector<Entry> entries = Entries(what);
+  if (format == "json") {
+    nlohmann::ordered_json out = nlohmann::ordered_json::array();
+    for (const Entry& e : entries) {
+      nlohmann::ordered_json params = nlohmann::ordered_json::array();
+      for (const ParamInfo& p : e.params)
+        params.push_back({{"name", p.name}, {"type", p.type}, {"default", p.default_value},
+                          {"range", p.range}, {"doc", p.doc}});
+      out.push_back({{"name", e.name}, {"description", e.description}, {"params", params}});
+    }
+    return out.dump(2) + "\n";
+  }
+  std::string text;
+  for (const Entry& e : entries) {
+    text += e.name + "\n    " + e.description + "\n";
+    for (const ParamInfo& p : e.params) {
+      text += "    --param " + p.name + "=" + p.default_value + "  (" + p.type;
+      if (!p.range.empty()) text += " " + p.range;
+      text += ")  " + p.doc + "\n";
+    }
+  }
+  return text;
+}
+
+}  // namespace icp

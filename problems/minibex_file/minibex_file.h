@@ -1,0 +1,23 @@
+// A single CSP read from a Minibex file; the truth is unknown.
+#ifndef ICPBENCH_PROBLEMS_MINIBEX_FILE_MINIBEX_FILE_H_
+#define ICPBENCH_PROBLEMS_MINIBEX_FILE_MINIBEX_FILE_H_
+
+#include <memory>
+#include <string>
+
+#include "core/params.h"
+#include "problems/problem.h"
+
+namespace icp {
+
+struct MinibexFileParams {
+  // Path of the Minibex file.
+  std::string file;
+};
+void Describe(MinibexFileParams& p, ParamSet& set);
+
+std::unique_ptr<Problem> MakeMinibexFile(const ParamMap& params, std::uint64_t seed);
+
+}  // namespace icp
+
+#endif  // ICPBENCH_PROBLEMS_MINIBEX_FILE_MINIBEX_FILE_H_

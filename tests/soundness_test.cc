@@ -1,0 +1,46 @@
+// Property tests: every registered algorithm keeps a known solution of random
+// CSPs, and its result lies inside the initial box.
+#include <gtest/gtest.h>
+
+#include "algorithms/registry.h"
+#include "tests/random_csp.h"
+
+namespace icp {
+namespace {
+
+class SoundnessTest : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(SoundnessTest, NeverRemovesTheKnownSolution) {
+  const AlgorithmInfo& info = FindAlgorithm(GetParam());
+  int contracted = 0;
+  for (std::uint64_t seed = 1; seed <= 400; ++seed) {
+    testing::RandomCsp r = testing::MakeRandomCsp(seed);
+    ASSERT_FALSE(r.csp.constraints().empty()) << "seed " << seed;
+    auto contractor = info.make({}, r.csp);
+    Box box = r.csp.domains();
+    ContractSummary s = contractor->Contract(box, StopCondition());
+    ASSERT_NE(s.status, ContractStatus::kEmpty) << "seed " << seed;
+    ASSERT_TRUE(box.Contains(r.point)) << "seed " << seed << ": lost the solution";
+    ASSERT_TRUE(box.IsSubsetOf(r.csp.domains())) << "seed " << seed;
+    if (!(box == r.csp.domains())) ++contracted;
+  }
+  // The generator makes constraints that bite: most systems contract.
+  EXPECT_GT(contracted, 200);
+}
+
+std::vector<std::string> AlgorithmNames() {
+  std::vector<std::string> names;
+  for (const AlgorithmInfo& a : Algorithms()) names.push_back(a.name);
+  return names;
+}
+
+INSTANTIATE_TEST_SUITE_P(AllAlgorithms, SoundnessTest, ::testing::ValuesIn(AlgorithmNames()),
+                         [](const auto& info) {
+                           std::string n = info.param;
+                           for (char& c : n)
+                             if (!isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return n;
+                         });
+
+}  // namespace
+}  // namespace icp
