@@ -54,6 +54,7 @@ Expr Max(Expr a, Expr b) { return Bin(Op::kMax, a, b); }
 ConstraintSystem::ConstraintSystem(const ConstraintSystem& other)
     : graph_(std::make_unique<ExprGraph>(*other.graph_)),
       names_(other.names_),
+      index_of_(other.index_of_),
       domains_(other.domains_),
       constraints_(other.constraints_) {}
 
@@ -65,6 +66,7 @@ ConstraintSystem& ConstraintSystem::operator=(const ConstraintSystem& other) {
 Expr ConstraintSystem::AddVariable(const std::string& name, const Interval& domain) {
   if (FindVariable(name) >= 0)
     throw std::invalid_argument("variable '" + name + "' is declared twice");
+  index_of_.emplace(name, num_variables());
   names_.push_back(name);
   domains_.push_back(domain);
   return Var(num_variables() - 1);
@@ -90,20 +92,27 @@ void ConstraintSystem::AddConstraint(Expr f, const Interval& range) {
 }
 
 int ConstraintSystem::FindVariable(const std::string& name) const {
-  for (int i = 0; i < num_variables(); ++i)
-    if (names_[i] == name) return i;
-  return -1;
+  auto it = index_of_.find(name);
+  return it == index_of_.end() ? -1 : it->second;
 }
 
 std::string ConstraintSystem::ConstraintToString(int index) const {
+  // Minibex: "f = v", "f <= hi", "f >= lo" or "f = [lo, hi]"; %.17g reads
+  // back to the same doubles.
   const Constraint& c = constraints_.at(index);
-  std::string f = graph_->ToString(c.root, names_);
+  const std::string f = graph_->ToString(c.root, names_);
   char buf[96];
   if (c.range.IsPoint()) {
     std::snprintf(buf, sizeof buf, " = %.17g", c.range.lo());
-    return f + buf;
+  } else if (c.range.lo() == -kInf && c.range.hi() == kInf) {
+    std::snprintf(buf, sizeof buf, " = [-oo, +oo]");
+  } else if (c.range.lo() == -kInf) {
+    std::snprintf(buf, sizeof buf, " <= %.17g", c.range.hi());
+  } else if (c.range.hi() == kInf) {
+    std::snprintf(buf, sizeof buf, " >= %.17g", c.range.lo());
+  } else {
+    std::snprintf(buf, sizeof buf, " = [%.17g, %.17g]", c.range.lo(), c.range.hi());
   }
-  std::snprintf(buf, sizeof buf, " in [%.17g, %.17g]", c.range.lo(), c.range.hi());
   return f + buf;
 }
 

@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "core/box.h"
@@ -93,11 +94,13 @@ class ConstraintSystem {
   const std::vector<Constraint>& constraints() const { return constraints_; }
   const ExprGraph& graph() const { return *graph_; }
   ExprGraph& mutable_graph() { return *graph_; }
+  // The constraint in Minibex syntax.
   std::string ConstraintToString(int index) const;
 
  private:
   std::unique_ptr<ExprGraph> graph_;
   std::vector<std::string> names_;
+  std::unordered_map<std::string, int> index_of_;
   Box domains_;
   std::vector<Constraint> constraints_;
 };

@@ -1,8 +1,11 @@
 #include "core/interval.h"
 
+#include <bit>
 #include <cfenv>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <numbers>
 #include <ostream>
 
 namespace icp {
@@ -25,35 +28,113 @@ double PowDownNonNegative(double x, int n) {
   return bn::interval_lib::detail::pow_dn(x, n, rnd);
 }
 
-// A lower bound of the n-th root of v >= 0: libm's estimate, lowered until its
-// n-th power (rounded up) is at most v, so the bound is verified, not trusted.
+// Given ok(good) and !ok(bad) for a monotone predicate on doubles >= 0,
+// bisects on the bit patterns (ordered like the values) down to two adjacent
+// doubles and returns the one that passes.
+template <class Ok>
+double Bisect(double good, double bad, Ok ok) {
+  auto g = std::bit_cast<std::uint64_t>(good);
+  auto b = std::bit_cast<std::uint64_t>(bad);
+  while (g + 1 < b || b + 1 < g) {
+    std::uint64_t m = g < b ? g + (b - g) / 2 : b + (g - b) / 2;
+    if (ok(std::bit_cast<double>(m))) {
+      g = m;
+    } else {
+      b = m;
+    }
+  }
+  return std::bit_cast<double>(g);
+}
+
+// A lower bound of the n-th root of v >= 0: the largest double c with c^n
+// (rounded up) at most v, so the bound is verified, not trusted. libm's
+// estimate is bracketed by steps of 1, 2, 4, ... ulps, then bisected (a libm
+// pow(v, 1 / n) may be ~100 ulps off for large v, and stopping at the first
+// verified step lost up to that much again).
 double RootDown(double v, int n) {
   if (v <= 0) return 0;
   if (v == kInf) return kMaxDouble;
   if (n == 2) return ExactRounding().sqrt_down(v);
+  auto ok = [&](double c) { return PowUpNonNegative(c, n) <= v; };
   double r = n == 3 ? std::cbrt(v) : std::pow(v, 1.0 / n);
   double ulp = NextUp(r) - r;
   ExactRounding rnd;
+  if (ok(r)) {
+    for (double k = 1;; k *= 2) {
+      double c = rnd.add_up(r, k * ulp);
+      if (!ok(c)) return Bisect(r, c, ok);  // ok(inf) is false: v < inf
+    }
+  }
   for (double k = 1;; k *= 2) {
     double c = rnd.sub_down(r, k * ulp);
-    if (c <= 0) return 0;
-    if (PowUpNonNegative(c, n) <= v) return c;
+    if (c <= 0) return Bisect(0.0, r, ok);
+    if (ok(c)) return Bisect(c, r, ok);
   }
 }
 
-// An upper bound of the n-th root of v >= 0, verified the same way.
+// An upper bound of the n-th root of v >= 0: the smallest double c with c^n
+// (rounded down) at least v, found the same way.
 double RootUp(double v, int n) {
   if (v <= 0) return 0;
   if (v == kInf) return kInf;
   if (n == 2) return ExactRounding().sqrt_up(v);
+  auto ok = [&](double c) { return PowDownNonNegative(c, n) >= v; };
   double r = n == 3 ? std::cbrt(v) : std::pow(v, 1.0 / n);
   double ulp = NextUp(r) - r;
   ExactRounding rnd;
+  if (ok(r)) {
+    for (double k = 1;; k *= 2) {
+      double c = rnd.sub_down(r, k * ulp);
+      if (c <= 0) return Bisect(r, 0.0, ok);  // ok(0) is false: v > 0
+      if (!ok(c)) return Bisect(r, c, ok);
+    }
+  }
   for (double k = 1;; k *= 2) {
     double c = rnd.add_up(r, k * ulp);
-    if (c == kInf) return kInf;
-    if (PowDownNonNegative(c, n) >= v) return c;
+    if (ok(c)) return Bisect(c, r, ok);  // ok(inf) is true
   }
+}
+
+// Sin, cos and tan evaluate libm at the bounds (glibc reduces arguments
+// exactly, so this stays accurate for huge bounds) and locate interior extrema
+// and poles with an enclosure of pi / 2. Boost's versions reduce the argument
+// with an enclosure of 2 pi, which costs about |x| * 1e-16 of width (3e-10 at
+// |x| = 1e6) and made sin(0.5) 40 ulps wide.
+//
+// Beyond kTrigFar a non-point interval is at least 0.25 wide and multiples of
+// pi / 2 are too coarse to locate; such bounds give the whole range.
+constexpr double kTrigFar = 0x1p50;
+constexpr double kHalfPiApprox = std::numbers::pi / 2;  // only to count multiples
+
+// Whether x may contain m * pi / 2 (m an integer).
+bool MayContainHalfPiMultiple(const Interval& x, double m) {
+  Interval t = Interval(m) * HalfPi();
+  return t.hi() >= x.lo() && t.lo() <= x.hi();
+}
+
+// sin (shift 1) or cos (shift 0): the extrema are at m * pi / 2 with m of the
+// parity of shift, where the value is (-1)^((m - shift) / 2).
+Interval SinCos(const Interval& x, int shift) {
+  if (x.IsEmpty()) return x;
+  if (!x.IsBounded()) return Interval(-1, 1);
+  ExactRounding rnd;
+  auto down = [&](double t) { return shift ? rnd.sin_down(t) : rnd.cos_down(t); };
+  auto up = [&](double t) { return shift ? rnd.sin_up(t) : rnd.cos_up(t); };
+  if (x.IsPoint()) return Interval(down(x.lo()), up(x.lo()));
+  if (x.Width() >= TwoPi().lo() || x.Mag() >= kTrigFar) return Interval(-1, 1);
+  double lo = std::fmin(down(x.lo()), down(x.hi()));
+  double hi = std::fmax(up(x.lo()), up(x.hi()));
+  // The quotients are within 1 of the exact ones below kTrigFar.
+  for (double m = std::floor(x.lo() / kHalfPiApprox) - 2;
+       m <= std::ceil(x.hi() / kHalfPiApprox) + 2; ++m) {
+    if (std::fabs(std::fmod(m, 2)) != shift || !MayContainHalfPiMultiple(x, m)) continue;
+    if (std::fmod((m - shift) / 2, 2) == 0) {
+      hi = 1;
+    } else {
+      lo = -1;
+    }
+  }
+  return Interval(lo, hi);
 }
 }  // namespace
 
@@ -111,17 +192,20 @@ Interval Root(const Interval& x, int n) {
 Interval Sqrt(const Interval& x) { return Wrap(bn::sqrt(x.boost())); }
 Interval Exp(const Interval& x) { return Wrap(bn::exp(x.boost())); }
 Interval Log(const Interval& x) { return Wrap(bn::log(x.boost())); }
-Interval Sin(const Interval& x) {
-  if (!x.IsBounded()) return x.IsEmpty() ? x : Interval(-1, 1);
-  return Wrap(bn::sin(x.boost()));
-}
-Interval Cos(const Interval& x) {
-  if (!x.IsBounded()) return x.IsEmpty() ? x : Interval(-1, 1);
-  return Wrap(bn::cos(x.boost()));
-}
+Interval Sin(const Interval& x) { return SinCos(x, 1); }
+Interval Cos(const Interval& x) { return SinCos(x, 0); }
 Interval Tan(const Interval& x) {
-  if (!x.IsBounded()) return x.IsEmpty() ? x : Interval();
-  return Wrap(bn::tan(x.boost()));
+  if (x.IsEmpty()) return x;  // (the empty set counts as bounded)
+  if (!x.IsBounded()) return Interval();
+  ExactRounding rnd;
+  if (x.IsPoint()) return Interval(rnd.tan_down(x.lo()), rnd.tan_up(x.lo()));
+  if (x.Width() >= Pi().lo() || x.Mag() >= kTrigFar) return Interval();
+  // A pole (an odd multiple of pi/2) inside x: tan takes every value.
+  for (double m = std::floor(x.lo() / kHalfPiApprox) - 2;
+       m <= std::ceil(x.hi() / kHalfPiApprox) + 2; ++m) {
+    if (std::fabs(std::fmod(m, 2)) == 1 && MayContainHalfPiMultiple(x, m)) return Interval();
+  }
+  return Interval(rnd.tan_down(x.lo()), rnd.tan_up(x.hi()));
 }
 Interval Asin(const Interval& x) { return Wrap(bn::asin(x.boost())); }
 Interval Acos(const Interval& x) { return Wrap(bn::acos(x.boost())); }

@@ -13,19 +13,19 @@
 // neither false alarms nor misses.
 //
 // Seeds are fixed: a failure prints its inputs with %.17g and reproduces.
-#include <mpfr.h>
-
 #include <gtest/gtest.h>
+#include <mpfr.h>
 
 #include <bit>
 #include <cfloat>
 #include <cinttypes>
-#include <cstdarg>
 #include <cmath>
+#include <cstdarg>
 #include <cstdint>
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
@@ -131,7 +131,6 @@ class Sampler {
   }
   bool Coin(double p) { return Unit() < p; }
   double Sign() { return Coin(0.5) ? 1.0 : -1.0; }
-  std::mt19937_64& engine() { return g_; }
 
   // Mantissa in [1, 2) times 2^e, random sign.
   double Scaled(int e_lo, int e_hi) { return Sign() * std::ldexp(1 + Unit(), Int(e_lo, e_hi)); }
@@ -159,8 +158,8 @@ class Sampler {
     if (r < 48) return Scaled(960, 1023);
     if (r < 56) return Scaled(-1022, -960);
     if (r < 62) {  // subnormal
-      double d = std::bit_cast<double>(std::uniform_int_distribution<uint64_t>(
-          1, (uint64_t{1} << 52) - 1)(g_));
+      double d = std::bit_cast<double>(
+          std::uniform_int_distribution<uint64_t>(1, (uint64_t{1} << 52) - 1)(g_));
       return Sign() * d;
     }
     if (r < 67) return Coin(0.5) ? 0.0 : -0.0;
@@ -351,8 +350,7 @@ std::vector<ForwardOp> ForwardOps() {
                    ulps});
   }
   for (int n = 1; n <= 6; ++n) {
-    ops.push_back({"root" + std::to_string(n), 1, Dist::kAny,
-                   [n](I x, I) { return Root(x, n); },
+    ops.push_back({"root" + std::to_string(n), 1, Dist::kAny, [n](I x, I) { return Root(x, n); },
                    [n](mpfr_ptr r, mpfr_srcptr x, mpfr_srcptr, mpfr_rnd_t rnd) {
                      return mpfr_rootn_ui(r, x, n, rnd);
                    },
@@ -384,16 +382,24 @@ TEST_P(ForwardOracle, ContainsExactImage) {
       ++checked;
       if (!Holds(r, e)) {
         ++failures;
-        ADD_FAILURE() << op.name << Fmt(" x=[%.17g, %.17g] y=[%.17g, %.17g] p=%.17g q=%.17g", x.lo(),
-                                        x.hi(), y.lo(), y.hi(), p, q)
+        ADD_FAILURE() << op.name
+                      << Fmt(" x=[%.17g, %.17g] y=[%.17g, %.17g] p=%.17g q=%.17g", x.lo(), x.hi(),
+                             y.lo(), y.hi(), p, q)
                       << " result=" << Str(r) << Fmt(" exact=%.17g", e.Approx());
         continue;
       }
       if (op.point_ulps == 0 || !x.IsPoint() || !y.IsPoint()) continue;
+      // Ordinary inputs (zero or normal) and a normal result.
       double v = std::fabs(e.Approx());
       if (!(v >= DBL_MIN && v < kMax / 2)) continue;
+      if ((p != 0 && std::fabs(p) < DBL_MIN) || (q != 0 && std::fabs(q) < DBL_MIN)) continue;
+      // ExactRounding widens by one more ulp where an FMA residual may
+      // underflow (kResidualExactThreshold).
+      int64_t allowed = op.point_ulps;
+      if (std::fmin(v, std::fmin(std::fabs(p), std::fabs(q))) < 0x1p-900) ++allowed;
+      if (op.arity == 1 && std::fmin(v, std::fabs(p)) < 0x1p-900) ++allowed;
       ++tight_checked;
-      if (UlpDistance(r.lo(), r.hi()) > op.point_ulps) {
+      if (UlpDistance(r.lo(), r.hi()) > allowed) {
         ++failures;
         ADD_FAILURE() << op.name << " too loose"
                       << Fmt(" x=%.17g y=%.17g result=[%.17g, %.17g] (%" PRId64 " ulps)", p, q,
@@ -404,6 +410,21 @@ TEST_P(ForwardOracle, ContainsExactImage) {
   EXPECT_GE(checked, kForwardSamples);
   if (op.point_ulps > 0) {
     EXPECT_GT(tight_checked, 1000);
+  }
+}
+
+// The empty set in, the empty set out, whatever the other operand.
+TEST_P(ForwardOracle, EmptyInEmptyOut) {
+  const ForwardOp& op = GetParam();
+  Sampler s(Fnv1a(op.name) + 1);
+  for (int i = 0; i < 1000; ++i) {
+    Interval x = s.RandomInterval(op.dist);
+    Interval r = op.eval(Interval::Empty(), x);
+    EXPECT_TRUE(r.IsEmpty()) << op.name << "(empty, " << Str(x) << ") = " << Str(r);
+    if (op.arity == 2) {
+      r = op.eval(x, Interval::Empty());
+      EXPECT_TRUE(r.IsEmpty()) << op.name << "(" << Str(x) << ", empty) = " << Str(r);
+    }
   }
 }
 
@@ -422,10 +443,10 @@ TEST(ForwardOracleTightness, MonotoneHull) {
     double lo, hi;  // domain to draw from
   };
   const Case cases[] = {
-      {"exp", Exp, mpfr_exp, -700, 700},      {"log", Log, mpfr_log, 1e-300, 1e300},
-      {"atan", Atan, mpfr_atan, -1e10, 1e10}, {"sinh", Sinh, mpfr_sinh, -700, 700},
-      {"tanh", Tanh, mpfr_tanh, -15, 15},     {"asinh", Asinh, mpfr_asinh, -1e300, 1e300},
-      {"sqrt", Sqrt, mpfr_sqrt, 1e-300, 1e300}, {"asin", Asin, mpfr_asin, -0.999, 0.999},
+      {"exp", Exp, mpfr_exp, -700, 700},           {"log", Log, mpfr_log, 1e-300, 1e300},
+      {"atan", Atan, mpfr_atan, -1e10, 1e10},      {"sinh", Sinh, mpfr_sinh, -700, 700},
+      {"tanh", Tanh, mpfr_tanh, -15, 15},          {"asinh", Asinh, mpfr_asinh, -1e300, 1e300},
+      {"sqrt", Sqrt, mpfr_sqrt, 1e-300, 1e300},    {"asin", Asin, mpfr_asin, -0.999, 0.999},
       {"atanh", Atanh, mpfr_atanh, -0.999, 0.999},
   };
   Sampler s(7);
@@ -481,9 +502,9 @@ TEST(ForwardOracleTightness, TrigRange) {
       }
       // Critical points k pi/2 (sin: odd k, cos: even k) inside x.
       double offset = which == 0 ? 0.5 : 0.0;
-      for (double k = std::floor(x.lo() / M_PI - offset) - 1; k <= std::ceil(x.hi() / M_PI) + 1;
-           ++k) {
-        double t = (k + offset) * M_PI;
+      for (double k = std::floor(x.lo() / std::numbers::pi - offset) - 1;
+           k <= std::ceil(x.hi() / std::numbers::pi) + 1; ++k) {
+        double t = (k + offset) * std::numbers::pi;
         if (t > x.lo() + 1e-12 && t < x.hi() - 1e-12) {
           double val = std::fmod(std::fabs(k), 2) == 0 ? 1 : -1;
           want_lo = std::fmin(want_lo, val);
@@ -514,27 +535,36 @@ struct BackwardOp {
 std::vector<BackwardOp> BackwardOps() {
   using I = const Interval&;
   std::vector<BackwardOp> ops = {
-      {"add", 2, Dist::kAny, Binary<mpfr_add>, [](I z, Interval& x, Interval& y) { BwdAdd(z, x, y); }},
-      {"sub", 2, Dist::kAny, Binary<mpfr_sub>, [](I z, Interval& x, Interval& y) { BwdSub(z, x, y); }},
-      {"mul", 2, Dist::kAny, Binary<mpfr_mul>, [](I z, Interval& x, Interval& y) { BwdMul(z, x, y); }},
-      {"div", 2, Dist::kAny, Binary<mpfr_div>, [](I z, Interval& x, Interval& y) { BwdDiv(z, x, y); }},
+      {"add", 2, Dist::kAny, Binary<mpfr_add>,
+       [](I z, Interval& x, Interval& y) { BwdAdd(z, x, y); }},
+      {"sub", 2, Dist::kAny, Binary<mpfr_sub>,
+       [](I z, Interval& x, Interval& y) { BwdSub(z, x, y); }},
+      {"mul", 2, Dist::kAny, Binary<mpfr_mul>,
+       [](I z, Interval& x, Interval& y) { BwdMul(z, x, y); }},
+      {"div", 2, Dist::kAny, Binary<mpfr_div>,
+       [](I z, Interval& x, Interval& y) { BwdDiv(z, x, y); }},
       {"divide_relational", 2, Dist::kAny, Binary<mpfr_mul>,
        [](I z, Interval& x, Interval& y) { x = DivideRelational(x, z, y); }},
       {"neg", 1, Dist::kAny, Unary<MpfrNeg>, [](I z, Interval& x, Interval&) { BwdNeg(z, x); }},
       {"sqr", 1, Dist::kAny, Unary<MpfrSqr>, [](I z, Interval& x, Interval&) { BwdSqr(z, x); }},
-      {"sqrt", 1, Dist::kPositive, Unary<mpfr_sqrt>, [](I z, Interval& x, Interval&) { BwdSqrt(z, x); }},
+      {"sqrt", 1, Dist::kPositive, Unary<mpfr_sqrt>,
+       [](I z, Interval& x, Interval&) { BwdSqrt(z, x); }},
       {"exp", 1, Dist::kExp, Unary<mpfr_exp>, [](I z, Interval& x, Interval&) { BwdExp(z, x); }},
-      {"log", 1, Dist::kPositive, Unary<mpfr_log>, [](I z, Interval& x, Interval&) { BwdLog(z, x); }},
+      {"log", 1, Dist::kPositive, Unary<mpfr_log>,
+       [](I z, Interval& x, Interval&) { BwdLog(z, x); }},
       {"sin", 1, Dist::kTrig, Unary<mpfr_sin>, [](I z, Interval& x, Interval&) { BwdSin(z, x); }},
       {"cos", 1, Dist::kTrig, Unary<mpfr_cos>, [](I z, Interval& x, Interval&) { BwdCos(z, x); }},
       {"tan", 1, Dist::kTrig, Unary<mpfr_tan>, [](I z, Interval& x, Interval&) { BwdTan(z, x); }},
       {"atan", 1, Dist::kAny, Unary<mpfr_atan>, [](I z, Interval& x, Interval&) { BwdAtan(z, x); }},
       {"sinh", 1, Dist::kExp, Unary<mpfr_sinh>, [](I z, Interval& x, Interval&) { BwdSinh(z, x); }},
       {"cosh", 1, Dist::kExp, Unary<mpfr_cosh>, [](I z, Interval& x, Interval&) { BwdCosh(z, x); }},
-      {"tanh", 1, Dist::kSmall, Unary<mpfr_tanh>, [](I z, Interval& x, Interval&) { BwdTanh(z, x); }},
+      {"tanh", 1, Dist::kSmall, Unary<mpfr_tanh>,
+       [](I z, Interval& x, Interval&) { BwdTanh(z, x); }},
       {"abs", 1, Dist::kAny, Unary<MpfrAbs>, [](I z, Interval& x, Interval&) { BwdAbs(z, x); }},
-      {"min", 2, Dist::kAny, Binary<mpfr_min>, [](I z, Interval& x, Interval& y) { BwdMin(z, x, y); }},
-      {"max", 2, Dist::kAny, Binary<mpfr_max>, [](I z, Interval& x, Interval& y) { BwdMax(z, x, y); }},
+      {"min", 2, Dist::kAny, Binary<mpfr_min>,
+       [](I z, Interval& x, Interval& y) { BwdMin(z, x, y); }},
+      {"max", 2, Dist::kAny, Binary<mpfr_max>,
+       [](I z, Interval& x, Interval& y) { BwdMax(z, x, y); }},
   };
   for (int n = -3; n <= 5; ++n) {
     ops.push_back({"pow" + std::string(n < 0 ? "_m" : "") + std::to_string(std::abs(n)), 1,
@@ -586,6 +616,7 @@ TEST_P(BackwardOracle, KeepsEverySolution) {
   Exact e;
   int failures = 0;
   int checked = 0;
+  int contracted = 0;
   while (checked < kBackwardSamples && failures < kMaxReportedFailures) {
     Interval x = s.RandomInterval(op.dist);
     Interval y = op.arity == 2 ? s.RandomInterval(op.dist) : Interval(0.0);
@@ -597,6 +628,7 @@ TEST_P(BackwardOracle, KeepsEverySolution) {
     Interval x2 = x;
     Interval y2 = y;
     op.project(z, x2, y2);
+    if (!(x2 == x) || !(y2 == y)) ++contracted;
     bool kept = x2.Contains(p) && (op.arity == 1 || y2.Contains(q));
     bool shrunk = x2.IsSubsetOf(x) && y2.IsSubsetOf(y);
     if (!kept || !shrunk) {
@@ -604,11 +636,14 @@ TEST_P(BackwardOracle, KeepsEverySolution) {
       ADD_FAILURE() << "Bwd" << op.name << (kept ? " grew a domain" : " lost a solution")
                     << Fmt(" z=[%.17g, %.17g] x=[%.17g, %.17g] y=[%.17g, %.17g] p=%.17g q=%.17g",
                            z.lo(), z.hi(), x.lo(), x.hi(), y.lo(), y.hi(), p, q)
-                    << " x'=" << Str(x2) << " y'=" << Str(y2)
-                    << Fmt(" exact z=%.17g", e.Approx());
+                    << " x'=" << Str(x2) << " y'=" << Str(y2) << Fmt(" exact z=%.17g", e.Approx());
     }
   }
   EXPECT_GE(checked, kBackwardSamples);
+  // Sound by doing nothing is not the goal: most draws must contract.
+  if (op.name != "pow0") {  // z = x^0 = 1 says nothing about x
+    EXPECT_GT(contracted, checked / 4);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(AllProjections, BackwardOracle, testing::ValuesIn(BackwardOps()),
@@ -634,8 +669,9 @@ TEST(BackwardOracleTrig, FarFromZero) {
     double w2 = s.Coin(0.2) ? 0 : std::ldexp(s.Unit(), s.Int(-30, 5));
     Interval x(p - w1, p + w2);
     Enclose(fns[which], p, 0, &e);
-    Interval z = s.Coin(0.7) ? Interval(mpfr_get_d(e.lo.v, MPFR_RNDD), mpfr_get_d(e.hi.v, MPFR_RNDU))
-                             : ZDomain(e, s);
+    Interval z = s.Coin(0.7)
+                     ? Interval(mpfr_get_d(e.lo.v, MPFR_RNDD), mpfr_get_d(e.hi.v, MPFR_RNDU))
+                     : ZDomain(e, s);
     Interval x2 = x;
     if (which == 0) BwdSin(z, x2);
     if (which == 1) BwdCos(z, x2);
@@ -670,9 +706,11 @@ TEST(BackwardOracleTightness, InvertibleUnary) {
       {"tanh", Unary<mpfr_tanh>, BwdTanh, -5, 5},
       {"atan", Unary<mpfr_atan>, BwdAtan, -1e3, 1e3},
       {"sqrt", Unary<mpfr_sqrt>, BwdSqrt, 1e-300, 1e300},
-      {"pow3", [](mpfr_ptr r, mpfr_srcptr x, mpfr_srcptr, mpfr_rnd_t rnd) {
+      {"pow3",
+       [](mpfr_ptr r, mpfr_srcptr x, mpfr_srcptr, mpfr_rnd_t rnd) {
          return mpfr_pow_si(r, x, 3, rnd);
-       }, [](const Interval& z, Interval& x) { BwdPow(z, x, 3); }, -1e100, 1e100},
+       },
+       [](const Interval& z, Interval& x) { BwdPow(z, x, 3); }, -1e100, 1e100},
   };
   Sampler s(17);
   Exact e;

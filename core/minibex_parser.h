@@ -2,7 +2,7 @@
 //
 //   // comment
 //   Constants
-//     c = 0.1;  r in [1, 2];  v[2] = ...   (numbers and intervals)
+//     c = 0.1;  r in [1, 2];  k = 2*pi;   (scalar constant expressions)
 //   Variables
 //     x in [-1, 1];  y in [-oo, +oo];  p[3] in [0, 10];
 //   Constraints

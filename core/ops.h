@@ -67,6 +67,55 @@ inline void ProjectOp(Op op, const Interval& z, Interval& a, Interval& b, int n)
   }
 }
 
+// Forward-mode interval differentiation: the derivative of z = op(a, b)
+// given the operands' derivatives da, db. At the kinks of abs, min and max
+// the result is the hull of the one-sided derivatives, which still bounds
+// every slope (what the interval Newton step of BC3 needs).
+inline Interval RawDerivOp(Op op, const Interval& a, const Interval& b, const Interval& z,
+                        const Interval& da, const Interval& db, int n) {
+  switch (op) {
+    case Op::kAdd: return da + db;
+    case Op::kSub: return da - db;
+    case Op::kMul: return da * b + a * db;
+    case Op::kDiv: return (da - z * db) / b;
+    case Op::kMin:
+      if (a.hi() < b.lo()) return da;
+      if (b.hi() < a.lo()) return db;
+      return Hull(da, db);
+    case Op::kMax:
+      if (a.lo() > b.hi()) return da;
+      if (b.lo() > a.hi()) return db;
+      return Hull(da, db);
+    case Op::kNeg: return -da;
+    case Op::kSqr: return Interval(2.0) * a * da;
+    case Op::kPow: return Interval(n) * Pow(a, n - 1) * da;
+    case Op::kSqrt: return da / (Interval(2.0) * z);
+    case Op::kExp: return z * da;
+    case Op::kLog: return da / a;
+    case Op::kSin: return Cos(a) * da;
+    case Op::kCos: return -Sin(a) * da;
+    case Op::kTan: return (Interval(1.0) + Sqr(z)) * da;
+    case Op::kAtan: return da / (Interval(1.0) + Sqr(a));
+    case Op::kSinh: return Cosh(a) * da;
+    case Op::kCosh: return Sinh(a) * da;
+    case Op::kTanh: return (Interval(1.0) - Sqr(z)) * da;
+    case Op::kAbs:
+      if (a.lo() >= 0) return da;
+      if (a.hi() <= 0) return -da;
+      return Interval(-1.0, 1.0) * da;
+    case Op::kConst: case Op::kVar: break;
+  }
+  return Interval();
+}
+
+// As RawDerivOp, but never empty: where the derivative is undefined on the
+// whole operand (e.g. sqrt at [0, 0]) any slope is possible.
+inline Interval DerivOp(Op op, const Interval& a, const Interval& b, const Interval& z,
+                        const Interval& da, const Interval& db, int n) {
+  Interval d = RawDerivOp(op, a, b, z, da, db, n);
+  return d.IsEmpty() ? Interval() : d;
+}
+
 }  // namespace icp
 
 #endif  // ICPBENCH_CORE_OPS_H_

@@ -62,8 +62,7 @@ ContractSummary PropagationContractor::Propagate(Box& box, const StopCondition& 
     const auto& vars = tape.variables();
     for (std::size_t i = 0; i < vars.size(); ++i) {
       if (!ShrankByMoreThan(before_[i], box[vars[i]], ratio_)) continue;
-      for (int other : system_->constraints_of(vars[i]))
-        if (other != c || !IsIdempotent(c)) Push(other);
+      for (int other : system_->constraints_of(vars[i])) Push(other);
     }
   }
   summary.status = StatusOf(start, box);

@@ -1,7 +1,7 @@
 // The AC3-like propagation loop shared by HC4, BC3 and BC4 (paper 000 §3):
 // a FIFO queue of constraints; each popped constraint is revised, and every
 // variable that shrank by more than `ratio` of its width re-queues the
-// constraints it occurs in. Subclasses say what revising a constraint means.
+// constraints it occurs in (itself included). Subclasses say what revising a constraint means.
 #ifndef ICPBENCH_CORE_PROPAGATION_H_
 #define ICPBENCH_CORE_PROPAGATION_H_
 
@@ -31,9 +31,11 @@ class PropagationContractor : public Contractor {
 
  protected:
   // Narrows box with constraint c; returns false if c has no solution in box.
+  // A revise is not assumed idempotent: even with single occurrences, a
+  // backward projection that takes the hull of a union (abs, sqr, sin, a
+  // division by an interval holding 0) can narrow more on a second call, so
+  // a constraint whose variables shrank is queued again.
   virtual bool Revise(int c, Box& box, WorkCounters& work) = 0;
-  // True when a second revise of c right after the first cannot narrow more.
-  virtual bool IsIdempotent(int c) const = 0;
 
  private:
   ContractSummary Propagate(Box& box, const StopCondition& stop);

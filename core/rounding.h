@@ -5,7 +5,7 @@
 // across unless the whole program is built with -frounding-math, and which
 // leaks into libm calls. This policy instead computes each bound in the default
 // round-to-nearest mode and corrects it with an error-free transformation
-// (TwoSum, FMA residuals): the result is exactly the directed-rounded value
+// (Fast2Sum, FMA residuals): the result is exactly the directed-rounded value
 // (the tightest double bound), is thread safe, and needs no global state.
 //
 // libm's transcendental functions are not correctly rounded; their results are
@@ -68,8 +68,13 @@ struct ExactRounding {
       if (std::isinf(x) || std::isinf(y)) return s;  // else an overflow
       return s > 0 ? kInf : -std::numeric_limits<double>::max();
     }
-    double bb = s - x;                           // TwoSum (Knuth): s + err = x + y
-    double err = (x - (s - bb)) + (y - bb);
+    // Fast2Sum (Dekker), larger magnitude first: s + err = x + y exactly, and
+    // unlike Knuth's TwoSum no intermediate can overflow when s is finite
+    // (TwoSum's s - x overflowed for x = 8.6e307, y = -DBL_MAX and lost the
+    // rounding error).
+    double big = std::fabs(x) >= std::fabs(y) ? x : y;
+    double small = std::fabs(x) >= std::fabs(y) ? y : x;
+    double err = small - (s - big);
     return err > 0 ? NextUp(s) : s;
   }
   double sub_down(double x, double y) { return add_down(x, -y); }
@@ -128,17 +133,26 @@ struct ExactRounding {
   double int_down(double x) { return std::floor(x); }
   double int_up(double x) { return std::ceil(x); }
 
+  static bool IsKnownExact(double x, double v) {
+    return (x == 0 || x == 1) && (v == 0 || v == 1);
+  }
+
   // Transcendental bounds: libm's result widened by kLibmUlps, clamped to the
-  // function's range, exact at the few points where the value is known.
+  // function's range, exact at the few points where the value is known: every
+  // f(0) and f(1) below that equals 0 or 1 does so exactly (exp, cos, cosh at
+  // 0; the odd functions at 0; log, acos, acosh at 1), and no other f(0) or
+  // f(1) is near 0 or 1.
 #define ICP_WIDENED(f, lo_clamp, hi_clamp)                                  \
   double f##_down(double x) {                                               \
     double v = std::f(x);                                                   \
     if (std::isnan(v)) return lo_clamp;                                     \
+    if (IsKnownExact(x, v)) return v;                                       \
     return std::fmax(StepDown(v, kLibmUlps), lo_clamp);                     \
   }                                                                         \
   double f##_up(double x) {                                                 \
     double v = std::f(x);                                                   \
     if (std::isnan(v)) return hi_clamp;                                     \
+    if (IsKnownExact(x, v)) return v;                                       \
     return std::fmin(StepUp(v, kLibmUlps), hi_clamp);                       \
   }
   ICP_WIDENED(exp, 0.0, kInf)

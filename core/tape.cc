@@ -70,6 +70,35 @@ Interval Tape::Forward(const Box& box, std::vector<Interval>& slots) const {
   return slots[n - 1];
 }
 
+Interval Tape::ForwardWithDerivative(const Box& box, int var, std::vector<Interval>& slots,
+                                     std::vector<Interval>& dslots, Interval* derivative) const {
+  if (slots.size() < code_.size()) slots.resize(code_.size());
+  if (dslots.size() < code_.size()) dslots.resize(code_.size());
+  const int n = size();
+  for (int s = 0; s < n; ++s) {
+    const TapeInstr& in = code_[s];
+    Interval& z = slots[s];
+    Interval& dz = dslots[s];
+    if (in.op == Op::kConst) {
+      z = constants_[s];
+      dz = Interval(0.0);
+    } else if (in.op == Op::kVar) {
+      z = box[in.n];
+      dz = Interval(in.n == var ? 1.0 : 0.0);
+    } else {
+      const int b = in.b >= 0 ? in.b : in.a;
+      z = EvalOp(in.op, slots[in.a], slots[b], in.n);
+      dz = DerivOp(in.op, slots[in.a], slots[b], z, dslots[in.a], dslots[b], in.n);
+    }
+    if (z.IsEmpty()) {
+      *derivative = Interval::Empty();
+      return Interval::Empty();
+    }
+  }
+  *derivative = dslots[n - 1];
+  return slots[n - 1];
+}
+
 bool Tape::Backward(Box& box, std::vector<Interval>& slots) const {
   const int n = size();
   Interval& root = slots[n - 1];

@@ -32,6 +32,12 @@ class Tape {
   // on box. Returns false when the constraint has no solution in box (box is
   // then left partly contracted: callers mark it empty).
   bool Backward(Box& box, std::vector<Interval>& slots) const;
+  // Forward evaluation with the derivative with respect to variable var
+  // (interval forward-mode differentiation over the tape): returns the root's
+  // enclosure and stores the enclosure of its derivative on box in
+  // *derivative. slots and dslots are scratch buffers.
+  Interval ForwardWithDerivative(const Box& box, int var, std::vector<Interval>& slots,
+                                 std::vector<Interval>& dslots, Interval* derivative) const;
   // HC4Revise = Forward + Backward. Returns false when box has no solution.
   bool Revise(Box& box, std::vector<Interval>& slots) const;
 

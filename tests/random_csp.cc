@@ -10,12 +10,14 @@ namespace icp::testing {
 namespace {
 class Generator {
  public:
-  Generator(std::uint64_t seed, ConstraintSystem* csp, int num_vars)
-      : rng_(seed), csp_(csp), num_vars_(num_vars) {}
+  Generator(std::uint64_t seed, ConstraintSystem* csp, int num_vars, bool discontinuous)
+      : rng_(seed), csp_(csp), num_vars_(num_vars), discontinuous_(discontinuous) {}
 
   Expr Random(int depth) {
     if (depth <= 0 || Pick(4) == 0) return Leaf();
-    switch (Pick(14)) {
+    std::uint64_t op = Pick(14);
+    if (!discontinuous_ && (op == 5 || op == 13)) op = 0;
+    switch (op) {
       case 0: case 1: return Random(depth - 1) + Random(depth - 1);
       case 2: return Random(depth - 1) - Random(depth - 1);
       case 3: case 4: return Random(depth - 1) * Random(depth - 1);
@@ -41,14 +43,15 @@ class Generator {
   std::mt19937_64 rng_;
   ConstraintSystem* csp_;
   int num_vars_;
+  bool discontinuous_;
 };
 }  // namespace
 
 RandomCsp MakeRandomCsp(std::uint64_t seed, const RandomCspOptions& o) {
   RandomCsp out;
-  Generator gen(seed, &out.csp, 1);
+  Generator gen(seed, &out.csp, 1, o.discontinuous_ops);
   const int n = o.min_variables + static_cast<int>(gen.Pick(o.max_variables - o.min_variables + 1));
-  Generator g(seed * 7919 + 1, &out.csp, n);
+  Generator g(seed * 7919 + 1, &out.csp, n, o.discontinuous_ops);
   Box point_box;
   for (int i = 0; i < n; ++i) {
     const double p = g.Uniform(-2, 2);

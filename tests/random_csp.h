@@ -25,6 +25,9 @@ struct RandomCspOptions {
   int max_constraints = 6;
   int max_depth = 4;
   double domain_half_width = 3.0;  // largest distance of a bound from p
+  // Division and min: operations whose natural extension is not the exact
+  // range even with single occurrences (a divisor interval holding 0).
+  bool discontinuous_ops = true;
 };
 
 RandomCsp MakeRandomCsp(std::uint64_t seed, const RandomCspOptions& options = {});

@@ -13,7 +13,7 @@ class SoundnessTest : public ::testing::TestWithParam<std::string> {};
 TEST_P(SoundnessTest, NeverRemovesTheKnownSolution) {
   const AlgorithmInfo& info = FindAlgorithm(GetParam());
   int contracted = 0;
-  for (std::uint64_t seed = 1; seed <= 400; ++seed) {
+  for (std::uint64_t seed = 1; seed <= 3000; ++seed) {
     testing::RandomCsp r = testing::MakeRandomCsp(seed);
     ASSERT_FALSE(r.csp.constraints().empty()) << "seed " << seed;
     auto contractor = info.make({}, r.csp);
@@ -25,7 +25,7 @@ TEST_P(SoundnessTest, NeverRemovesTheKnownSolution) {
     if (!(box == r.csp.domains())) ++contracted;
   }
   // The generator makes constraints that bite: most systems contract.
-  EXPECT_GT(contracted, 200);
+  EXPECT_GT(contracted, 1500);
 }
 
 std::vector<std::string> AlgorithmNames() {

@@ -104,7 +104,7 @@ ContractSummary HC3Contractor::Contract(Box& box, const StopCondition& stop) {
     for (int i = 0; i < 3; ++i) {
       if (vars[i] < 0 || !ShrankByMoreThan(before[i], d[vars[i]], params_.ratio)) continue;
       for (int other : primitives_of_[vars[i]]) {
-        if (queued[other] || other == p) continue;
+        if (queued[other]) continue;
         queued[other] = 1;
         queue[(head + count) % m] = other;
         ++count;

@@ -12,14 +12,7 @@ void Describe(HC4Params& p, ParamSet& set) {
 
 HC4Contractor::HC4Contractor(std::shared_ptr<const CompiledSystem> system, const HC4Params& params)
     : PropagationContractor(std::move(system), params.ratio, params.max_revise_calls),
-      slots_(this->system().max_tape_size()),
-      multi_occurrence_(this->system().num_constraints(), 0) {
-  for (int c = 0; c < this->system().num_constraints(); ++c) {
-    const Tape& t = this->system().tape(c);
-    for (int v : t.variables())
-      if (t.Occurrences(v) > 1) multi_occurrence_[c] = 1;
-  }
-}
+      slots_(this->system().max_tape_size()) {}
 
 bool HC4Contractor::Revise(int c, Box& box, WorkCounters&) {
   return system().tape(c).Revise(box, slots_);

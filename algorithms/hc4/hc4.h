@@ -4,10 +4,9 @@
 // queue over the constraints that share a variable whose domain shrank, until
 // no domain shrinks by more than `ratio` of its width.
 //
-// Sound: every step is a projection that keeps all solutions. Not idempotent
-// in general: with multiple occurrences of a variable in a constraint
-// (x*x + y^2 = 2), HC4Revise suffers from the dependency problem and a
-// second call can contract further.
+// Sound: every step is a projection that keeps all solutions. With multiple
+// occurrences of a variable in a constraint (x*x + y^2 = 2) HC4Revise suffers
+// from the dependency problem; BC3/BC4 do not.
 #ifndef ICPBENCH_ALGORITHMS_HC4_HC4_H_
 #define ICPBENCH_ALGORITHMS_HC4_HC4_H_
 
@@ -38,11 +37,9 @@ class HC4Contractor : public PropagationContractor {
 
  protected:
   bool Revise(int c, Box& box, WorkCounters& work) override;
-  bool IsIdempotent(int c) const override { return !multi_occurrence_[c]; }
 
  private:
   std::vector<Interval> slots_;
-  std::vector<char> multi_occurrence_;  // per constraint: some variable occurs twice
 };
 
 std::unique_ptr<Contractor> MakeHC4(const ParamMap& params, const ConstraintSystem& csp);

@@ -1,0 +1,124 @@
+#include "algorithms/bc3/bc3.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/projections.h"
+
+namespace icp {
+
+void Describe(BC3Params& p, ParamSet& set) {
+  set.Add("ratio", &p.ratio,
+          "relative width decrease of a variable that re-queues its constraints",
+          Range::HalfOpen(0, 1));
+  set.Add("epsilon", &p.epsilon, "relative width of a quasi-zero slice (bound precision)",
+          Range::Positive(1));
+  set.Add("max_bisections", &p.max_bisections, "bisections allowed per bound search",
+          Range::AtLeast(0));
+  set.Add("max_revise_calls", &p.max_revise_calls,
+          "constraint revisions allowed per contraction before stopping", Range::AtLeast(1));
+}
+
+bool BoxNarrower::Small(const Interval& j) const {
+  return j.IsBounded() && j.Width() <= epsilon_ * std::max(1.0, j.Mag());
+}
+
+bool BoxNarrower::Consistent(const Tape& tape, int var, const Interval& j) {
+  work_box_[var] = j;
+  return !Intersect(tape.Forward(work_box_, slots_), tape.range()).IsEmpty();
+}
+
+Interval BoxNarrower::Newton(const Tape& tape, int var, Interval j, WorkCounters& work) {
+  for (int step = 0; step < 8 && !j.IsEmpty(); ++step) {
+    ++work.newton_steps;
+    work_box_[var] = j;
+    Interval derivative;
+    Interval f = tape.ForwardWithDerivative(work_box_, var, slots_, dslots_, &derivative);
+    if (Intersect(f, tape.range()).IsEmpty()) return Interval::Empty();
+    if (Small(j)) return j;
+    // Mean value form: f(t) - f(m) = f'(xi) (t - m), with f(t) in range.
+    const double m = j.Mid();
+    work_box_[var] = Interval(m);
+    Interval fm = tape.Forward(work_box_, slots_);
+    if (fm.IsEmpty()) return j;  // f undefined at m: no Newton step
+    Interval next = Interval(m) + DivideRelational(j - Interval(m), tape.range() - fm, derivative);
+    next = Intersect(j, next);
+    if (next.IsEmpty()) return next;
+    const bool progress = next.Width() < 0.9 * j.Width();
+    j = next;
+    if (!progress) break;
+  }
+  return j;
+}
+
+std::optional<double> BoxNarrower::OuterBound(const Tape& tape, int var, const Interval& x,
+                                              bool leftward, WorkCounters& work) {
+  auto outer = [leftward](const Interval& j) { return leftward ? j.lo() : j.hi(); };
+  // Fast path: the bound is already a quasi-zero (the usual case at a fixpoint).
+  if (x.IsBounded()) {
+    const double b = outer(x);
+    const double slice = epsilon_ * std::max(1.0, std::fabs(b));
+    Interval edge = leftward ? Interval(b, std::min(x.hi(), b + slice))
+                             : Interval(std::max(x.lo(), b - slice), b);
+    if (Consistent(tape, var, edge)) return b;
+  }
+  stack_.clear();
+  stack_.push_back(x);
+  int bisections = 0;
+  while (!stack_.empty()) {
+    Interval j = stack_.back();
+    stack_.pop_back();
+    j = Newton(tape, var, j, work);
+    if (j.IsEmpty()) continue;
+    if (Small(j)) return outer(j);
+    if (bisections >= max_bisections_) {
+      // Out of budget: every remaining piece may hold a solution.
+      double bound = outer(j);
+      for (const Interval& rest : stack_)
+        bound = leftward ? std::min(bound, rest.lo()) : std::max(bound, rest.hi());
+      return bound;
+    }
+    ++bisections;
+    ++work.bisections;
+    const double m = j.Mid();
+    Interval low(j.lo(), m), high(m, j.hi());
+    // The piece to explore first goes on top.
+    if (leftward) {
+      stack_.push_back(high);
+      stack_.push_back(low);
+    } else {
+      stack_.push_back(low);
+      stack_.push_back(high);
+    }
+  }
+  return std::nullopt;
+}
+
+bool BoxNarrower::Narrow(const Tape& tape, int var, Box& box, WorkCounters& work) {
+  work_box_ = box;
+  const Interval x = box[var];
+  std::optional<double> lo = OuterBound(tape, var, x, true, work);
+  if (!lo) return false;
+  std::optional<double> hi = OuterBound(tape, var, Interval(*lo, x.hi()), false, work);
+  if (!hi) return false;
+  box[var] = Interval(*lo, *hi);
+  return true;
+}
+
+BC3Contractor::BC3Contractor(std::shared_ptr<const CompiledSystem> system, const BC3Params& params)
+    : PropagationContractor(std::move(system), params.ratio, params.max_revise_calls),
+      narrower_(params.epsilon, params.max_bisections) {}
+
+bool BC3Contractor::Revise(int c, Box& box, WorkCounters& work) {
+  const Tape& tape = system().tape(c);
+  for (int v : tape.variables())
+    if (!narrower_.Narrow(tape, v, box, work)) return false;
+  return true;
+}
+
+std::unique_ptr<Contractor> MakeBC3(const ParamMap& params, const ConstraintSystem& csp) {
+  return std::make_unique<BC3Contractor>(std::make_shared<CompiledSystem>(csp),
+                                         ParseParams<BC3Params>("bc3", params));
+}
+
+}  // namespace icp

@@ -1,0 +1,85 @@
+// BC3 (Benhamou, McAllester, Van Hentenryck 1994; paper 000 §3.3): box
+// consistency for every (constraint, variable) pair. With the other variables
+// kept as intervals, the constraint becomes univariate in x; the left bound of
+// x moves to the leftmost "quasi-zero" (a slice of relative width `epsilon`
+// on which the constraint's interval extension can hold) and the right bound
+// to the rightmost one. Slices are found by bisection, each slice first
+// narrowed by the univariate interval Newton operator with the derivative
+// computed on the tape. Pairs are propagated with the AC3-like queue.
+//
+// Sound: slices are removed only when the interval extension proves them
+// solution-free. Not affected by multiple occurrences the way HC4 is
+// (x*x + y^2 = 2 is contracted), but slower.
+#ifndef ICPBENCH_ALGORITHMS_BC3_BC3_H_
+#define ICPBENCH_ALGORITHMS_BC3_BC3_H_
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/constraint_system.h"
+#include "core/params.h"
+#include "core/propagation.h"
+
+namespace icp {
+
+struct BC3Params {
+  // Propagation threshold: a variable whose width shrinks by more than this
+  // fraction re-queues its constraints.
+  double ratio = 1e-3;
+  // Width of a quasi-zero slice relative to max(1, |bound|): the precision
+  // of the bounds. 1e-8 to 1e-4 are typical; smaller costs more bisections.
+  double epsilon = 1e-6;
+  // Bisections allowed per bound search; when exhausted the bound moves only
+  // as far as proven.
+  int max_bisections = 200;
+  // Upper bound on constraint revisions per contraction.
+  int max_revise_calls = 1000000;
+};
+void Describe(BC3Params& p, ParamSet& set);
+
+// The univariate narrowing of one variable in one constraint (BC3Revise),
+// shared by BC3 and BC4.
+class BoxNarrower {
+ public:
+  BoxNarrower(double epsilon, int max_bisections)
+      : epsilon_(epsilon), max_bisections_(max_bisections) {}
+  // Narrows box[var] to its outermost quasi-zeros of tape. Returns false if
+  // there is none (no solution in box).
+  bool Narrow(const Tape& tape, int var, Box& box, WorkCounters& work);
+
+ private:
+  // Where the constraint can hold on x = j (interval extension test).
+  bool Consistent(const Tape& tape, int var, const Interval& j);
+  // Shrinks j with interval Newton steps; empty if j holds no solution.
+  Interval Newton(const Tape& tape, int var, Interval j, WorkCounters& work);
+  // The outermost quasi-zero's bound on the left (leftward = true) or the
+  // right of x; nullopt if there is none.
+  std::optional<double> OuterBound(const Tape& tape, int var, const Interval& x, bool leftward,
+                                   WorkCounters& work);
+  bool Small(const Interval& j) const;
+
+  double epsilon_;
+  int max_bisections_;
+  Box work_box_;
+  std::vector<Interval> slots_, dslots_;
+  std::vector<Interval> stack_;
+};
+
+class BC3Contractor : public PropagationContractor {
+ public:
+  BC3Contractor(std::shared_ptr<const CompiledSystem> system, const BC3Params& params);
+  std::string_view Name() const override { return "bc3"; }
+
+ protected:
+  bool Revise(int c, Box& box, WorkCounters& work) override;
+
+ private:
+  BoxNarrower narrower_;
+};
+
+std::unique_ptr<Contractor> MakeBC3(const ParamMap& params, const ConstraintSystem& csp);
+
+}  // namespace icp
+
+#endif  // ICPBENCH_ALGORITHMS_BC3_BC3_H_

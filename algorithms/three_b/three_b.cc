@@ -1,0 +1,106 @@
+#include "algorithms/three_b/three_b.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace icp {
+
+void Describe(ShavingParams& p, ParamSet& set) {
+  set.Add("slices", &p.slices, "slices per bound (slice width = domain width / slices)",
+          Range::Closed(1, 100000));
+  set.Add("ratio", &p.ratio, "relative width decrease that starts another shaving round",
+          Range::HalfOpen(0, 1));
+  set.Add("epsilon", &p.epsilon, "smallest relative slice width (bound precision)",
+          Range::Positive(1));
+  set.Add("max_rounds", &p.max_rounds, "shaving rounds allowed per contraction",
+          Range::AtLeast(1));
+}
+
+ThreeBContractor::ThreeBContractor(std::string name, std::unique_ptr<PropagationContractor> inner,
+                                   const ShavingParams& params)
+    : name_(std::move(name)), inner_(std::move(inner)), params_(params) {}
+
+bool ThreeBContractor::Shave(Box& box, int var, bool left, const StopCondition& stop,
+                             WorkCounters& work) {
+  Interval x = box[var];
+  if (!x.IsBounded()) return true;  // an infinite side cannot be sliced
+  const double slice_width = x.Width() / params_.slices;
+  if (slice_width <= params_.epsilon * std::max(1.0, x.Mag())) return true;
+  var_list_.assign(1, var);
+  for (int k = 0; k < params_.slices && !stop.ShouldStop(); ++k) {
+    const bool last = k == params_.slices - 1;
+    Interval slice = left ? Interval(x.lo(), last ? x.hi() : std::min(x.hi(), x.lo() + slice_width))
+                          : Interval(last ? x.lo() : std::max(x.lo(), x.hi() - slice_width), x.hi());
+    trial_ = box;
+    trial_[var] = slice;
+    ++work.inner_calls;
+    ContractSummary s = inner_->ContractFrom(trial_, stop, var_list_);
+    work += s.work;
+    if (s.status != ContractStatus::kEmpty) {
+      // Every solution with x in the slice lies in trial_, so none is
+      // beyond trial_'s bound on this side.
+      x = left ? Interval(trial_[var].lo(), x.hi()) : Interval(x.lo(), trial_[var].hi());
+      box[var] = x;
+      return true;
+    }
+    if ((left && slice.hi() >= x.hi()) || (!left && slice.lo() <= x.lo())) return false;
+    x = left ? Interval(slice.hi(), x.hi()) : Interval(x.lo(), slice.lo());
+    box[var] = x;
+  }
+  return true;
+}
+
+ContractSummary ThreeBContractor::Contract(Box& box, const StopCondition& stop) {
+  ContractSummary summary;
+  const Box start = box;
+  auto fail = [&](ContractStatus status, const std::string& message) {
+    if (status == ContractStatus::kEmpty) box.SetEmpty();
+    summary.status = status;
+    summary.message = message;
+    return summary;
+  };
+  ContractSummary first = inner_->Contract(box, stop);
+  ++summary.work.inner_calls;
+  summary.work += first.work;
+  if (first.status == ContractStatus::kEmpty) return fail(ContractStatus::kEmpty, "");
+  for (int round = 0; round < params_.max_rounds; ++round) {
+    bool shrank = false;
+    for (int var = 0; var < static_cast<int>(box.size()); ++var) {
+      if (stop.ShouldStop()) return fail(ContractStatus::kStopped, "stopped (time limit)");
+      const Interval before = box[var];
+      if (!Shave(box, var, true, stop, summary.work) || !Shave(box, var, false, stop, summary.work))
+        return fail(ContractStatus::kEmpty, "");
+      if (!ShrankByMoreThan(before, box[var], params_.ratio)) continue;
+      shrank = true;
+      // Spread the new bounds before shaving the next variable.
+      var_list_.assign(1, var);
+      ++summary.work.inner_calls;
+      ContractSummary s = inner_->ContractFrom(box, stop, var_list_);
+      summary.work += s.work;
+      if (s.status == ContractStatus::kEmpty) return fail(ContractStatus::kEmpty, "");
+    }
+    if (!shrank) break;
+  }
+  summary.status = StatusOf(start, box);
+  return summary;
+}
+
+namespace {
+template <class InnerParams, class Inner>
+std::unique_ptr<Contractor> MakeThreeB(const std::string& name, const ParamMap& params,
+                                       const ConstraintSystem& csp) {
+  auto p = ParseParams<ThreeBParams<InnerParams>>(name, params);
+  auto inner = std::make_unique<Inner>(std::make_shared<CompiledSystem>(csp), p.inner);
+  return std::make_unique<ThreeBContractor>(name, std::move(inner), p.shaving);
+}
+}  // namespace
+
+std::unique_ptr<Contractor> MakeThreeBBC4(const ParamMap& params, const ConstraintSystem& csp) {
+  return MakeThreeB<BC4Params, BC4Contractor>("3b-bc4", params, csp);
+}
+
+std::unique_ptr<Contractor> MakeThreeBHC4(const ParamMap& params, const ConstraintSystem& csp) {
+  return MakeThreeB<HC4Params, HC4Contractor>("3b-hc4", params, csp);
+}
+
+}  // namespace icp

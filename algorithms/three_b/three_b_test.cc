@@ -1,0 +1,83 @@
+#include "algorithms/three_b/three_b.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "algorithms/registry.h"
+#include "problems/chain/chain.h"
+
+namespace icp {
+namespace {
+
+Box RunAlgorithm(const std::string& name, const ConstraintSystem& csp, const ParamMap& params = {}) {
+  Box box = csp.domains();
+  FindAlgorithm(name).make(params, csp)->Contract(box, StopCondition());
+  return box;
+}
+
+// Paper 000 §3.5: x + y = 0, x - y = 0 on [-2,2]^2: 3B gives [0,0]^2.
+TEST(ThreeBTest, Paper000Example) {
+  ConstraintSystem csp;
+  Expr x = csp.AddVariable("x", {-2, 2});
+  Expr y = csp.AddVariable("y", {-2, 2});
+  csp.AddConstraint(x + y, Relation::kEq, csp.Constant(0));
+  csp.AddConstraint(x - y, Relation::kEq, csp.Constant(0));
+  for (const std::string name : {"3b-bc4", "3b-hc4"}) {
+    Box box = RunAlgorithm(name, csp);
+    EXPECT_TRUE(box.Contains({0, 0})) << name;
+    EXPECT_LE(box[0].Width(), 1e-6) << name;
+    EXPECT_LE(box[1].Width(), 1e-6) << name;
+  }
+}
+
+TEST(ThreeBTest, ShavesTheDependencyExampleWithBC4) {
+  ConstraintSystem csp;
+  Expr x = csp.AddVariable("x", {-2, 4});
+  Expr y = csp.AddVariable("y", {-1, 1});
+  csp.AddConstraint(x * x + Sqr(y), Relation::kEq, csp.Constant(2));
+  Box box = RunAlgorithm("3b-bc4", csp);
+  EXPECT_GE(box[0].hi(), std::sqrt(2.0));
+  EXPECT_LT(box[0].hi(), std::sqrt(2.0) + 1e-4);
+}
+
+TEST(ThreeBTest, DetectsInconsistencyThatNoSingleConstraintShows) {
+  // x + y = 1, x - y = 0, x in [0, 0.4]: each constraint alone is
+  // satisfiable on the box, together they force x = 0.5.
+  ConstraintSystem csp;
+  Expr x = csp.AddVariable("x", {0, 0.4});
+  Expr y = csp.AddVariable("y", {0, 1});
+  csp.AddConstraint(x + y, Relation::kEq, csp.Constant(1));
+  csp.AddConstraint(x - y, Relation::kEq, csp.Constant(0));
+  EXPECT_TRUE(RunAlgorithm("3b-hc4", csp).IsEmpty());
+}
+
+TEST(ThreeBTest, InnerParametersAreNestedAndValidated) {
+  ConstraintSystem csp;
+  Expr x = csp.AddVariable("x", {0, 1});
+  csp.AddConstraint(x, Relation::kEq, csp.Constant(0.5));
+  const AlgorithmInfo& info = FindAlgorithm("3b-bc4");
+  EXPECT_NO_THROW(info.make({{"slices", "20"}, {"inner.epsilon", "1e-9"}}, csp));
+  EXPECT_THROW(info.make({{"inner.epsilon", "2"}}, csp), ParamError);
+  EXPECT_THROW(info.make({{"slices", "0"}}, csp), ParamError);
+  bool listed = false;
+  for (const ParamInfo& p : info.params(info.name)) listed |= p.name == "inner.max_bisections";
+  EXPECT_TRUE(listed);
+}
+
+// 3B contracts the chain windows at least as much as BC4 and keeps the truth;
+// with the heading unknown it also narrows the start heading.
+TEST(ThreeBTest, TighterThanBC4OnChainWindowsAndSound) {
+  for (std::uint64_t seed = 0; seed < 3; ++seed) {
+    ChainParams p;
+    p.w = 6;
+    Step step = MakeChainStep(p, seed);
+    Box three_b = RunAlgorithm("3b-bc4", step.csp);
+    Box bc4 = RunAlgorithm("bc4", step.csp);
+    ASSERT_TRUE(three_b.Contains(step.truth)) << "seed " << seed;
+    EXPECT_TRUE(three_b.IsSubsetOf(bc4)) << "seed " << seed;
+  }
+}
+
+}  // namespace
+}  // namespace icp

@@ -1,0 +1,157 @@
+// The command-line contract (README "Command line"): JSON fields, bounds that
+// round-trip and enclose, null for infinite bounds, exit code 2 on bad input.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "core/minibex_parser.h"
+
+namespace {
+
+struct Result {
+  int exit_code;
+  std::string out;
+};
+
+// Runs icpbench with args (stderr folded into the output).
+Result Icpbench(const std::string& args) {
+  const std::string command = std::string(ICPBENCH_BINARY) + " " + args + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf;
+  while (std::size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
+  int status = pclose(pipe);
+  return {WEXITSTATUS(status), out};
+}
+
+std::string WriteFile(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string Example(const std::string& name) { return std::string(ICPBENCH_EXAMPLES) + "/" + name; }
+
+TEST(CliTest, SolveJsonFollowsTheContract) {
+  Result r = Icpbench("solve " + Example("paper002_sum.bch") + " --algorithm hc4 --format json");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["algorithm"], "hc4");
+  EXPECT_EQ(j["status"], "nonempty");
+  EXPECT_EQ(j["box"]["x1"][0].get<double>(), 3.0);
+  EXPECT_EQ(j["box"]["x1"][1].get<double>(), 4.0);
+  EXPECT_EQ(j["box"]["x3"][1].get<double>(), 6.0);
+  EXPECT_GE(j["time_s"].get<double>(), 0.0);
+  EXPECT_EQ(j.size(), 4u);
+}
+
+TEST(CliTest, BoundsRoundTripAndEncloseTheSolution) {
+  // x^2 = 2: the printed bounds, read back as doubles, still hold sqrt(2)
+  // and are the very doubles the solver produced.
+  std::string file = WriteFile("sqrt2.bch", "Variables x in [0, 10]; Constraints x^2 = 2; end");
+  Result r = Icpbench("solve " + file + " --format json");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  auto j = nlohmann::json::parse(r.out);
+  double lo = j["box"]["x"][0], hi = j["box"]["x"][1];
+  EXPECT_LT(lo * lo, 2.0);  // lo < sqrt(2): lo^2 rounds below 2 for the tight bound
+  EXPECT_GT(hi * hi, 2.0);
+  EXPECT_LE(hi - lo, 4.5e-16);
+}
+
+TEST(CliTest, VectorComponentsAreNamedZeroBasedAndInfiniteBoundsAreNull) {
+  std::string file = WriteFile("vec.bch",
+                               "Variables v[2] in [-oo, +oo]; w in [0, +oo];"
+                               " Constraints v(1) = 1; v[1] >= 0; end");
+  Result r = Icpbench("solve " + file + " --format json");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["box"]["v[0]"][0].get<double>(), 1.0);
+  EXPECT_EQ(j["box"]["v[1]"][0].get<double>(), 0.0);
+  EXPECT_TRUE(j["box"]["v[1]"][1].is_null());
+  EXPECT_TRUE(j["box"]["w"][1].is_null());
+  EXPECT_EQ(j["box"]["w"][0].get<double>(), 0.0);
+}
+
+TEST(CliTest, EmptyResultHasStatusEmptyAndNoBox) {
+  std::string file = WriteFile("empty.bch", "Variables x in [0, 1]; Constraints x = 2; end");
+  Result r = Icpbench("solve " + file + " --format json --algorithm bc4");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "empty");
+  EXPECT_TRUE(j["box"].empty());
+}
+
+TEST(CliTest, RepeatReportsTheMedianAndTheSameBox) {
+  Result once = Icpbench("solve " + Example("car_window.bch") + " --format json");
+  Result many = Icpbench("solve " + Example("car_window.bch") + " --format json --repeat 5");
+  ASSERT_EQ(many.exit_code, 0) << many.out;
+  EXPECT_EQ(nlohmann::json::parse(once.out)["box"], nlohmann::json::parse(many.out)["box"]);
+}
+
+TEST(CliTest, EveryAlgorithmSolvesTheExamples) {
+  auto list = nlohmann::json::parse(Icpbench("list algorithms --format json").out);
+  ASSERT_GE(list.size(), 6u);
+  for (const auto& a : list) {
+    Result r = Icpbench("solve " + Example("paper000_3b.bch") + " --format json --algorithm " +
+                     a["name"].get<std::string>());
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    auto j = nlohmann::json::parse(r.out);
+    EXPECT_LE(j["box"]["x"][0].get<double>(), 0.0);
+    EXPECT_GE(j["box"]["x"][1].get<double>(), 0.0);
+  }
+}
+
+TEST(CliTest, ListShowsNamesDescriptionsAndParameters) {
+  auto list = nlohmann::json::parse(Icpbench("list algorithms --format json").out);
+  bool found = false;
+  for (const auto& a : list) {
+    if (a["name"] != "hc4") continue;
+    found = true;
+    EXPECT_FALSE(a["description"].get<std::string>().empty());
+    EXPECT_EQ(a["params"][0]["name"], "ratio");
+    EXPECT_EQ(a["params"][0]["type"], "double");
+  }
+  EXPECT_TRUE(found);
+  auto problems = nlohmann::json::parse(Icpbench("list problems --format json").out);
+  EXPECT_GE(problems.size(), 1u);
+  EXPECT_EQ(Icpbench("list algorithms").exit_code, 0);
+}
+
+TEST(CliTest, BadInputExitsWithTwoAndAClearMessage) {
+  const std::string sum = Example("paper002_sum.bch");
+  Result r = Icpbench("solve " + sum + " --algorithm nope");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("unknown algorithm 'nope'"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("hc4"), std::string::npos) << r.out;  // lists the known ones
+
+  r = Icpbench("solve " + sum + " --param speed=1");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("unknown parameter 'speed'"), std::string::npos) << r.out;
+
+  r = Icpbench("solve " + sum + " --param ratio=-1");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("hc4.ratio = -1"), std::string::npos) << r.out;
+
+  r = Icpbench("solve " + sum + " --param ratio");
+  EXPECT_EQ(r.exit_code, 2);
+
+  r = Icpbench("solve /nonexistent/file.bch");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("/nonexistent/file.bch"), std::string::npos) << r.out;
+
+  std::string bad = WriteFile("bad.bch", "Variables\n  x in [0, 1];\nConstraints\n  x + = 1;\nend\n");
+  r = Icpbench("solve " + bad);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find(":4:"), std::string::npos) << r.out;  // line of the error
+
+  EXPECT_EQ(Icpbench("solve " + sum + " --repeat 0").exit_code, 2);
+  EXPECT_EQ(Icpbench("solve " + sum + " --format xml").exit_code, 2);
+  EXPECT_EQ(Icpbench("list everything").exit_code, 2);
+  EXPECT_EQ(Icpbench("frobnicate").exit_code, 2);
+}
+
+}  // namespace
