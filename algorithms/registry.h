@@ -11,17 +11,24 @@
 #include "core/constraint_system.h"
 #include "core/contractor.h"
 #include "core/params.h"
+#include "core/view.h"
 
 namespace icp {
 
 using AlgorithmFactory = std::unique_ptr<Contractor> (*)(const ParamMap&, const ConstraintSystem&);
 using ParamLister = std::vector<ParamInfo> (*)(const std::string& owner);
+using ParamValidator = void (*)(const std::string& owner, const ParamMap& values);
 
 struct AlgorithmInfo {
   std::string name;         // registry key, lower case ("hc4", "3b-bc4")
   std::string description;  // one line
   AlgorithmFactory make;    // throws ParamError on bad parameters
   ParamLister params;       // declared parameters with their defaults
+  ParamValidator validate;  // throws ParamError on bad parameters
+  View view = View::kCsp;   // what it needs of a problem
+  // A fault-injection plugin for harness tests: skipped by the property
+  // suites, the benchmarks and the default sweeps.
+  bool test_only = false;
 };
 
 const std::vector<AlgorithmInfo>& Algorithms();

@@ -98,6 +98,13 @@ P ParseParams(const std::string& owner, const ParamMap& values) {
   return params;
 }
 
+// Checks key=value text against P without keeping the result (specs are
+// validated before the first run).
+template <class P>
+void ValidateParams(const std::string& owner, const ParamMap& values) {
+  ParseParams<P>(owner, values);
+}
+
 // The parameters of P with their defaults, for listings.
 template <class P>
 std::vector<ParamInfo> DefaultParams(const std::string& owner) {

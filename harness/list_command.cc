@@ -14,13 +14,14 @@ struct Entry {
   std::string name;
   std::string description;
   std::vector<ParamInfo> params;
+  bool test_only = false;
 };
 
 std::vector<Entry> Entries(const std::string& what) {
   std::vector<Entry> out;
   if (what == "algorithms") {
     for (const AlgorithmInfo& a : Algorithms())
-      out.push_back({a.name, a.description, a.params(a.name)});
+      out.push_back({a.name, a.description, a.params(a.name), a.test_only});
   } else if (what == "problems") {
     for (const ProblemInfo& p : Problems())
       out.push_back({p.name, p.description, p.params(p.name)});
@@ -42,13 +43,15 @@ std::string ListPlugins(const std::string& what, const std::string& format) {
       for (const ParamInfo& p : e.params)
         params.push_back({{"name", p.name}, {"type", p.type}, {"default", p.default_value},
                           {"range", p.range}, {"doc", p.doc}});
-      out.push_back({{"name", e.name}, {"description", e.description}, {"params", params}});
+      nlohmann::ordered_json entry = {{"name", e.name}, {"description", e.description}, {"params", params}};
+      if (e.test_only) entry["test_only"] = true;
+      out.push_back(entry);
     }
     return out.dump(2) + "\n";
   }
   std::string text;
   for (const Entry& e : entries) {
-    text += e.name + "\n    " + e.description + "\n";
+    text += e.name + (e.test_only ? "  (test plugin)" : "") + "\n    " + e.description + "\n";
     for (const ParamInfo& p : e.params) {
       text += "    --param " + p.name + "=" + p.default_value + "  (" + p.type;
       if (!p.range.empty()) text += " " + p.range;

@@ -6,8 +6,16 @@
 #include <exception>
 #include <iostream>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <thread>
+
 #include "harness/list_command.h"
+#include "harness/results_store.h"
+#include "harness/runner.h"
 #include "harness/solve_command.h"
+#include "harness/spec.h"
 
 namespace {
 constexpr int kUsageError = 2;
@@ -36,6 +44,25 @@ int main(int argc, char** argv) {
   list_cmd->add_option("--format,-f", list_format, "output format: text or json")
       ->capture_default_str();
 
+  std::string spec_file;
+  icp::RunnerOptions run;
+  run.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  std::string shard = "0/1";
+  CLI::App* run_cmd = app.add_subcommand("run", "run an experiment spec (YAML) into a results store");
+  run_cmd->add_option("SPEC", spec_file, "experiment spec, e.g. specs/default.yaml")->required();
+  run_cmd->add_option("--out,-o", run.out_dir, "output directory (default results/<spec name>)");
+  run_cmd->add_option("--jobs,-j", run.jobs, "runs in parallel (default: the number of cores)")
+      ->capture_default_str();
+  run_cmd->add_option("--shard", shard, "run only share i of n (i/n, 0-based) of the matrix")
+      ->capture_default_str();
+  run_cmd->add_flag("--force", run.force, "rerun runs that are already stored");
+
+  std::string merge_out;
+  std::vector<std::string> merge_in;
+  CLI::App* merge_cmd = app.add_subcommand("merge", "join results stores (e.g. from shards)");
+  merge_cmd->add_option("OUT", merge_out, "output directory")->required();
+  merge_cmd->add_option("IN", merge_in, "input directories")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -54,6 +81,28 @@ int main(int argc, char** argv) {
                                            : icp::SolveResultToText(result));
     } else if (*list_cmd) {
       std::cout << icp::ListPlugins(what, list_format);
+    } else if (*run_cmd) {
+      const icp::Spec spec = icp::LoadSpec(spec_file);
+      std::tie(run.shard_index, run.shard_count) = icp::ParseShard(shard);
+      if (run.jobs < 1) throw std::invalid_argument("--jobs must be at least 1");
+      if (run.out_dir.empty())
+        run.out_dir = "results/" + std::filesystem::path(spec_file).stem().string();
+      const bool terminal = isatty(STDERR_FILENO);
+      std::cerr << "icpbench: " << spec.runs.size() << " runs in " << spec_file << ", " << run.jobs
+                << " in parallel, results in " << icp::StorePath(run.out_dir) << "\n";
+      icp::SweepSummary s = icp::RunSweep(spec, run, std::cerr, terminal);
+      std::cerr << "icpbench: " << s.planned << " planned, " << s.already_stored
+                << " already stored, " << s.ok << " ok, " << s.failed << " failed, "
+                << s.timed_out << " timed out, " << s.skipped << " skipped\n";
+    } else if (*merge_cmd) {
+      std::filesystem::create_directories(merge_out);
+      icp::ResultsStore out(icp::StorePath(merge_out));
+      for (const std::string& dir : merge_in) {
+        if (!std::filesystem::exists(icp::StorePath(dir)))
+          throw std::invalid_argument("merge: no results store in " + dir);
+        const int n = out.MergeFrom(icp::StorePath(dir));
+        std::cerr << "icpbench: merged " << n << " runs from " << dir << "\n";
+      }
     }
   } catch (const std::invalid_argument& e) {  // ParamError, unknown names, options
     std::cerr << "icpbench: " << e.what() << "\n";

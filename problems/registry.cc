@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "problems/car_track/car_track.h"
 #include "problems/chain/chain.h"
 #include "problems/minibex_file/minibex_file.h"
 
@@ -9,10 +10,12 @@ namespace icp {
 
 const std::vector<ProblemInfo>& Problems() {
   static const std::vector<ProblemInfo> kProblems = {
+      {"car-track", "a simulated lap (or a CSV log) of the car-track CSP, paper 000 eq. 9-14, window w",
+       &MakeCarTrack, &DefaultParams<CarTrackParams>, &ValidateCarTrack, {View::kCsp}},
       {"chain", "car-track-shaped window CSP (paper 000 eq. 14) with a simulated truth",
-       &MakeChain, &DefaultParams<ChainParams>},
+       &MakeChain, &DefaultParams<ChainParams>, &ValidateParams<ChainParams>, {View::kCsp}},
       {"minibex-file", "one CSP read from a Minibex file (IBEX benchmark syntax)",
-       &MakeMinibexFile, &DefaultParams<MinibexFileParams>},
+       &MakeMinibexFile, &DefaultParams<MinibexFileParams>, &ValidateParams<MinibexFileParams>, {View::kCsp}},
   };
   return kProblems;
 }

@@ -20,6 +20,8 @@ struct ProblemInfo {
   std::string description;
   ProblemFactory make;  // throws ParamError on bad parameters
   std::vector<ParamInfo> (*params)(const std::string& owner);
+  void (*validate)(const std::string& owner, const ParamMap& values);  // throws ParamError
+  std::vector<View> views;  // what the problem offers to algorithms
 };
 
 const std::vector<ProblemInfo>& Problems();

@@ -7,7 +7,7 @@ bash scripts/deps.sh
 bash scripts/build.sh
 ./build/icpbench list algorithms
 for file in examples/*.bch; do
-  for algorithm in $(./build/icpbench list algorithms | grep -v '^ '); do
+  for algorithm in $(./build/icpbench list algorithms | grep -v '^ ' | grep -v 'test plugin'); do
     echo "== $file with $algorithm"
     ./build/icpbench solve "$file" --algorithm "$algorithm"
   done

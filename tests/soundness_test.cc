@@ -30,7 +30,8 @@ TEST_P(SoundnessTest, NeverRemovesTheKnownSolution) {
 
 std::vector<std::string> AlgorithmNames() {
   std::vector<std::string> names;
-  for (const AlgorithmInfo& a : Algorithms()) names.push_back(a.name);
+  for (const AlgorithmInfo& a : Algorithms())
+    if (!a.test_only) names.push_back(a.name);
   return names;
 }
 

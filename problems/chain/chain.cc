@@ -63,6 +63,10 @@ Step MakeChainStep(const ChainParams& p, std::uint64_t seed) {
     csp.AddConstraint(yk, Relation::kEq, yp + ds_m * Sin(mid_heading));
     csp.AddConstraint(thk, Relation::kEq, thp + dth_m);
   }
+  const int last = 3 * p.w;
+  step.reported = {{"x", last}, {"y", last + 1}, {"theta", last + 2}};
+  step.x = 0;
+  step.y = 1;
   return step;
 }
 
@@ -71,6 +75,7 @@ class ChainProblem : public Problem {
  public:
   ChainProblem(const ChainParams& params, std::uint64_t seed) : params_(params), seed_(seed) {}
   std::string_view Name() const override { return "chain"; }
+  int NumSteps() const override { return 1; }
   bool Next(const Box*, Step* step) override {
     if (done_) return false;
     done_ = true;

@@ -13,6 +13,7 @@ class MinibexFileProblem : public Problem {
  public:
   explicit MinibexFileProblem(ConstraintSystem csp) : csp_(std::move(csp)) {}
   std::string_view Name() const override { return "minibex-file"; }
+  int NumSteps() const override { return 1; }
   bool Next(const Box*, Step* step) override {
     if (done_) return false;
     done_ = true;

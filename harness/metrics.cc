@@ -1,0 +1,172 @@
+#include "harness/metrics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <random>
+#include <string>
+
+namespace icp {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr int kBootstrapResamples = 1000;
+
+// A box is empty when the contractor says so or when a variable's interval
+// is (lo > hi, the +inf/-inf convention of VariableRecord, or NaN bounds).
+bool IsEmptyBox(const StepRecord& s) {
+  if (s.status == "empty") return true;
+  for (const VariableRecord& v : s.vars) {
+    if (!(v.lo <= v.hi)) return true;
+  }
+  return false;
+}
+
+bool TruthKnown(const StepRecord& s) {
+  if (s.contained != -1) return true;
+  for (const VariableRecord& v : s.vars) {
+    if (!std::isnan(v.truth)) return true;
+  }
+  return false;
+}
+
+double Mean(const std::vector<double>& values) {
+  if (values.empty()) return kNaN;
+  double sum = 0;
+  for (double v : values) sum += v;
+  return sum / static_cast<double>(values.size());
+}
+
+// A uniform index in [0, n) from the generator's raw output by rejection, so
+// the draws (unlike std::uniform_int_distribution's) are the same with every
+// standard library.
+std::size_t DrawIndex(std::mt19937_64& rng, std::size_t n) {
+  const std::uint64_t range = n;
+  const std::uint64_t limit = std::numeric_limits<std::uint64_t>::max() -
+                              std::numeric_limits<std::uint64_t>::max() % range;
+  std::uint64_t x;
+  do {
+    x = rng();
+  } while (x >= limit);
+  return static_cast<std::size_t>(x % range);
+}
+
+// Percentile bootstrap: the 2.5% and 97.5% quantiles of the means of
+// kBootstrapResamples resamples drawn with replacement.
+void BootstrapMeanInterval(const std::vector<double>& values, std::uint64_t seed, double* lo,
+                           double* hi) {
+  *lo = *hi = kNaN;
+  if (values.empty()) return;
+  std::mt19937_64 rng(seed);
+  std::vector<double> means;
+  means.reserve(kBootstrapResamples);
+  for (int r = 0; r < kBootstrapResamples; ++r) {
+    double sum = 0;
+    for (std::size_t i = 0; i < values.size(); ++i) sum += values[DrawIndex(rng, values.size())];
+    means.push_back(sum / static_cast<double>(values.size()));
+  }
+  std::sort(means.begin(), means.end());
+  *lo = Quantile(means, 0.025);
+  *hi = Quantile(std::move(means), 0.975);
+}
+
+struct CorridorSums {
+  Corridor corridor;
+  double sum_lower = 0;
+  double sum_upper = 0;
+  int count = 0;
+};
+
+}  // namespace
+
+double Quantile(std::vector<double> values, double p) {
+  // NaN entries carry no order; they are left out.
+  values.erase(std::remove_if(values.begin(), values.end(), [](double v) { return std::isnan(v); }),
+               values.end());
+  if (values.empty() || !(p >= 0 && p <= 1)) return kNaN;
+  std::sort(values.begin(), values.end());
+  const double h = p * static_cast<double>(values.size() - 1);
+  const std::size_t below = static_cast<std::size_t>(std::floor(h));
+  if (below + 1 >= values.size()) return values.back();
+  const double a = values[below];
+  const double b = values[below + 1];
+  const double frac = h - static_cast<double>(below);
+  if (frac == 0 || a == b) return a;
+  if (std::isinf(a) || std::isinf(b)) return (1 - frac) * a + frac * b;  // no inf - inf
+  return a + frac * (b - a);
+}
+
+RunMetrics ComputeMetrics(const std::vector<StepRecord>& steps, std::uint64_t bootstrap_seed) {
+  RunMetrics m;
+  m.steps = static_cast<int>(steps.size());
+
+  std::vector<double> areas;
+  std::vector<double> squared_errors;
+  std::vector<double> times;
+  int judged = 0;
+  int consistent = 0;
+  std::vector<CorridorSums> corridors;  // in order of first appearance
+
+  for (const StepRecord& s : steps) {
+    const bool empty = IsEmptyBox(s);
+    const bool truth_known = TruthKnown(s);
+
+    if (!empty && !std::isnan(s.area)) areas.push_back(s.area);
+
+    // Paper 004 eq. 31 over the steps whose truth is known; an empty box
+    // holds nothing, so it counts as inconsistent whatever contained says.
+    if (s.contained != -1 || (empty && truth_known)) {
+      ++judged;
+      if (!empty && s.contained == 1) ++consistent;
+    }
+
+    if (!std::isnan(s.centre_error)) squared_errors.push_back(s.centre_error * s.centre_error);
+    if (!std::isnan(s.solve_time_s)) times.push_back(s.solve_time_s);
+
+    for (const VariableRecord& v : s.vars) {
+      auto it = std::find_if(corridors.begin(), corridors.end(),
+                             [&](const CorridorSums& c) { return c.corridor.var == v.name; });
+      if (it == corridors.end()) {
+        CorridorSums c;
+        c.corridor.var = v.name;
+        c.corridor.min_lower = std::numeric_limits<double>::infinity();
+        c.corridor.max_upper = -std::numeric_limits<double>::infinity();
+        corridors.push_back(c);
+        it = corridors.end() - 1;
+      }
+      if (empty || std::isnan(v.truth)) continue;
+      const double lower = v.lo - v.truth;
+      const double upper = v.hi - v.truth;
+      it->sum_lower += lower;
+      it->sum_upper += upper;
+      it->corridor.min_lower = std::min(it->corridor.min_lower, lower);
+      it->corridor.max_upper = std::max(it->corridor.max_upper, upper);
+      ++it->count;
+    }
+  }
+
+  m.mean_area = Mean(areas);
+  m.consistency_rate = judged == 0 ? kNaN : static_cast<double>(consistent) / judged;
+  m.centre_rmse = squared_errors.empty() ? kNaN : std::sqrt(Mean(squared_errors));
+
+  m.time_mean_s = Mean(times);
+  m.time_median_s = Quantile(times, 0.5);
+  m.time_p90_s = Quantile(times, 0.9);
+  BootstrapMeanInterval(times, bootstrap_seed, &m.time_mean_ci_lo_s, &m.time_mean_ci_hi_s);
+
+  for (CorridorSums& c : corridors) {
+    if (c.count == 0) {
+      c.corridor.mean_lower = c.corridor.mean_upper = kNaN;
+      c.corridor.min_lower = c.corridor.max_upper = kNaN;
+    } else {
+      c.corridor.mean_lower = c.sum_lower / c.count;
+      c.corridor.mean_upper = c.sum_upper / c.count;
+    }
+    m.corridors.push_back(c.corridor);
+  }
+  return m;
+}
+
+}  // namespace icp

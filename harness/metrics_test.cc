@@ -1,0 +1,192 @@
+#include "harness/metrics.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace icp {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+StepRecord Step(int step, std::string status, std::vector<VariableRecord> vars, int contained,
+                double area, double centre_error, double solve_time_s) {
+  StepRecord s;
+  s.step = step;
+  s.status = std::move(status);
+  s.vars = std::move(vars);
+  s.contained = contained;
+  s.area = area;
+  s.centre_error = centre_error;
+  s.solve_time_s = solve_time_s;
+  return s;
+}
+
+// Six steps whose aggregates are worked out by hand below; the times are
+// binary fractions, so mean, median and p90 are exact.
+std::vector<StepRecord> HandSteps() {
+  return {
+      Step(0, "contracted", {{"x", 0, 2, 1}, {"y", 0, 1, 0.5}}, 1, 2, 0.3, 0.25),
+      Step(1, "fixpoint", {{"x", 1, 4, 2}, {"y", 0, 2, 1}}, 1, 6, 0.4, 0.5),
+      Step(2, "empty", {{"x", kInf, -kInf, 3}, {"y", kInf, -kInf, 1}}, 0, kNaN, kNaN, 0.75),
+      Step(3, "contracted", {{"x", 0, 1, 5}, {"y", 0, 1, 0.5}}, 0, 1, 1.2, 1),
+      Step(4, "contracted", {{"x", 2, 3, kNaN}, {"y", 2, 3, kNaN}}, -1, 1, kNaN, 2.5),
+      Step(5, "stopped", {{"x", 0, 5, kNaN}, {"y", 0, 1, kNaN}}, -1, 5, kNaN, 1),
+  };
+}
+
+TEST(QuantileTest, InterpolatesBetweenOrderStatistics) {
+  EXPECT_EQ(Quantile({4, 1, 3, 2}, 0), 1);
+  EXPECT_EQ(Quantile({4, 1, 3, 2}, 1), 4);
+  EXPECT_EQ(Quantile({4, 1, 3, 2}, 0.5), 2.5);
+  EXPECT_EQ(Quantile({4, 1, 3, 2}, 0.25), 1.75);  // h = 0.75
+  EXPECT_EQ(Quantile({7}, 0.9), 7);
+  EXPECT_EQ(Quantile({1, kNaN, 3}, 0.5), 2);  // NaN entries are left out
+}
+
+TEST(QuantileTest, NaNWhereUndefined) {
+  EXPECT_TRUE(std::isnan(Quantile({}, 0.5)));
+  EXPECT_TRUE(std::isnan(Quantile({kNaN}, 0.5)));
+  EXPECT_TRUE(std::isnan(Quantile({1, 2}, -0.1)));
+  EXPECT_TRUE(std::isnan(Quantile({1, 2}, 1.5)));
+  EXPECT_TRUE(std::isnan(Quantile({1, 2}, kNaN)));
+}
+
+TEST(QuantileTest, InfiniteValues) {
+  EXPECT_EQ(Quantile({1, kInf}, 0.5), kInf);
+  EXPECT_EQ(Quantile({-kInf, 1}, 0.5), -kInf);
+  EXPECT_EQ(Quantile({1, 2, kInf}, 0.5), 2);
+}
+
+TEST(ComputeMetricsTest, HandComputedValues) {
+  const RunMetrics m = ComputeMetrics(HandSteps());
+  EXPECT_EQ(m.steps, 6);
+  // Non-empty boxes: steps 0, 1, 3, 4, 5 -> (2 + 6 + 1 + 1 + 5) / 5.
+  EXPECT_EQ(m.mean_area, 3);
+  // Truth known at steps 0-3; inside at 0 and 1.
+  EXPECT_EQ(m.consistency_rate, 0.5);
+  EXPECT_DOUBLE_EQ(m.centre_rmse, std::sqrt((0.09 + 0.16 + 1.44) / 3));
+  // Times sorted: 0.25 0.5 0.75 1 1 2.5; sum 6.
+  EXPECT_EQ(m.time_mean_s, 1);
+  EXPECT_EQ(m.time_median_s, 0.875);  // h = 2.5
+  EXPECT_EQ(m.time_p90_s, 1.75);      // h = 4.5
+
+  // Corridors over steps 0, 1, 3 (truth known, box non-empty).
+  ASSERT_EQ(m.corridors.size(), 2u);
+  const Corridor& x = m.corridors[0];
+  EXPECT_EQ(x.var, "x");
+  EXPECT_DOUBLE_EQ(x.mean_lower, (-1.0 - 1.0 - 5.0) / 3);
+  EXPECT_DOUBLE_EQ(x.mean_upper, (1.0 + 2.0 - 4.0) / 3);
+  EXPECT_EQ(x.min_lower, -5);
+  EXPECT_EQ(x.max_upper, 2);
+  const Corridor& y = m.corridors[1];
+  EXPECT_EQ(y.var, "y");
+  EXPECT_DOUBLE_EQ(y.mean_lower, (-0.5 - 1.0 - 0.5) / 3);
+  EXPECT_DOUBLE_EQ(y.mean_upper, (0.5 + 1.0 + 0.5) / 3);
+  EXPECT_EQ(y.min_lower, -1);
+  EXPECT_EQ(y.max_upper, 1);
+}
+
+TEST(ComputeMetricsTest, BootstrapIntervalHoldsTheMeanAndIsReproducible) {
+  const std::vector<StepRecord> steps = HandSteps();
+  const RunMetrics a = ComputeMetrics(steps, 7);
+  const RunMetrics b = ComputeMetrics(steps, 7);
+  const RunMetrics c = ComputeMetrics(steps, 8);
+  EXPECT_LE(a.time_mean_ci_lo_s, a.time_mean_s);
+  EXPECT_GE(a.time_mean_ci_hi_s, a.time_mean_s);
+  EXPECT_LT(a.time_mean_ci_lo_s, a.time_mean_ci_hi_s);
+  // Means of resamples stay within the sample's range.
+  EXPECT_GE(a.time_mean_ci_lo_s, 0.25);
+  EXPECT_LE(a.time_mean_ci_hi_s, 2.5);
+  EXPECT_EQ(a.time_mean_ci_lo_s, b.time_mean_ci_lo_s);
+  EXPECT_EQ(a.time_mean_ci_hi_s, b.time_mean_ci_hi_s);
+  EXPECT_TRUE(a.time_mean_ci_lo_s != c.time_mean_ci_lo_s ||
+              a.time_mean_ci_hi_s != c.time_mean_ci_hi_s);
+}
+
+TEST(ComputeMetricsTest, BootstrapOfConstantTimesIsThePoint) {
+  std::vector<StepRecord> steps;
+  for (int i = 0; i < 10; ++i) steps.push_back(Step(i, "fixpoint", {}, -1, 1, kNaN, 0.5));
+  const RunMetrics m = ComputeMetrics(steps);
+  EXPECT_EQ(m.time_mean_ci_lo_s, 0.5);
+  EXPECT_EQ(m.time_mean_ci_hi_s, 0.5);
+  EXPECT_EQ(m.time_median_s, 0.5);
+}
+
+TEST(ComputeMetricsTest, NoStepsGivesNaN) {
+  const RunMetrics m = ComputeMetrics({});
+  EXPECT_EQ(m.steps, 0);
+  EXPECT_TRUE(std::isnan(m.mean_area));
+  EXPECT_TRUE(std::isnan(m.consistency_rate));
+  EXPECT_TRUE(std::isnan(m.centre_rmse));
+  EXPECT_TRUE(std::isnan(m.time_mean_s));
+  EXPECT_TRUE(std::isnan(m.time_median_s));
+  EXPECT_TRUE(std::isnan(m.time_p90_s));
+  EXPECT_TRUE(std::isnan(m.time_mean_ci_lo_s));
+  EXPECT_TRUE(std::isnan(m.time_mean_ci_hi_s));
+  EXPECT_TRUE(m.corridors.empty());
+}
+
+TEST(ComputeMetricsTest, AllBoxesEmpty) {
+  std::vector<StepRecord> steps;
+  for (int i = 0; i < 3; ++i) {
+    steps.push_back(Step(i, "empty", {{"x", kInf, -kInf, 1.0 * i}}, 0, 0, kNaN, 0.125));
+  }
+  const RunMetrics m = ComputeMetrics(steps);
+  EXPECT_EQ(m.steps, 3);
+  EXPECT_TRUE(std::isnan(m.mean_area));
+  EXPECT_EQ(m.consistency_rate, 0);
+  EXPECT_TRUE(std::isnan(m.centre_rmse));
+  EXPECT_EQ(m.time_mean_s, 0.125);
+  ASSERT_EQ(m.corridors.size(), 1u);
+  EXPECT_EQ(m.corridors[0].var, "x");
+  EXPECT_TRUE(std::isnan(m.corridors[0].mean_lower));
+  EXPECT_TRUE(std::isnan(m.corridors[0].mean_upper));
+  EXPECT_TRUE(std::isnan(m.corridors[0].min_lower));
+  EXPECT_TRUE(std::isnan(m.corridors[0].max_upper));
+}
+
+TEST(ComputeMetricsTest, EmptyBoxWithKnownTruthNeverCountsAsContaining) {
+  // contained says 1 (or unknown) but the box is empty: counted as 0.
+  std::vector<StepRecord> steps = {
+      Step(0, "contracted", {{"x", 0, 1, 0.5}}, 1, 1, 0, 1),
+      Step(1, "empty", {{"x", kInf, -kInf, 0.5}}, 1, kNaN, kNaN, 1),
+      Step(2, "contracted", {{"x", kInf, -kInf, 0.5}}, -1, kNaN, kNaN, 1),
+      Step(3, "empty", {{"x", kInf, -kInf, kNaN}}, -1, kNaN, kNaN, 1),  // truth unknown
+  };
+  const RunMetrics m = ComputeMetrics(steps);
+  EXPECT_DOUBLE_EQ(m.consistency_rate, 1.0 / 3);
+  EXPECT_EQ(m.mean_area, 1);
+}
+
+TEST(ComputeMetricsTest, UnknownTruth) {
+  std::vector<StepRecord> steps = {
+      Step(0, "contracted", {{"x", 0, 1, kNaN}, {"y", 0, 4, kNaN}}, -1, 4, kNaN, 0.5),
+      Step(1, "contracted", {{"x", 0, 2, kNaN}, {"y", 0, 4, kNaN}}, -1, 8, kNaN, 1.5),
+  };
+  const RunMetrics m = ComputeMetrics(steps);
+  EXPECT_EQ(m.mean_area, 6);
+  EXPECT_TRUE(std::isnan(m.consistency_rate));
+  EXPECT_TRUE(std::isnan(m.centre_rmse));
+  EXPECT_EQ(m.time_mean_s, 1);
+  EXPECT_EQ(m.time_median_s, 1);
+  ASSERT_EQ(m.corridors.size(), 2u);
+  EXPECT_TRUE(std::isnan(m.corridors[1].mean_lower));
+}
+
+TEST(ComputeMetricsTest, NaNAreaIsLeftOutOfMeanArea) {
+  std::vector<StepRecord> steps = {
+      Step(0, "contracted", {{"theta", 0, 1, 0.5}}, 1, kNaN, 0.1, 1),
+      Step(1, "contracted", {{"theta", 0, 1, 0.5}}, 1, 3, 0.1, 1),
+  };
+  const RunMetrics m = ComputeMetrics(steps);
+  EXPECT_EQ(m.mean_area, 3);
+  EXPECT_DOUBLE_EQ(m.centre_rmse, 0.1);
+}
+
+}  // namespace
+}  // namespace icp

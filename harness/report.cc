@@ -1,0 +1,603 @@
+#include "harness/report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <tuple>
+#include <utility>
+
+#include "harness/metrics.h"
+#include "harness/results_store.h"
+
+namespace icp {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr const char* kDash = "—";
+constexpr int kMaxProblemLines = 20;  // failure list below table 1
+constexpr int kMaxSeedsListed = 8;
+
+// A table in display form: cells are Unicode text as Markdown shows them
+// ("—" for a missing value); the LaTeX writer escapes them.
+struct TextTable {
+  std::string title;
+  std::vector<std::string> headers;
+  std::vector<bool> numeric;  // right-aligned columns
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::string> notes;  // paragraphs after the table
+  std::vector<std::string> items;  // a bullet list after the notes
+  bool omit_if_empty = false;      // no rows: the notes only, no header
+};
+
+bool ParseNumber(const std::string& text, double* value) {
+  if (text.empty()) return false;
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size()) return false;
+  *value = v;
+  return true;
+}
+
+// Numbers compare as numbers ("5" < "20"), anything else as text; a number
+// sorts before a text.
+bool NaturalLess(const std::string& a, const std::string& b) {
+  double x, y;
+  const bool xa = ParseNumber(a, &x);
+  const bool yb = ParseNumber(b, &y);
+  if (xa && yb && x != y) return x < y;
+  if (xa != yb) return xa;
+  return a < b;
+}
+
+bool ParamsLess(const ParamMap& a, const ParamMap& b) {
+  auto i = a.begin();
+  auto j = b.begin();
+  for (; i != a.end() && j != b.end(); ++i, ++j) {
+    if (i->first != j->first) return i->first < j->first;
+    if (i->second != j->second) return NaturalLess(i->second, j->second);
+  }
+  return i == a.end() && j != b.end();
+}
+
+std::string FormatCsvNumber(double v) {
+  if (std::isnan(v)) return "";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+// Mean of values weighted by weights, skipping NaN values; NaN when no weight.
+double WeightedMean(const std::vector<std::pair<double, double>>& value_weight) {
+  double sum = 0, total = 0;
+  for (const auto& [v, w] : value_weight) {
+    if (std::isnan(v) || !(w > 0)) continue;
+    sum += v * w;
+    total += w;
+  }
+  return total > 0 ? sum / total : kNaN;
+}
+
+RunMetrics NaNMetrics() {
+  RunMetrics m;
+  m.mean_area = m.consistency_rate = m.centre_rmse = kNaN;
+  m.time_mean_s = m.time_median_s = m.time_p90_s = kNaN;
+  m.time_mean_ci_lo_s = m.time_mean_ci_hi_s = kNaN;
+  return m;
+}
+
+// Combines stored run metrics when steps are not at hand (see report.h).
+RunMetrics CombineRunMetrics(const std::vector<const RunRecord*>& runs) {
+  if (runs.size() == 1) return runs[0]->metrics;
+  RunMetrics m = NaNMetrics();
+  std::vector<std::pair<double, double>> area, rate, square, time;
+  for (const RunRecord* r : runs) {
+    const double w = r->metrics.steps;
+    m.steps += r->metrics.steps;
+    area.emplace_back(r->metrics.mean_area, w);
+    rate.emplace_back(r->metrics.consistency_rate, w);
+    square.emplace_back(r->metrics.centre_rmse * r->metrics.centre_rmse, w);
+    time.emplace_back(r->metrics.time_mean_s, w);
+  }
+  m.mean_area = WeightedMean(area);
+  m.consistency_rate = WeightedMean(rate);
+  m.centre_rmse = std::sqrt(WeightedMean(square));
+  m.time_mean_s = WeightedMean(time);
+  return m;
+}
+
+std::string SeedList(std::vector<std::uint64_t> seeds) {
+  std::sort(seeds.begin(), seeds.end());
+  std::string out = seeds.size() == 1 ? "seed " : "seeds ";
+  for (std::size_t i = 0; i < seeds.size(); ++i) {
+    if (i == kMaxSeedsListed) {
+      out += ", … (" + std::to_string(seeds.size()) + " runs)";
+      break;
+    }
+    if (i > 0) out += ", ";
+    out += std::to_string(seeds[i]);
+  }
+  return out;
+}
+
+std::string OneLine(std::string text) {
+  for (char& c : text) {
+    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+  }
+  return text;
+}
+
+std::string ParamsCell(const ParamMap& params) {
+  return params.empty() ? "default" : CompactParams(params);
+}
+
+std::string RunsCell(const GroupSummary& g) {
+  if (g.failed == 0 && g.timeout == 0 && g.skipped == 0) return std::to_string(g.ok);
+  std::string out = std::to_string(g.ok) + " ok";
+  for (const auto& [count, name] : {std::pair<int, const char*>{g.failed, "failed"},
+                                    {g.timeout, "timeout"},
+                                    {g.skipped, "skipped"}}) {
+    if (count > 0) out += ", " + std::to_string(count) + " " + name;
+  }
+  return out;
+}
+
+std::string Micro(double seconds) { return FormatNumber(seconds * 1e6); }
+
+std::string MeanWithInterval(double mean, double lo, double hi, double scale) {
+  std::string out = FormatNumber(mean * scale);
+  if (!std::isnan(lo) && !std::isnan(hi)) {
+    out += " [" + FormatNumber(lo * scale) + ", " + FormatNumber(hi * scale) + "]";
+  }
+  return out;
+}
+
+std::string Ratio(double a, double b) {
+  if (std::isnan(a) || std::isnan(b) || b == 0) return kDash;
+  return FormatNumber(a / b);
+}
+
+// Table 1: runs per configuration.
+TextTable GroupTable(const std::vector<GroupSummary>& groups) {
+  TextTable t;
+  t.title = "Runs per configuration (aggregated over seeds)";
+  t.headers = {"algorithm", "params",       "problem",          "params",
+               "runs",      "CSPs",         "mean area (m²)",   "consistency",
+               "centre RMSE (m)", "time median (µs)", "time p90 (µs)",
+               "time mean (µs) [95% CI]"};
+  t.numeric = {false, false, false, false, true, true, true, true, true, true, true, true};
+  int listed = 0, unlisted = 0;
+  for (const GroupSummary& g : groups) {
+    const RunMetrics& m = g.metrics;
+    t.rows.push_back({g.algorithm, ParamsCell(g.algorithm_params), g.problem,
+                      ParamsCell(g.problem_params), RunsCell(g), std::to_string(m.steps),
+                      FormatNumber(m.mean_area), FormatNumber(m.consistency_rate),
+                      FormatNumber(m.centre_rmse), Micro(m.time_median_s), Micro(m.time_p90_s),
+                      MeanWithInterval(m.time_mean_s, m.time_mean_ci_lo_s, m.time_mean_ci_hi_s,
+                                       1e6)});
+    for (const std::string& p : g.problems) {
+      if (listed == kMaxProblemLines) {
+        ++unlisted;
+        continue;
+      }
+      ++listed;
+      std::string who = g.algorithm;
+      if (!g.algorithm_params.empty()) who += " {" + CompactParams(g.algorithm_params) + "}";
+      who += " on " + g.problem;
+      if (!g.problem_params.empty()) who += " {" + CompactParams(g.problem_params) + "}";
+      t.items.push_back(who + ": " + p);
+    }
+  }
+  if (unlisted > 0) t.items.push_back("… and " + std::to_string(unlisted) + " more");
+  t.notes.push_back(
+      "Metrics over the CSPs of the ok runs, pooled across seeds; consistency: share of CSPs "
+      "whose box holds the truth (paper 004 eq. 31); times per CSP, 95% CI by bootstrap of "
+      "the mean.");
+  if (std::any_of(groups.begin(), groups.end(), [](const GroupSummary& g) { return !g.pooled; })) {
+    t.notes.push_back(
+        "Groups whose runs have no step records combine the stored run metrics; their median, "
+        "p90 and CI are shown only for a single run.");
+  }
+  if (!t.items.empty()) t.notes.push_back("Runs that did not finish ok:");
+  return t;
+}
+
+// Table 2: paper 000 Table 1, published vs measured.
+TextTable PaperTable(const std::vector<GroupSummary>& groups) {
+  TextTable t;
+  t.title = "Paper 000 Table 1: time per CSP, published vs measured (car-track, w = 20)";
+  t.headers = {"algorithm",      "published (ms)",  "measured (ms)",
+               "measured / published", "speed-up (published / measured)",
+               "published / HC4", "measured / HC4", "CSPs", "problem params"};
+  t.numeric = {false, true, true, true, true, true, true, true, false};
+  const GroupSummary* hc4 = FindPaperGroup(groups, "hc4");
+  const double hc4_published = PaperTable1().front().ms;
+  const double hc4_measured = hc4 ? hc4->metrics.time_mean_s * 1e3 : kNaN;
+  for (const PublishedTime& p : PaperTable1()) {
+    const GroupSummary* g = FindPaperGroup(groups, p.algorithm);
+    const double measured = g ? g->metrics.time_mean_s * 1e3 : kNaN;
+    t.rows.push_back({p.label, FormatNumber(p.ms), FormatNumber(measured), Ratio(measured, p.ms),
+                      Ratio(p.ms, measured), Ratio(p.ms, hc4_published),
+                      Ratio(measured, hc4_measured), g ? std::to_string(g->metrics.steps) : kDash,
+                      g ? ParamsCell(g->problem_params) : kDash});
+  }
+  t.notes.push_back(
+      "Measured: mean solve time per CSP over the ok runs of car-track with w = 20 and default "
+      "algorithm parameters (the configuration with the most CSPs when several match). "
+      "Published: paper 000 Table 1 (one lap, 2000 CSPs, w = 20). — : no such runs in the store.");
+  return t;
+}
+
+// Table 3: the window sweep.
+TextTable SweepTable(const std::vector<WindowPoint>& points) {
+  TextTable t;
+  t.title = "Window sweep on car-track (paper 000 Fig. 2)";
+  t.headers = {"configuration", "w", "runs", "CSPs", "mean area (m²)", "mean time (ms)"};
+  t.numeric = {false, true, true, true, true, true};
+  for (const WindowPoint& p : points) {
+    t.rows.push_back({p.label, FormatNumber(p.w), std::to_string(p.runs), std::to_string(p.steps),
+                      FormatNumber(p.mean_area), FormatNumber(p.mean_time_s * 1e3)});
+  }
+  t.omit_if_empty = true;
+  if (points.empty()) t.notes.push_back("No car-track configuration was run at several w.");
+  return t;
+}
+
+std::string MarkdownCell(const std::string& cell) {
+  std::string out;
+  for (char c : OneLine(cell)) {
+    if (c == '|') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+void WriteMarkdown(const TextTable& t, std::ostream& out) {
+  out << "## " << t.title << "\n\n";
+  if (!t.rows.empty() || !t.omit_if_empty) {
+    out << "|";
+    for (const std::string& h : t.headers) out << " " << MarkdownCell(h) << " |";
+    out << "\n|";
+    for (bool n : t.numeric) out << (n ? " ---: |" : " :--- |");
+    out << "\n";
+    for (const auto& row : t.rows) {
+      out << "|";
+      for (const std::string& c : row) out << " " << MarkdownCell(c) << " |";
+      out << "\n";
+    }
+    out << "\n";
+  }
+  for (const std::string& n : t.notes) out << n << "\n\n";
+  for (const std::string& i : t.items) out << "- " << OneLine(i) << "\n";
+  if (!t.items.empty()) out << "\n";
+}
+
+}  // namespace
+
+std::string TexEscape(const std::string& text) {
+  static const std::vector<std::pair<std::string, std::string>> kMap = {
+      {"\\", "\\textbackslash{}"}, {"_", "\\_"}, {"&", "\\&"}, {"%", "\\%"}, {"#", "\\#"},
+      {"{", "\\{"}, {"}", "\\}"}, {"$", "\\$"}, {"~", "\\textasciitilde{}"},
+      {"^", "\\textasciicircum{}"}, {"—", "---"}, {"µ", "$\\mu$"}, {"²", "$^2$"},
+      {"×", "$\\times$"}, {"∞", "$\\infty$"}, {"…", "\\ldots{}"}};
+  std::string out;
+  const std::string line = OneLine(text);
+  for (std::size_t i = 0; i < line.size();) {
+    bool matched = false;
+    for (const auto& [from, to] : kMap) {
+      if (line.compare(i, from.size(), from) == 0) {
+        out += to;
+        i += from.size();
+        matched = true;
+        break;
+      }
+    }
+    if (!matched) out += line[i++];
+  }
+  return out;
+}
+
+namespace {
+
+void WriteTex(const TextTable& t, std::ostream& out) {
+  out << "% " << OneLine(t.title) << "\n";
+  if (!t.rows.empty() || !t.omit_if_empty) {
+    out << "\\begin{table}[htbp]\n\\centering\n\\small\n\\caption{" << TexEscape(t.title)
+        << "}\n\\begin{tabular}{";
+    for (bool n : t.numeric) out << (n ? 'r' : 'l');
+    out << "}\n\\toprule\n";
+    for (std::size_t i = 0; i < t.headers.size(); ++i) {
+      out << (i ? " & " : "") << TexEscape(t.headers[i]);
+    }
+    out << " \\\\\n\\midrule\n";
+    for (const auto& row : t.rows) {
+      for (std::size_t i = 0; i < row.size(); ++i) out << (i ? " & " : "") << TexEscape(row[i]);
+      out << " \\\\\n";
+    }
+    out << "\\bottomrule\n\\end{tabular}\n\\end{table}\n\n";
+  }
+  for (const std::string& n : t.notes) out << TexEscape(n) << "\n\n";
+  if (!t.items.empty()) {
+    out << "\\begin{itemize}\n";
+    for (const std::string& i : t.items) out << "\\item " << TexEscape(i) << "\n";
+    out << "\\end{itemize}\n\n";
+  }
+}
+
+std::string CsvField(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string GroupCsv(const std::vector<GroupSummary>& groups) {
+  std::ostringstream out;
+  out << "algorithm,algorithm_params,problem,problem_params,runs_ok,runs_failed,runs_timeout,"
+         "runs_skipped,steps,mean_area_m2,consistency_rate,centre_rmse_m,time_median_us,"
+         "time_p90_us,time_mean_us,time_mean_ci_lo_us,time_mean_ci_hi_us\n";
+  for (const GroupSummary& g : groups) {
+    const RunMetrics& m = g.metrics;
+    const std::vector<std::string> fields = {
+        g.algorithm, CompactParams(g.algorithm_params), g.problem, CompactParams(g.problem_params),
+        std::to_string(g.ok), std::to_string(g.failed), std::to_string(g.timeout),
+        std::to_string(g.skipped), std::to_string(m.steps), FormatCsvNumber(m.mean_area),
+        FormatCsvNumber(m.consistency_rate), FormatCsvNumber(m.centre_rmse),
+        FormatCsvNumber(m.time_median_s * 1e6), FormatCsvNumber(m.time_p90_s * 1e6),
+        FormatCsvNumber(m.time_mean_s * 1e6), FormatCsvNumber(m.time_mean_ci_lo_s * 1e6),
+        FormatCsvNumber(m.time_mean_ci_hi_s * 1e6)};
+    for (std::size_t i = 0; i < fields.size(); ++i) out << (i ? "," : "") << CsvField(fields[i]);
+    out << "\n";
+  }
+  return out.str();
+}
+
+// Distinct values of one provenance field over the runs, for the header.
+std::string Distinct(const std::vector<RunRecord>& runs, std::string Provenance::*field) {
+  std::set<std::string> values;
+  for (const RunRecord& r : runs) {
+    if (!(r.provenance.*field).empty()) values.insert(r.provenance.*field);
+  }
+  std::string out;
+  for (const std::string& v : values) out += (out.empty() ? "" : "; ") + v;
+  return out.empty() ? "unknown" : out;
+}
+
+std::string Overview(const std::vector<RunRecord>& runs) {
+  int counts[4] = {0, 0, 0, 0};
+  for (const RunRecord& r : runs) ++counts[static_cast<int>(r.status)];
+  std::ostringstream out;
+  out << runs.size() << " runs: " << counts[0] << " ok, " << counts[1] << " failed, "
+      << counts[2] << " timeout, " << counts[3] << " skipped. Machines: "
+      << Distinct(runs, &Provenance::machine)
+      << ". Revisions: " << Distinct(runs, &Provenance::git_revision) << ".";
+  return out.str();
+}
+
+}  // namespace
+
+std::string FormatNumber(double v) {
+  if (std::isnan(v)) return kDash;
+  if (std::isinf(v)) return v > 0 ? "∞" : "-∞";
+  if (v == 0) return "0";
+  const double a = std::fabs(v);
+  char buf[64];
+  if (a >= 1e9 || a < 1e-3) {
+    std::snprintf(buf, sizeof buf, "%.3e", v);
+    return buf;
+  }
+  if (a >= 1e4) {
+    std::snprintf(buf, sizeof buf, "%.0f", v);
+    return buf;
+  }
+  const int magnitude = static_cast<int>(std::floor(std::log10(a)));
+  std::snprintf(buf, sizeof buf, "%.*f", std::max(0, 3 - magnitude), v);
+  std::string out = buf;
+  if (out.find('.') != std::string::npos) {
+    out.erase(out.find_last_not_of('0') + 1);
+    if (out.back() == '.') out.pop_back();
+  }
+  return out;
+}
+
+std::string CompactParams(const ParamMap& params) {
+  std::string out;
+  for (const auto& [k, v] : params) out += (out.empty() ? "" : ",") + k + "=" + v;
+  return out;
+}
+
+int AlgorithmRank(const std::string& algorithm) {
+  static const std::vector<std::string> kOrder = {"hc3", "hc4", "bc3", "bc4", "3b-bc4", "3b-hc4"};
+  const auto it = std::find(kOrder.begin(), kOrder.end(), algorithm);
+  return it == kOrder.end() ? static_cast<int>(kOrder.size()) : static_cast<int>(it - kOrder.begin());
+}
+
+const std::vector<PublishedTime>& PaperTable1() {
+  static const std::vector<PublishedTime> kTable = {
+      {"hc4", "HC4", 0.52}, {"bc3", "BC3", 1.02}, {"bc4", "BC4", 0.58}, {"3b-bc4", "3B-BC4", 1400}};
+  return kTable;
+}
+
+double CarTrackWindow(const RunSpec& spec) {
+  const auto it = spec.problem_params.find("w");
+  if (it == spec.problem_params.end()) return 20;
+  double w;
+  return ParseNumber(it->second, &w) ? w : kNaN;
+}
+
+bool IsPaperSetting(const RunSpec& spec) {
+  return spec.problem == "car-track" && spec.algorithm_params.empty() && CarTrackWindow(spec) == 20;
+}
+
+GroupSummary Summarise(const std::vector<const RunRecord*>& runs) {
+  GroupSummary g;
+  if (!runs.empty()) {
+    g.algorithm = runs[0]->spec.algorithm;
+    g.algorithm_params = runs[0]->spec.algorithm_params;
+    g.problem = runs[0]->spec.problem;
+    g.problem_params = runs[0]->spec.problem_params;
+  }
+  std::map<std::pair<RunStatus, std::string>, std::vector<std::uint64_t>> problems;
+  bool all_have_steps = true;
+  for (const RunRecord* r : runs) {
+    switch (r->status) {
+      case RunStatus::kOk:
+        ++g.ok;
+        g.ok_runs.push_back(r);
+        if (r->steps.empty() && r->metrics.steps > 0) all_have_steps = false;
+        continue;
+      case RunStatus::kFailed:
+        ++g.failed;
+        break;
+      case RunStatus::kTimeout:
+        ++g.timeout;
+        break;
+      case RunStatus::kSkipped:
+        ++g.skipped;
+        break;
+    }
+    problems[{r->status, OneLine(r->reason)}].push_back(r->spec.seed);
+  }
+  for (const auto& [what, seeds] : problems) {
+    std::string line = std::string(ToString(what.first)) + " (" + SeedList(seeds) + ")";
+    if (!what.second.empty()) line += ": " + what.second;
+    g.problems.push_back(line);
+  }
+  if (g.ok_runs.empty()) {
+    g.metrics = NaNMetrics();
+  } else if (all_have_steps) {
+    std::vector<StepRecord> pooled;
+    for (const RunRecord* r : g.ok_runs) pooled.insert(pooled.end(), r->steps.begin(), r->steps.end());
+    g.metrics = ComputeMetrics(pooled);
+  } else {
+    g.pooled = false;
+    g.metrics = CombineRunMetrics(g.ok_runs);
+  }
+  return g;
+}
+
+std::vector<GroupSummary> SummariseGroups(const std::vector<RunRecord>& runs) {
+  using Key = std::tuple<std::string, ParamMap, std::string, ParamMap>;
+  std::map<Key, std::vector<const RunRecord*>> by_key;
+  for (const RunRecord& r : runs) {
+    by_key[{r.spec.algorithm, r.spec.algorithm_params, r.spec.problem, r.spec.problem_params}]
+        .push_back(&r);
+  }
+  std::vector<GroupSummary> groups;
+  for (const auto& [key, members] : by_key) groups.push_back(Summarise(members));
+  std::sort(groups.begin(), groups.end(), [](const GroupSummary& a, const GroupSummary& b) {
+    if (a.problem != b.problem) return a.problem < b.problem;
+    if (a.problem_params != b.problem_params) return ParamsLess(a.problem_params, b.problem_params);
+    const int ra = AlgorithmRank(a.algorithm), rb = AlgorithmRank(b.algorithm);
+    if (ra != rb) return ra < rb;
+    if (a.algorithm != b.algorithm) return a.algorithm < b.algorithm;
+    return ParamsLess(a.algorithm_params, b.algorithm_params);
+  });
+  return groups;
+}
+
+const GroupSummary* FindPaperGroup(const std::vector<GroupSummary>& groups,
+                                   const std::string& algorithm) {
+  const GroupSummary* best = nullptr;
+  for (const GroupSummary& g : groups) {
+    if (g.algorithm != algorithm || g.ok == 0) continue;
+    RunSpec spec;
+    spec.algorithm = g.algorithm;
+    spec.algorithm_params = g.algorithm_params;
+    spec.problem = g.problem;
+    spec.problem_params = g.problem_params;
+    if (!IsPaperSetting(spec)) continue;
+    if (!best || g.metrics.steps > best->metrics.steps) best = &g;
+  }
+  return best;
+}
+
+std::vector<WindowPoint> WindowSweep(const std::vector<RunRecord>& runs) {
+  // configuration (algorithm, its params, problem params but w) -> w -> runs
+  using Config = std::tuple<std::string, ParamMap, ParamMap>;
+  std::map<Config, std::map<double, std::vector<const RunRecord*>>> configs;
+  for (const RunRecord& r : runs) {
+    if (r.spec.problem != "car-track" || r.status != RunStatus::kOk) continue;
+    const double w = CarTrackWindow(r.spec);
+    if (std::isnan(w)) continue;
+    ParamMap others = r.spec.problem_params;
+    others.erase("w");
+    configs[{r.spec.algorithm, r.spec.algorithm_params, others}][w].push_back(&r);
+  }
+  std::vector<WindowPoint> points;
+  for (const auto& [config, by_w] : configs) {
+    if (by_w.size() < 2) continue;
+    const auto& [algorithm, algorithm_params, others] = config;
+    std::string label = algorithm;
+    if (!algorithm_params.empty()) label += " {" + CompactParams(algorithm_params) + "}";
+    if (!others.empty()) label += " [" + CompactParams(others) + "]";
+    for (const auto& [w, members] : by_w) {
+      const GroupSummary g = Summarise(members);
+      WindowPoint p;
+      p.label = label;
+      p.algorithm = algorithm;
+      p.w = w;
+      p.runs = g.ok;
+      p.steps = g.metrics.steps;
+      p.mean_area = g.metrics.mean_area;
+      p.mean_time_s = g.metrics.time_mean_s;
+      points.push_back(p);
+    }
+  }
+  std::stable_sort(points.begin(), points.end(), [](const WindowPoint& a, const WindowPoint& b) {
+    const int ra = AlgorithmRank(a.algorithm), rb = AlgorithmRank(b.algorithm);
+    if (ra != rb) return ra < rb;
+    if (a.label != b.label) return a.label < b.label;
+    return a.w < b.w;
+  });
+  return points;
+}
+
+std::string Report(const std::vector<RunRecord>& runs, const std::string& format) {
+  if (format != "md" && format != "tex" && format != "csv") {
+    throw std::invalid_argument("report format '" + format + "': must be one of md|tex|csv");
+  }
+  const std::vector<GroupSummary> groups = SummariseGroups(runs);
+  if (format == "csv") return GroupCsv(groups);
+
+  const std::vector<TextTable> tables = {GroupTable(groups), PaperTable(groups),
+                                         SweepTable(WindowSweep(runs))};
+  std::ostringstream out;
+  if (format == "md") {
+    out << "# icpbench report\n\n" << Overview(runs) << "\n\n";
+    for (const TextTable& t : tables) WriteMarkdown(t, out);
+  } else {
+    out << "% icpbench report; needs \\usepackage{booktabs}\n% " << OneLine(Overview(runs))
+        << "\n\n";
+    for (const TextTable& t : tables) WriteTex(t, out);
+  }
+  return out.str();
+}
+
+std::vector<RunRecord> LoadRunsFromDirectory(const std::string& dir) {
+  const std::string path = StorePath(dir);
+  if (!std::filesystem::is_regular_file(path)) {
+    throw std::runtime_error("no results store in '" + dir + "' (expected " + path + ")");
+  }
+  return ResultsStore(path).LoadRuns(/*with_steps=*/true);
+}
+
+std::string ReportDirectory(const std::string& dir, const std::string& format) {
+  if (format != "md" && format != "tex" && format != "csv") {
+    throw std::invalid_argument("report format '" + format + "': must be one of md|tex|csv");
+  }
+  return Report(LoadRunsFromDirectory(dir), format);
+}
+
+}  // namespace icp

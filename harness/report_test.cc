@@ -1,0 +1,306 @@
+#include "harness/report.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "harness/metrics.h"
+#include "harness/results_store.h"
+
+namespace icp {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// A run whose steps take the given solve times (seconds); each step's box
+// is [truth - 1, truth + 1] in x and y (area 4 m^2) around a truth on a line.
+RunRecord MakeRun(const std::string& algorithm, ParamMap algorithm_params, ParamMap problem_params,
+                  std::uint64_t seed, const std::vector<double>& times,
+                  RunStatus status = RunStatus::kOk, const std::string& reason = "") {
+  RunRecord r;
+  r.spec.algorithm = algorithm;
+  r.spec.algorithm_params = std::move(algorithm_params);
+  r.spec.problem = "car-track";
+  r.spec.problem_params = std::move(problem_params);
+  r.spec.seed = seed;
+  r.status = status;
+  r.reason = reason;
+  if (status != RunStatus::kOk) return r;
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    StepRecord s;
+    s.step = static_cast<int>(i);
+    s.status = "fixpoint";
+    const double t = static_cast<double>(i);
+    s.vars = {{"x", t - 1, t + 1, t}, {"y", -1, 1, 0}, {"theta", -0.1, 0.1, 0}};
+    s.contained = 1;
+    s.area = 4;
+    s.centre_error = 0;
+    s.solve_time_s = times[i];
+    r.steps.push_back(s);
+  }
+  r.metrics = ComputeMetrics(r.steps);
+  return r;
+}
+
+std::vector<std::string> Lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+// The Markdown row whose first cell is first.
+std::string MarkdownRow(const std::string& md, const std::string& first) {
+  for (const std::string& line : Lines(md)) {
+    if (line.rfind("| " + first + " |", 0) == 0) return line;
+  }
+  return "";
+}
+
+// RFC 4180 fields of one line.
+std::vector<std::string> CsvFields(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        fields.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        fields.back() += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
+TEST(FormatNumberTest, SignificantDigitsWithoutTrailingZeros) {
+  EXPECT_EQ(FormatNumber(0.52), "0.52");
+  EXPECT_EQ(FormatNumber(1400), "1400");
+  EXPECT_EQ(FormatNumber(0.487312), "0.4873");
+  EXPECT_EQ(FormatNumber(12.3456), "12.35");
+  EXPECT_EQ(FormatNumber(1), "1");
+  EXPECT_EQ(FormatNumber(1400000), "1400000");
+  EXPECT_EQ(FormatNumber(0), "0");
+  EXPECT_EQ(FormatNumber(-2.5), "-2.5");
+  EXPECT_EQ(FormatNumber(1.5e-5), "1.500e-05");
+  EXPECT_EQ(FormatNumber(kNaN), "—");
+  EXPECT_EQ(FormatNumber(std::numeric_limits<double>::infinity()), "∞");
+}
+
+TEST(ReportTest, RejectsUnknownFormat) {
+  EXPECT_THROW(Report({}, "html"), std::invalid_argument);
+  EXPECT_THROW(ReportDirectory("/nonexistent", "pdf"), std::invalid_argument);
+}
+
+TEST(ReportTest, MissingStoreIsAnError) {
+  EXPECT_THROW(ReportDirectory("/nonexistent/icpbench-report-test", "md"), std::runtime_error);
+}
+
+TEST(ReportTest, EmptyStoreGivesHeadersAndDashes) {
+  for (const char* format : {"md", "tex", "csv"}) {
+    EXPECT_NO_THROW(Report({}, format)) << format;
+  }
+  const std::string md = Report({}, "md");
+  EXPECT_NE(md.find("| algorithm | params | problem |"), std::string::npos);
+  EXPECT_EQ(MarkdownRow(md, "HC4"), "| HC4 | 0.52 | — | — | — | 1 | — | — | — |");
+  EXPECT_EQ(Lines(Report({}, "csv")).size(), 1u);
+}
+
+TEST(ReportTest, GroupsPoolStepsOverSeeds) {
+  // Two seeds: times {1, 2, 3} and {4, 5} us; pooled median 3, mean 3.
+  const std::vector<RunRecord> runs = {MakeRun("hc4", {}, {}, 1, {1e-6, 2e-6, 3e-6}),
+                                       MakeRun("hc4", {}, {}, 2, {4e-6, 5e-6}),
+                                       MakeRun("hc4", {}, {}, 3, {}, RunStatus::kTimeout, "600 s")};
+  const std::vector<GroupSummary> groups = SummariseGroups(runs);
+  ASSERT_EQ(groups.size(), 1u);
+  const GroupSummary& g = groups[0];
+  EXPECT_EQ(g.ok, 2);
+  EXPECT_EQ(g.timeout, 1);
+  EXPECT_TRUE(g.pooled);
+  EXPECT_EQ(g.metrics.steps, 5);
+  EXPECT_DOUBLE_EQ(g.metrics.time_median_s, 3e-6);
+  EXPECT_DOUBLE_EQ(g.metrics.time_mean_s, 3e-6);
+  EXPECT_DOUBLE_EQ(g.metrics.mean_area, 4);
+  EXPECT_DOUBLE_EQ(g.metrics.consistency_rate, 1);
+  EXPECT_LE(g.metrics.time_mean_ci_lo_s, 3e-6);
+  EXPECT_GE(g.metrics.time_mean_ci_hi_s, 3e-6);
+  ASSERT_EQ(g.problems.size(), 1u);
+  EXPECT_EQ(g.problems[0], "timeout (seed 3): 600 s");
+
+  const std::string md = Report(runs, "md");
+  const std::string row = MarkdownRow(md, "hc4");
+  EXPECT_NE(row.find("| default | car-track | default | 2 ok, 1 timeout | 5 | 4 | 1 | 0 | 3 |"),
+            std::string::npos)
+      << row;
+  EXPECT_NE(md.find("- hc4 on car-track: timeout (seed 3): 600 s"), std::string::npos) << md;
+}
+
+TEST(ReportTest, RunsWithoutStepsCombineStoredMetrics) {
+  RunRecord a = MakeRun("bc4", {}, {}, 1, {1e-3, 1e-3, 1e-3});
+  RunRecord b = MakeRun("bc4", {}, {}, 2, {4e-3});
+  a.steps.clear();
+  b.steps.clear();
+  const std::vector<GroupSummary> groups = SummariseGroups({a, b});
+  ASSERT_EQ(groups.size(), 1u);
+  EXPECT_FALSE(groups[0].pooled);
+  EXPECT_EQ(groups[0].metrics.steps, 4);
+  EXPECT_DOUBLE_EQ(groups[0].metrics.time_mean_s, (3 * 1e-3 + 4e-3) / 4);
+  EXPECT_TRUE(std::isnan(groups[0].metrics.time_median_s));
+}
+
+TEST(ReportTest, FailedOnlyGroupShowsDashes) {
+  const std::vector<RunRecord> runs = {
+      MakeRun("bc3", {}, {}, 1, {}, RunStatus::kFailed, "threw: bad | input")};
+  const std::string md = Report(runs, "md");
+  EXPECT_EQ(MarkdownRow(md, "bc3"),
+            "| bc3 | default | car-track | default | 0 ok, 1 failed | 0 | — | — | — | — | — | — |");
+  EXPECT_NE(md.find("- bc3 on car-track: failed (seed 1): threw: bad | input"), std::string::npos);
+  // The failed group does not count as measured in the paper table.
+  EXPECT_EQ(MarkdownRow(md, "BC3"), "| BC3 | 1.02 | — | — | — | 1.962 | — | — | — |");
+}
+
+TEST(ReportTest, PublishedVersusMeasured) {
+  const std::vector<RunRecord> runs = {
+      // HC4: 0.4 ms per CSP over 4 CSPs at the default w...
+      MakeRun("hc4", {}, {}, 1, {0.4e-3, 0.4e-3}), MakeRun("hc4", {}, {}, 2, {0.4e-3, 0.4e-3}),
+      // ...beats a shorter group at w = 20 given explicitly (fewer CSPs)...
+      MakeRun("hc4", {}, {{"w", "20"}, {"steps", "1"}}, 1, {9e-3}),
+      // ...and non-default params or another w never match.
+      MakeRun("hc4", {{"ratio", "0.1"}}, {}, 1, {7e-3, 7e-3, 7e-3, 7e-3, 7e-3}),
+      MakeRun("hc4", {}, {{"w", "10"}}, 1, {7e-3, 7e-3, 7e-3, 7e-3, 7e-3}),
+      MakeRun("bc3", {}, {{"w", "20"}}, 1, {0.8e-3}),
+      MakeRun("3b-bc4", {}, {}, 1, {1.2}),
+  };
+  const std::string md = Report(runs, "md");
+  EXPECT_EQ(MarkdownRow(md, "HC4"), "| HC4 | 0.52 | 0.4 | 0.7692 | 1.3 | 1 | 1 | 4 | default |") << md;
+  EXPECT_EQ(MarkdownRow(md, "BC3"), "| BC3 | 1.02 | 0.8 | 0.7843 | 1.275 | 1.962 | 2 | 1 | w=20 |");
+  EXPECT_EQ(MarkdownRow(md, "BC4"), "| BC4 | 0.58 | — | — | — | 1.115 | — | — | — |");
+  EXPECT_EQ(MarkdownRow(md, "3B-BC4"),
+            "| 3B-BC4 | 1400 | 1200 | 0.8571 | 1.167 | 2692 | 3000 | 1 | default |");
+
+  // The same group in LaTeX.
+  const std::string tex = Report(runs, "tex");
+  EXPECT_NE(tex.find("HC4 & 0.52 & 0.4 & 0.7692 & 1.3 & 1 & 1 & 4 & default \\\\"),
+            std::string::npos)
+      << tex;
+  EXPECT_NE(tex.find("BC4 & 0.58 & --- & --- & --- & 1.115 & --- & --- & --- \\\\"),
+            std::string::npos);
+}
+
+TEST(ReportTest, PaperGroupNeedsHc4ForMeasuredRatios) {
+  const std::string md = Report({MakeRun("bc4", {}, {}, 1, {1e-3})}, "md");
+  EXPECT_EQ(MarkdownRow(md, "BC4"), "| BC4 | 0.58 | 1 | 1.724 | 0.58 | 1.115 | — | 1 | default |");
+}
+
+TEST(ReportTest, TexUsesBooktabsAndEscapes) {
+  const std::vector<RunRecord> runs = {
+      MakeRun("hc4", {{"odd_name", "50%&#{x}$"}}, {}, 1, {1e-3}),
+      MakeRun("hc4", {}, {}, 1, {}, RunStatus::kSkipped, "needs a_b")};
+  const std::string tex = Report(runs, "tex");
+  for (const char* s : {"\\toprule", "\\midrule", "\\bottomrule", "\\begin{tabular}"}) {
+    EXPECT_NE(tex.find(s), std::string::npos) << s;
+  }
+  EXPECT_NE(tex.find("odd\\_name=50\\%\\&\\#\\{x\\}\\$"), std::string::npos) << tex;
+  EXPECT_NE(tex.find("mean area (m$^2$)"), std::string::npos);
+  EXPECT_NE(tex.find("time median ($\\mu$s)"), std::string::npos);
+  EXPECT_NE(tex.find("\\item hc4 on car-track: skipped (seed 1): needs a\\_b"), std::string::npos);
+  // Every escaped special sits in the tabular or in text, never raw.
+  for (const std::string& line : Lines(tex)) {
+    if (line.empty() || line[0] == '%') continue;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      if (line[i] == '_' || line[i] == '&' || line[i] == '#') {
+        if (line[i] == '&' && i > 0 && line[i - 1] == ' ' && i + 1 < line.size() &&
+            line[i + 1] == ' ') {
+          continue;  // a column separator
+        }
+        EXPECT_EQ(line[i - 1], '\\') << line;
+      }
+    }
+  }
+  EXPECT_EQ(TexEscape("a_b & {c} 100% #1 ~ ^ \\"),
+            "a\\_b \\& \\{c\\} 100\\% \\#1 \\textasciitilde{} \\textasciicircum{} "
+            "\\textbackslash{}");
+}
+
+TEST(ReportTest, CsvParsesBackWithOneColumnPerHeader) {
+  const std::vector<RunRecord> runs = {
+      MakeRun("hc4", {{"ratio", "0.1"}, {"note", "say \"hi\""}}, {{"w", "5"}}, 1, {2e-6, 4e-6}),
+      MakeRun("bc3", {}, {}, 1, {}, RunStatus::kFailed, "boom, twice")};
+  const std::vector<std::string> lines = Lines(Report(runs, "csv"));
+  ASSERT_EQ(lines.size(), 3u);
+  const std::vector<std::string> header = CsvFields(lines[0]);
+  EXPECT_EQ(header.size(), 17u);
+  EXPECT_EQ(header[0], "algorithm");
+  EXPECT_EQ(header[14], "time_mean_us");
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    EXPECT_EQ(CsvFields(lines[i]).size(), header.size()) << lines[i];
+  }
+  // Ordered by problem params (default first), then algorithm.
+  const std::vector<std::string> bc3 = CsvFields(lines[1]);
+  const std::vector<std::string> hc4 = CsvFields(lines[2]);
+  EXPECT_EQ(bc3[0], "bc3");
+  EXPECT_EQ(bc3[5], "1");   // runs_failed
+  EXPECT_EQ(bc3[9], "");    // mean area: NaN is empty
+  EXPECT_EQ(hc4[1], "note=say \"hi\",ratio=0.1");
+  EXPECT_EQ(hc4[3], "w=5");
+  EXPECT_EQ(hc4[8], "2");   // steps
+  EXPECT_EQ(hc4[14], "3");  // mean time, us
+}
+
+TEST(ReportTest, WindowSweepOrdersWNumerically) {
+  std::vector<RunRecord> runs;
+  for (const char* w : {"20", "5", "10"}) {
+    const double ms = std::stod(w) / 10;
+    runs.push_back(MakeRun("bc4", {}, {{"w", w}}, 1, {ms * 1e-3, ms * 1e-3}));
+    runs.push_back(MakeRun("hc4", {}, {{"w", w}}, 1, {ms * 1e-3}));
+  }
+  runs.push_back(MakeRun("hc4", {}, {}, 2, {3e-3}));  // w = 20 by default: pooled with "20"
+  runs.push_back(MakeRun("bc3", {}, {}, 1, {1e-3}));  // one w only: no sweep
+  const std::vector<WindowPoint> points = WindowSweep(runs);
+  ASSERT_EQ(points.size(), 6u);
+  EXPECT_EQ(points[0].algorithm, "hc4");
+  EXPECT_EQ(points[0].w, 5);
+  EXPECT_EQ(points[1].w, 10);
+  EXPECT_EQ(points[2].w, 20);
+  EXPECT_EQ(points[2].runs, 2);
+  EXPECT_DOUBLE_EQ(points[2].mean_time_s, 2.5e-3);
+  EXPECT_EQ(points[3].algorithm, "bc4");
+  const std::string md = Report(runs, "md");
+  EXPECT_EQ(MarkdownRow(md, "hc4"), "| hc4 | default | car-track | default | 1 | 1 | 4 | 1 | 0 | 3000 | 3000 | 3000 [3000, 3000] |");
+  EXPECT_NE(md.find("| hc4 | 20 | 2 | 2 | 4 | 2.5 |"), std::string::npos) << md;
+  EXPECT_EQ(Report({runs.back()}, "md").find("| configuration |"), std::string::npos);
+}
+
+TEST(ReportTest, ReadsTheStoreOfADirectory) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("icpbench_report_test_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  {
+    ResultsStore store(StorePath(dir.string()));
+    store.Insert(MakeRun("hc4", {}, {}, 1, {0.5e-3, 0.5e-3}));
+  }
+  const std::string md = ReportDirectory(dir.string(), "md");
+  EXPECT_EQ(MarkdownRow(md, "HC4"), "| HC4 | 0.52 | 0.5 | 0.9615 | 1.04 | 1 | 1 | 2 | default |");
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace icp

@@ -1,0 +1,610 @@
+#include "harness/results_store.h"
+
+#include <sqlite3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <string_view>
+#include <system_error>
+#include <unordered_map>
+#include <utility>
+
+namespace icp {
+
+namespace {
+
+constexpr int kSchemaVersion = 1;
+constexpr int kBusyTimeoutMs = 30000;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+constexpr const char* kConventions =
+    "NaN doubles are NULL; +-inf are REAL infinities; steps.contained is 1 (truth in box), "
+    "0 (not) or NULL (truth unknown); empty boxes have lo=+inf, hi=-inf; times in s, areas in "
+    "m^2, distances in m; *_params are JSON objects of text values; corridors is a JSON array "
+    "(NaN as null, +-inf as \"inf\"/\"-inf\"); seed is the uint64 read as int64; step_values.pos "
+    "is the variable's place in its step (0-based).";
+
+constexpr const char* kSchema = R"sql(
+CREATE TABLE IF NOT EXISTS meta (
+  key TEXT PRIMARY KEY,
+  value TEXT
+);
+CREATE TABLE IF NOT EXISTS runs (
+  id INTEGER PRIMARY KEY,
+  key TEXT UNIQUE NOT NULL,
+  spec_file TEXT,
+  algorithm TEXT,
+  algorithm_params TEXT,
+  problem TEXT,
+  problem_params TEXT,
+  seed INTEGER,
+  timeout_s REAL,
+  status TEXT,
+  reason TEXT,
+  wall_time_s REAL,
+  steps INTEGER,
+  mean_area REAL,
+  consistency_rate REAL,
+  centre_rmse REAL,
+  time_mean_s REAL,
+  time_median_s REAL,
+  time_p90_s REAL,
+  time_mean_ci_lo_s REAL,
+  time_mean_ci_hi_s REAL,
+  corridors TEXT,
+  git_revision TEXT,
+  machine TEXT,
+  compiler TEXT,
+  flags TEXT,
+  date TEXT
+);
+CREATE TABLE IF NOT EXISTS steps (
+  run_id INTEGER NOT NULL REFERENCES runs(id),
+  step INTEGER NOT NULL,
+  status TEXT,
+  contained INTEGER,
+  area REAL,
+  centre_error REAL,
+  solve_time_s REAL,
+  PRIMARY KEY (run_id, step)
+) WITHOUT ROWID;
+CREATE TABLE IF NOT EXISTS step_values (
+  run_id INTEGER NOT NULL,
+  step INTEGER NOT NULL,
+  pos INTEGER NOT NULL,
+  var TEXT NOT NULL,
+  lo REAL,
+  hi REAL,
+  truth REAL,
+  PRIMARY KEY (run_id, step, pos),
+  UNIQUE (run_id, step, var),
+  FOREIGN KEY (run_id, step) REFERENCES steps(run_id, step)
+) WITHOUT ROWID;
+)sql";
+
+constexpr const char* kRunColumns =
+    "key, spec_file, algorithm, algorithm_params, problem, problem_params, seed, timeout_s, "
+    "status, reason, wall_time_s, steps, mean_area, consistency_rate, centre_rmse, time_mean_s, "
+    "time_median_s, time_p90_s, time_mean_ci_lo_s, time_mean_ci_hi_s, corridors, git_revision, "
+    "machine, compiler, flags, date";
+
+[[noreturn]] void Fail(const std::string& path, const std::string& what, sqlite3* db) {
+  std::string message = "results store '" + path + "': " + what;
+  if (db != nullptr) message += ": " + std::string(sqlite3_errmsg(db));
+  throw StoreError(message);
+}
+
+// A prepared statement, finalised on scope exit.
+class Statement {
+ public:
+  Statement(sqlite3* db, const std::string& path, std::string_view sql) : db_(db), path_(path) {
+    if (sqlite3_prepare_v2(db, sql.data(), static_cast<int>(sql.size()), &stmt_, nullptr) !=
+        SQLITE_OK) {
+      Fail(path, "preparing '" + std::string(sql) + "'", db);
+    }
+  }
+  ~Statement() { sqlite3_finalize(stmt_); }
+  Statement(const Statement&) = delete;
+  Statement& operator=(const Statement&) = delete;
+
+  void Text(int i, std::string_view v) {
+    Check(sqlite3_bind_text(stmt_, i, v.data(), static_cast<int>(v.size()), SQLITE_TRANSIENT));
+  }
+  void Int(int i, std::int64_t v) { Check(sqlite3_bind_int64(stmt_, i, v)); }
+  // NaN -> NULL; infinities are kept as REAL values.
+  void Double(int i, double v) {
+    Check(std::isnan(v) ? sqlite3_bind_null(stmt_, i) : sqlite3_bind_double(stmt_, i, v));
+  }
+  void Null(int i) { Check(sqlite3_bind_null(stmt_, i)); }
+
+  // True while there is a row; throws on errors.
+  bool Step() {
+    int rc = sqlite3_step(stmt_);
+    if (rc == SQLITE_ROW) return true;
+    if (rc == SQLITE_DONE) return false;
+    Fail(path_, "running '" + std::string(sqlite3_sql(stmt_)) + "'", db_);
+  }
+  void Run() {
+    while (Step()) {
+    }
+  }
+  void Reset() {
+    sqlite3_reset(stmt_);
+    sqlite3_clear_bindings(stmt_);
+  }
+
+  bool IsNull(int i) const { return sqlite3_column_type(stmt_, i) == SQLITE_NULL; }
+  std::string ColumnText(int i) const {
+    const unsigned char* p = sqlite3_column_text(stmt_, i);
+    if (p == nullptr) return "";
+    return std::string(reinterpret_cast<const char*>(p),
+                       static_cast<std::size_t>(sqlite3_column_bytes(stmt_, i)));
+  }
+  std::int64_t ColumnInt(int i) const { return sqlite3_column_int64(stmt_, i); }
+  double ColumnDouble(int i) const { return IsNull(i) ? kNaN : sqlite3_column_double(stmt_, i); }
+
+ private:
+  void Check(int rc) {
+    if (rc != SQLITE_OK) Fail(path_, "binding a value", db_);
+  }
+  sqlite3* db_;
+  const std::string& path_;
+  sqlite3_stmt* stmt_ = nullptr;
+};
+
+void Exec(sqlite3* db, const std::string& path, const char* sql) {
+  char* error = nullptr;
+  if (sqlite3_exec(db, sql, nullptr, nullptr, &error) != SQLITE_OK) {
+    std::string message = error != nullptr ? error : sqlite3_errmsg(db);
+    sqlite3_free(error);
+    throw StoreError("results store '" + path + "': " + message);
+  }
+}
+
+// Runs body inside BEGIN IMMEDIATE ... COMMIT, rolling back if it throws.
+template <class Body>
+void InTransaction(sqlite3* db, const std::string& path, Body&& body) {
+  Exec(db, path, "BEGIN IMMEDIATE");
+  try {
+    body();
+    Exec(db, path, "COMMIT");
+  } catch (...) {
+    sqlite3_exec(db, "ROLLBACK", nullptr, nullptr, nullptr);
+    throw;
+  }
+}
+
+sqlite3* Open(const std::string& path, int flags) {
+  sqlite3* db = nullptr;
+  if (sqlite3_open_v2(path.c_str(), &db, flags, nullptr) != SQLITE_OK) {
+    std::string message = "cannot open: ";
+    message += db != nullptr ? sqlite3_errmsg(db) : "out of memory";
+    sqlite3_close_v2(db);
+    std::error_code ec;
+    std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    if (!parent.empty() && !std::filesystem::is_directory(parent, ec)) {
+      message += " (directory '" + parent.string() + "' does not exist)";
+    } else if (std::filesystem::is_directory(path, ec)) {
+      message += " (it is a directory)";
+    }
+    throw StoreError("results store '" + path + "': " + message);
+  }
+  sqlite3_extended_result_codes(db, 1);
+  sqlite3_busy_timeout(db, kBusyTimeoutMs);
+  return db;
+}
+
+// Checks that db is an icpbench store of this schema version; with
+// may_create, makes an empty file (or one without tables) into one.
+void CheckOrCreateSchema(sqlite3* db, const std::string& path, bool may_create) {
+  auto has_meta = [&] {
+    Statement q(db, path, "SELECT count(*) FROM sqlite_master WHERE type='table' AND name='meta'");
+    q.Step();
+    return q.ColumnInt(0) > 0;
+  };
+  auto table_count = [&] {
+    Statement q(db, path, "SELECT count(*) FROM sqlite_master WHERE type='table'");
+    q.Step();
+    return q.ColumnInt(0);
+  };
+  auto check_version = [&] {
+    Statement q(db, path, "SELECT value FROM meta WHERE key='schema_version'");
+    std::string version = q.Step() ? q.ColumnText(0) : "";
+    if (version != std::to_string(kSchemaVersion)) {
+      throw StoreError("results store '" + path + "': schema version '" + version +
+                       "', this build reads version " + std::to_string(kSchemaVersion));
+    }
+  };
+  // Reading the catalogue is also what reports "file is not a database".
+  if (has_meta()) {
+    check_version();
+    return;
+  }
+  auto not_a_store = [&] {
+    return StoreError("results store '" + path + "': not an icpbench results store (no meta table)");
+  };
+  if (!may_create) throw not_a_store();
+  InTransaction(db, path, [&] {
+    if (has_meta()) return;  // another process created it meanwhile
+    if (table_count() > 0) throw not_a_store();
+    Exec(db, path, kSchema);
+    Statement insert(db, path, "INSERT INTO meta(key, value) VALUES (?, ?)");
+    const std::pair<const char*, std::string> rows[] = {
+        {"schema_version", std::to_string(kSchemaVersion)},
+        {"conventions", kConventions},
+        {"writer", "icpbench"},
+    };
+    for (const auto& [key, value] : rows) {
+      insert.Text(1, key);
+      insert.Text(2, value);
+      insert.Run();
+      insert.Reset();
+    }
+  });
+  check_version();
+}
+
+std::string ParamsToJson(const ParamMap& params, const std::string& path) {
+  nlohmann::json object = nlohmann::json::object();
+  for (const auto& [key, value] : params) object[key] = value;
+  try {
+    return object.dump();
+  } catch (const nlohmann::json::exception& e) {
+    throw StoreError("results store '" + path + "': parameters are not UTF-8 text: " + e.what());
+  }
+}
+
+ParamMap ParamsFromJson(const std::string& text, const std::string& path) {
+  ParamMap params;
+  if (text.empty()) return params;
+  try {
+    nlohmann::json object = nlohmann::json::parse(text);
+    for (const auto& [key, value] : object.items()) params[key] = value.get<std::string>();
+  } catch (const nlohmann::json::exception& e) {
+    throw StoreError("results store '" + path + "': bad parameter JSON '" + text + "': " + e.what());
+  }
+  return params;
+}
+
+nlohmann::ordered_json NumberToJson(double v) {
+  if (std::isnan(v)) return nullptr;
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  return v;
+}
+
+double NumberFromJson(const nlohmann::ordered_json& j) {
+  if (j.is_null()) return kNaN;
+  if (j.is_string()) {
+    const std::string& s = j.get_ref<const std::string&>();
+    if (s == "inf") return std::numeric_limits<double>::infinity();
+    if (s == "-inf") return -std::numeric_limits<double>::infinity();
+    throw nlohmann::json::other_error::create(501, "bad number '" + s + "'", &j);
+  }
+  return j.get<double>();
+}
+
+std::string CorridorsToJson(const std::vector<Corridor>& corridors) {
+  nlohmann::ordered_json array = nlohmann::ordered_json::array();
+  for (const Corridor& c : corridors) {
+    array.push_back({{"var", c.var},
+                     {"mean_lower", NumberToJson(c.mean_lower)},
+                     {"mean_upper", NumberToJson(c.mean_upper)},
+                     {"min_lower", NumberToJson(c.min_lower)},
+                     {"max_upper", NumberToJson(c.max_upper)}});
+  }
+  return array.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+}
+
+std::vector<Corridor> CorridorsFromJson(const std::string& text, const std::string& path) {
+  std::vector<Corridor> corridors;
+  if (text.empty()) return corridors;
+  try {
+    for (const auto& j : nlohmann::ordered_json::parse(text)) {
+      Corridor c;
+      c.var = j.at("var").get<std::string>();
+      c.mean_lower = NumberFromJson(j.at("mean_lower"));
+      c.mean_upper = NumberFromJson(j.at("mean_upper"));
+      c.min_lower = NumberFromJson(j.at("min_lower"));
+      c.max_upper = NumberFromJson(j.at("max_upper"));
+      corridors.push_back(std::move(c));
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw StoreError("results store '" + path + "': bad corridors JSON: " + e.what());
+  }
+  return corridors;
+}
+
+// Writes one run with its steps, replacing a run with the same key. Runs
+// inside the caller's transaction.
+void WriteRun(sqlite3* db, const std::string& path, const RunRecord& run) {
+  const std::string key = run.spec.Key();
+  {
+    Statement find(db, path, "SELECT id FROM runs WHERE key = ?");
+    find.Text(1, key);
+    if (find.Step()) {
+      const std::int64_t old_id = find.ColumnInt(0);
+      for (const char* sql : {"DELETE FROM step_values WHERE run_id = ?",
+                              "DELETE FROM steps WHERE run_id = ?", "DELETE FROM runs WHERE id = ?"}) {
+        Statement del(db, path, sql);
+        del.Int(1, old_id);
+        del.Run();
+      }
+    }
+  }
+
+  Statement insert(db, path,
+                   std::string("INSERT INTO runs (") + kRunColumns +
+                       ") VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)");
+  const RunMetrics& m = run.metrics;
+  const Provenance& p = run.provenance;
+  int i = 0;
+  insert.Text(++i, key);
+  insert.Text(++i, run.spec_file);
+  insert.Text(++i, run.spec.algorithm);
+  insert.Text(++i, ParamsToJson(run.spec.algorithm_params, path));
+  insert.Text(++i, run.spec.problem);
+  insert.Text(++i, ParamsToJson(run.spec.problem_params, path));
+  insert.Int(++i, static_cast<std::int64_t>(run.spec.seed));
+  insert.Double(++i, run.spec.timeout_s);
+  insert.Text(++i, ToString(run.status));
+  insert.Text(++i, run.reason);
+  insert.Double(++i, run.wall_time_s);
+  insert.Int(++i, m.steps);
+  insert.Double(++i, m.mean_area);
+  insert.Double(++i, m.consistency_rate);
+  insert.Double(++i, m.centre_rmse);
+  insert.Double(++i, m.time_mean_s);
+  insert.Double(++i, m.time_median_s);
+  insert.Double(++i, m.time_p90_s);
+  insert.Double(++i, m.time_mean_ci_lo_s);
+  insert.Double(++i, m.time_mean_ci_hi_s);
+  insert.Text(++i, CorridorsToJson(m.corridors));
+  insert.Text(++i, p.git_revision);
+  insert.Text(++i, p.machine);
+  insert.Text(++i, p.compiler);
+  insert.Text(++i, p.flags);
+  insert.Text(++i, p.date);
+  insert.Run();
+  const std::int64_t run_id = sqlite3_last_insert_rowid(db);
+
+  Statement step_insert(db, path,
+                        "INSERT INTO steps (run_id, step, status, contained, area, centre_error, "
+                        "solve_time_s) VALUES (?,?,?,?,?,?,?)");
+  Statement value_insert(db, path,
+                         "INSERT INTO step_values (run_id, step, var, pos, lo, hi, truth) "
+                         "VALUES (?,?,?,?,?,?,?)");
+  for (const StepRecord& s : run.steps) {
+    step_insert.Int(1, run_id);
+    step_insert.Int(2, s.step);
+    step_insert.Text(3, s.status);
+    if (s.contained == -1) {
+      step_insert.Null(4);
+    } else {
+      step_insert.Int(4, s.contained);
+    }
+    step_insert.Double(5, s.area);
+    step_insert.Double(6, s.centre_error);
+    step_insert.Double(7, s.solve_time_s);
+    step_insert.Run();
+    step_insert.Reset();
+    for (std::size_t pos = 0; pos < s.vars.size(); ++pos) {
+      const VariableRecord& v = s.vars[pos];
+      value_insert.Int(1, run_id);
+      value_insert.Int(2, s.step);
+      value_insert.Text(3, v.name);
+      value_insert.Int(4, static_cast<std::int64_t>(pos));
+      value_insert.Double(5, v.lo);
+      value_insert.Double(6, v.hi);
+      value_insert.Double(7, v.truth);
+      value_insert.Run();
+      value_insert.Reset();
+    }
+  }
+}
+
+// Every run, in insertion order, with one query per table.
+std::vector<RunRecord> ReadRuns(sqlite3* db, const std::string& path, bool with_steps) {
+  std::vector<RunRecord> runs;
+  std::unordered_map<std::int64_t, std::size_t> index_of;  // runs.id -> index in runs
+  {
+    Statement q(db, path, std::string("SELECT id, ") + kRunColumns + " FROM runs ORDER BY id");
+    while (q.Step()) {
+      RunRecord r;
+      RunMetrics& m = r.metrics;
+      Provenance& p = r.provenance;
+      int i = 0;
+      const std::int64_t id = q.ColumnInt(i++);
+      const std::string key = q.ColumnText(i++);
+      r.spec_file = q.ColumnText(i++);
+      r.spec.algorithm = q.ColumnText(i++);
+      r.spec.algorithm_params = ParamsFromJson(q.ColumnText(i++), path);
+      r.spec.problem = q.ColumnText(i++);
+      r.spec.problem_params = ParamsFromJson(q.ColumnText(i++), path);
+      r.spec.seed = static_cast<std::uint64_t>(q.ColumnInt(i++));
+      r.spec.timeout_s = q.ColumnDouble(i++);
+      const std::string status = q.ColumnText(i++);
+      try {
+        r.status = ParseRunStatus(status);
+      } catch (const std::invalid_argument& e) {
+        throw StoreError("results store '" + path + "': run '" + key + "': " + e.what());
+      }
+      r.reason = q.ColumnText(i++);
+      r.wall_time_s = q.ColumnDouble(i++);
+      m.steps = static_cast<int>(q.ColumnInt(i++));
+      m.mean_area = q.ColumnDouble(i++);
+      m.consistency_rate = q.ColumnDouble(i++);
+      m.centre_rmse = q.ColumnDouble(i++);
+      m.time_mean_s = q.ColumnDouble(i++);
+      m.time_median_s = q.ColumnDouble(i++);
+      m.time_p90_s = q.ColumnDouble(i++);
+      m.time_mean_ci_lo_s = q.ColumnDouble(i++);
+      m.time_mean_ci_hi_s = q.ColumnDouble(i++);
+      m.corridors = CorridorsFromJson(q.ColumnText(i++), path);
+      p.git_revision = q.ColumnText(i++);
+      p.machine = q.ColumnText(i++);
+      p.compiler = q.ColumnText(i++);
+      p.flags = q.ColumnText(i++);
+      p.date = q.ColumnText(i++);
+      index_of[id] = runs.size();
+      runs.push_back(std::move(r));
+    }
+  }
+  if (!with_steps || runs.empty()) return runs;
+
+  {
+    Statement q(db, path,
+                "SELECT run_id, step, status, contained, area, centre_error, solve_time_s "
+                "FROM steps ORDER BY run_id, step");
+    RunRecord* run = nullptr;
+    std::int64_t run_id = 0;
+    while (q.Step()) {
+      const std::int64_t id = q.ColumnInt(0);
+      if (run == nullptr || id != run_id) {
+        auto it = index_of.find(id);
+        if (it == index_of.end()) continue;  // no such run: ignored
+        run = &runs[it->second];
+        run_id = id;
+      }
+      StepRecord s;
+      s.step = static_cast<int>(q.ColumnInt(1));
+      s.status = q.ColumnText(2);
+      s.contained = q.IsNull(3) ? -1 : static_cast<int>(q.ColumnInt(3));
+      s.area = q.ColumnDouble(4);
+      s.centre_error = q.ColumnDouble(5);
+      s.solve_time_s = q.ColumnDouble(6);
+      run->steps.push_back(std::move(s));
+    }
+  }
+  {
+    Statement q(db, path,
+                "SELECT run_id, step, var, lo, hi, truth FROM step_values "
+                "ORDER BY run_id, step, pos");
+    std::int64_t last_run = 0;
+    std::int64_t last_step = 0;
+    StepRecord* step = nullptr;
+    while (q.Step()) {
+      const std::int64_t id = q.ColumnInt(0);
+      const std::int64_t number = q.ColumnInt(1);
+      if (step == nullptr || id != last_run || number != last_step) {
+        step = nullptr;
+        last_run = id;
+        last_step = number;
+        auto it = index_of.find(id);
+        if (it != index_of.end()) {
+          std::vector<StepRecord>& steps = runs[it->second].steps;
+          auto s = std::lower_bound(steps.begin(), steps.end(), number,
+                                    [](const StepRecord& a, std::int64_t n) { return a.step < n; });
+          if (s != steps.end() && s->step == number) step = &*s;
+        }
+        if (step == nullptr) continue;  // no such step: ignored
+      }
+      VariableRecord v;
+      v.name = q.ColumnText(2);
+      v.lo = q.ColumnDouble(3);
+      v.hi = q.ColumnDouble(4);
+      v.truth = q.ColumnDouble(5);
+      step->vars.push_back(std::move(v));
+    }
+  }
+  return runs;
+}
+
+}  // namespace
+
+ResultsStore::ResultsStore(const std::string& path) : path_(path) {
+  db_ = Open(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
+  try {
+    // Each run commits on its own; WAL lets reports read while a sweep writes.
+    std::string mode;
+    {
+      Statement wal(db_, path_, "PRAGMA journal_mode=WAL");
+      if (wal.Step()) mode = wal.ColumnText(0);
+    }
+    if (mode != "wal") {
+      throw StoreError("results store '" + path_ + "': cannot use WAL journal mode (got '" + mode +
+                       "')");
+    }
+    Exec(db_, path_, "PRAGMA foreign_keys=ON");
+    CheckOrCreateSchema(db_, path_, /*may_create=*/true);
+  } catch (...) {
+    sqlite3_close_v2(db_);
+    db_ = nullptr;
+    throw;
+  }
+}
+
+ResultsStore::~ResultsStore() { sqlite3_close_v2(db_); }
+
+std::vector<std::string> ResultsStore::RunKeys() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<std::string> keys;
+  Statement q(db_, path_, "SELECT key FROM runs ORDER BY id");
+  while (q.Step()) keys.push_back(q.ColumnText(0));
+  return keys;
+}
+
+bool ResultsStore::HasRun(const std::string& key) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  Statement q(db_, path_, "SELECT 1 FROM runs WHERE key = ?");
+  q.Text(1, key);
+  return q.Step();
+}
+
+void ResultsStore::Insert(const RunRecord& run) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  InTransaction(db_, path_, [&] { WriteRun(db_, path_, run); });
+}
+
+std::vector<RunRecord> ResultsStore::LoadRuns(bool with_steps) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<RunRecord> runs;
+  // One read transaction, so the three queries see the same snapshot.
+  Exec(db_, path_, "BEGIN");
+  try {
+    runs = ReadRuns(db_, path_, with_steps);
+    Exec(db_, path_, "COMMIT");
+  } catch (...) {
+    sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+    throw;
+  }
+  return runs;
+}
+
+int ResultsStore::MergeFrom(const std::string& other_path) {
+  std::vector<RunRecord> others;
+  {
+    sqlite3* other = Open(other_path, SQLITE_OPEN_READONLY);
+    try {
+      CheckOrCreateSchema(other, other_path, /*may_create=*/false);
+      Exec(other, other_path, "BEGIN");
+      others = ReadRuns(other, other_path, /*with_steps=*/true);
+      Exec(other, other_path, "COMMIT");
+    } catch (...) {
+      sqlite3_close_v2(other);
+      throw;
+    }
+    sqlite3_close_v2(other);
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  int copied = 0;
+  InTransaction(db_, path_, [&] {
+    Statement has(db_, path_, "SELECT 1 FROM runs WHERE key = ?");
+    for (const RunRecord& run : others) {
+      has.Text(1, run.spec.Key());
+      const bool present = has.Step();
+      has.Reset();
+      if (present) continue;
+      WriteRun(db_, path_, run);
+      ++copied;
+    }
+  });
+  return copied;
+}
+
+std::string StorePath(const std::string& out_dir) { return out_dir + "/results.sqlite"; }
+
+}  // namespace icp

@@ -1,0 +1,497 @@
+#include "harness/results_store.h"
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sqlite3.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "harness/metrics.h"
+
+namespace icp {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// A fresh store path per test, with no file or WAL left from an earlier run.
+std::string FreshPath(const std::string& name) {
+  std::string path = ::testing::TempDir() + "/icpbench_store_" + name + ".sqlite";
+  for (const char* suffix : {"", "-wal", "-shm", "-journal"}) std::remove((path + suffix).c_str());
+  return path;
+}
+
+// A run with every field set, NaN and infinities included; the same i gives
+// the same run.
+RunRecord MakeRun(int i, int num_steps, const std::string& algorithm = "hc4",
+                  bool with_metrics = true) {
+  RunRecord r;
+  r.spec.algorithm = algorithm;
+  r.spec.algorithm_params = {{"ratio", "0.01"}, {"odd", "a,b=c|{d}\\"}};
+  r.spec.problem = "car-track";
+  r.spec.problem_params = {{"w", "20"}, {"steps", std::to_string(num_steps)}};
+  r.spec.seed = static_cast<std::uint64_t>(i);
+  r.spec.timeout_s = 2.5;
+  r.spec_file = "specs/table1.yaml";
+  r.status = i % 4 == 3 ? RunStatus::kTimeout : RunStatus::kOk;
+  r.reason = i % 4 == 3 ? "stopped after 2.5 s" : "";
+  r.wall_time_s = 0.125 * i + 1.0 / 3;
+  for (int k = 0; k < num_steps; ++k) {
+    StepRecord s;
+    s.step = k;
+    const bool empty = k % 7 == 3;
+    const bool unknown = k % 5 == 4;
+    s.status = empty ? "empty" : "contracted";
+    const double t = unknown ? kNaN : 0.1 * k;
+    for (const char* name : {"x", "y", "theta"}) {
+      VariableRecord v;
+      v.name = name;
+      v.lo = empty ? kInf : 0.1 * k - 1.0 / 7;
+      v.hi = empty ? -kInf : 0.1 * k + 2.0 / 3;
+      v.truth = t;
+      s.vars.push_back(v);
+    }
+    if (k % 11 == 10 && !empty) s.vars[2].hi = kInf;  // unbounded heading
+    s.contained = unknown ? -1 : empty ? 0 : 1;
+    s.area = empty ? kNaN : 1.0 / (k + 3);
+    s.centre_error = unknown || empty ? kNaN : 0.01 * k;
+    s.solve_time_s = 1e-4 * (k % 13) + 1e-6 * i;
+    r.steps.push_back(s);
+  }
+  if (with_metrics) r.metrics = ComputeMetrics(r.steps, 3);
+  r.metrics.corridors.push_back({"inf-test", kNaN, kInf, -kInf, 1.5});
+  r.provenance = {"0123abc-dirty", "host1 / AMD EPYC", "GNU 12.2.0", "Release -O3", "2024-05-01T12:00:00Z"};
+  return r;
+}
+
+// Doubles as the store must give them back: NaN for NaN, the same value
+// (infinities included) otherwise.
+::testing::AssertionResult Same(const char* what, double a, double b) {
+  if ((std::isnan(a) && std::isnan(b)) || a == b) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << what << ": " << a << " != " << b;
+}
+
+void ExpectSameRun(const RunRecord& a, const RunRecord& b, bool with_steps) {
+  SCOPED_TRACE(a.spec.Key());
+  EXPECT_EQ(a.spec.Key(), b.spec.Key());
+  EXPECT_EQ(a.spec.algorithm, b.spec.algorithm);
+  EXPECT_EQ(a.spec.algorithm_params, b.spec.algorithm_params);
+  EXPECT_EQ(a.spec.problem, b.spec.problem);
+  EXPECT_EQ(a.spec.problem_params, b.spec.problem_params);
+  EXPECT_EQ(a.spec.seed, b.spec.seed);
+  EXPECT_TRUE(Same("timeout_s", a.spec.timeout_s, b.spec.timeout_s));
+  EXPECT_EQ(a.spec_file, b.spec_file);
+  EXPECT_EQ(a.status, b.status);
+  EXPECT_EQ(a.reason, b.reason);
+  EXPECT_TRUE(Same("wall_time_s", a.wall_time_s, b.wall_time_s));
+  const RunMetrics& m = a.metrics;
+  const RunMetrics& n = b.metrics;
+  EXPECT_EQ(m.steps, n.steps);
+  EXPECT_TRUE(Same("mean_area", m.mean_area, n.mean_area));
+  EXPECT_TRUE(Same("consistency_rate", m.consistency_rate, n.consistency_rate));
+  EXPECT_TRUE(Same("centre_rmse", m.centre_rmse, n.centre_rmse));
+  EXPECT_TRUE(Same("time_mean_s", m.time_mean_s, n.time_mean_s));
+  EXPECT_TRUE(Same("time_median_s", m.time_median_s, n.time_median_s));
+  EXPECT_TRUE(Same("time_p90_s", m.time_p90_s, n.time_p90_s));
+  EXPECT_TRUE(Same("time_mean_ci_lo_s", m.time_mean_ci_lo_s, n.time_mean_ci_lo_s));
+  EXPECT_TRUE(Same("time_mean_ci_hi_s", m.time_mean_ci_hi_s, n.time_mean_ci_hi_s));
+  EXPECT_EQ(m.corridors.size(), n.corridors.size());
+  for (std::size_t i = 0; i < std::min(m.corridors.size(), n.corridors.size()); ++i) {
+    EXPECT_EQ(m.corridors[i].var, n.corridors[i].var);
+    EXPECT_TRUE(Same("mean_lower", m.corridors[i].mean_lower, n.corridors[i].mean_lower));
+    EXPECT_TRUE(Same("mean_upper", m.corridors[i].mean_upper, n.corridors[i].mean_upper));
+    EXPECT_TRUE(Same("min_lower", m.corridors[i].min_lower, n.corridors[i].min_lower));
+    EXPECT_TRUE(Same("max_upper", m.corridors[i].max_upper, n.corridors[i].max_upper));
+  }
+  EXPECT_EQ(a.provenance.git_revision, b.provenance.git_revision);
+  EXPECT_EQ(a.provenance.machine, b.provenance.machine);
+  EXPECT_EQ(a.provenance.compiler, b.provenance.compiler);
+  EXPECT_EQ(a.provenance.flags, b.provenance.flags);
+  EXPECT_EQ(a.provenance.date, b.provenance.date);
+  if (!with_steps) {
+    EXPECT_TRUE(b.steps.empty());
+    return;
+  }
+  ASSERT_EQ(a.steps.size(), b.steps.size());
+  for (std::size_t k = 0; k < a.steps.size(); ++k) {
+    const StepRecord& s = a.steps[k];
+    const StepRecord& t = b.steps[k];
+    SCOPED_TRACE("step " + std::to_string(s.step));
+    EXPECT_EQ(s.step, t.step);
+    EXPECT_EQ(s.status, t.status);
+    EXPECT_EQ(s.contained, t.contained);
+    EXPECT_TRUE(Same("area", s.area, t.area));
+    EXPECT_TRUE(Same("centre_error", s.centre_error, t.centre_error));
+    EXPECT_TRUE(Same("solve_time_s", s.solve_time_s, t.solve_time_s));
+    ASSERT_EQ(s.vars.size(), t.vars.size());
+    for (std::size_t v = 0; v < s.vars.size(); ++v) {
+      EXPECT_EQ(s.vars[v].name, t.vars[v].name);
+      EXPECT_TRUE(Same("lo", s.vars[v].lo, t.vars[v].lo));
+      EXPECT_TRUE(Same("hi", s.vars[v].hi, t.vars[v].hi));
+      EXPECT_TRUE(Same("truth", s.vars[v].truth, t.vars[v].truth));
+    }
+  }
+}
+
+// One value of a query on the raw file, as text ("<null>" for NULL).
+std::string RawQuery(const std::string& path, const std::string& sql) {
+  sqlite3* db = nullptr;
+  EXPECT_EQ(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr), SQLITE_OK);
+  sqlite3_stmt* stmt = nullptr;
+  std::string out = "<error>";
+  if (sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt, nullptr) == SQLITE_OK &&
+      sqlite3_step(stmt) == SQLITE_ROW) {
+    const unsigned char* text = sqlite3_column_text(stmt, 0);
+    out = text == nullptr ? "<null>" : reinterpret_cast<const char*>(text);
+  } else {
+    ADD_FAILURE() << sql << ": " << sqlite3_errmsg(db);
+  }
+  sqlite3_finalize(stmt);
+  sqlite3_close(db);
+  return out;
+}
+
+TEST(RunSpecTest, KeyIsCanonical) {
+  RunSpec spec;
+  spec.algorithm = "hc4";
+  spec.algorithm_params = {{"ratio", "0.01"}};
+  spec.problem = "car-track";
+  spec.problem_params = {{"w", "20"}, {"steps", "100"}};
+  spec.seed = 3;
+  spec.timeout_s = 10;
+  EXPECT_EQ(spec.Key(), "hc4{ratio=0.01}|car-track{steps=100,w=20}|seed=3");
+  RunSpec no_timeout = spec;
+  no_timeout.timeout_s = 0;
+  EXPECT_EQ(no_timeout.Key(), spec.Key());
+  RunSpec bare;
+  bare.algorithm = "3b";
+  bare.problem = "chain";
+  bare.seed = 18446744073709551615u;
+  EXPECT_EQ(bare.Key(), "3b{}|chain{}|seed=18446744073709551615");
+}
+
+TEST(RunSpecTest, SpecialCharactersCannotMakeKeysCollide) {
+  auto key = [](std::string algorithm, ParamMap params) {
+    RunSpec spec;
+    spec.algorithm = std::move(algorithm);
+    spec.algorithm_params = std::move(params);
+    spec.problem = "p";
+    return spec.Key();
+  };
+  EXPECT_NE(key("a", {{"x", "1,y=2"}}), key("a", {{"x", "1"}, {"y", "2"}}));
+  EXPECT_NE(key("a", {{"x=1", "2"}}), key("a", {{"x", "1=2"}}));
+  EXPECT_NE(key("a{x=1}", {}), key("a", {{"x", "1"}}));
+  EXPECT_NE(key("a", {{"x", "1}|p{"}}), key("a", {{"x", "1"}}));
+  EXPECT_NE(key("a", {{"x", "\\,"}}), key("a", {{"x", "\\"}, {"", ""}}));
+  EXPECT_EQ(key("a", {{"x", "1,2"}}), "a{x=1\\,2}|p{}|seed=0");
+}
+
+TEST(RunStatusTest, TextRoundTrip) {
+  for (RunStatus s : {RunStatus::kOk, RunStatus::kFailed, RunStatus::kTimeout, RunStatus::kSkipped}) {
+    EXPECT_EQ(ParseRunStatus(ToString(s)), s);
+  }
+  EXPECT_EQ(ToString(RunStatus::kOk), "ok");
+  EXPECT_EQ(ToString(RunStatus::kFailed), "failed");
+  EXPECT_EQ(ToString(RunStatus::kTimeout), "timeout");
+  EXPECT_EQ(ToString(RunStatus::kSkipped), "skipped");
+  EXPECT_THROW(ParseRunStatus("OK"), std::invalid_argument);
+  EXPECT_THROW(ParseRunStatus(""), std::invalid_argument);
+}
+
+TEST(ResultsStoreTest, StorePath) { EXPECT_EQ(StorePath("out/table1"), "out/table1/results.sqlite"); }
+
+TEST(ResultsStoreTest, RoundTripThroughTheFile) {
+  const std::string path = FreshPath("round_trip");
+  std::vector<RunRecord> runs = {MakeRun(0, 40), MakeRun(3, 25), MakeRun(1, 0)};
+  runs[1].spec.seed = 18446744073709551557u;  // above 2^63
+  runs[2].metrics = ComputeMetrics({});       // all NaN
+  runs[2].status = RunStatus::kFailed;
+  runs[2].reason = "hc4.ratio = -1: must be in [0, 1)";
+  runs[2].spec.timeout_s = kInf;
+  {
+    ResultsStore store(path);
+    for (const RunRecord& r : runs) store.Insert(r);
+  }
+  ResultsStore store(path);
+  EXPECT_EQ(store.path(), path);
+  std::vector<RunRecord> loaded = store.LoadRuns(/*with_steps=*/true);
+  ASSERT_EQ(loaded.size(), runs.size());
+  for (std::size_t i = 0; i < runs.size(); ++i) ExpectSameRun(runs[i], loaded[i], true);
+  std::vector<RunRecord> heads = store.LoadRuns(/*with_steps=*/false);
+  ASSERT_EQ(heads.size(), runs.size());
+  for (std::size_t i = 0; i < runs.size(); ++i) ExpectSameRun(runs[i], heads[i], false);
+}
+
+TEST(ResultsStoreTest, FileIsSelfDescribingWithTypedColumns) {
+  const std::string path = FreshPath("typed");
+  {
+    ResultsStore store(path);
+    store.Insert(MakeRun(2, 10));
+  }
+  EXPECT_EQ(RawQuery(path, "SELECT value FROM meta WHERE key='schema_version'"), "1");
+  EXPECT_EQ(RawQuery(path, "PRAGMA journal_mode"), "wal");
+  EXPECT_EQ(RawQuery(path, "SELECT typeof(seed) || typeof(timeout_s) || typeof(wall_time_s) FROM runs"),
+            "integerrealreal");
+  EXPECT_EQ(RawQuery(path, "SELECT json_extract(algorithm_params, '$.ratio') FROM runs"), "0.01");
+  EXPECT_EQ(RawQuery(path, "SELECT json_extract(corridors, '$[0].var') FROM runs"), "x");
+  // Step 3 has an empty box: lo = +inf, hi = -inf as REAL; step 4 an unknown truth: NULLs.
+  EXPECT_EQ(RawQuery(path, "SELECT lo > 1e308 AND hi < -1e308 AND typeof(lo) = 'real' "
+                           "FROM step_values WHERE step = 3 AND var = 'x'"),
+            "1");
+  EXPECT_EQ(RawQuery(path, "SELECT typeof(truth) FROM step_values WHERE step = 4 AND var = 'y'"),
+            "null");
+  EXPECT_EQ(RawQuery(path, "SELECT typeof(contained) FROM steps WHERE step = 4"), "null");
+  EXPECT_EQ(RawQuery(path, "SELECT count(*) FROM step_values"), "30");
+}
+
+TEST(ResultsStoreTest, SameKeyReplacesTheRun) {
+  const std::string path = FreshPath("replace");
+  ResultsStore store(path);
+  RunRecord first = MakeRun(1, 30);
+  store.Insert(first);
+  store.Insert(MakeRun(2, 5));
+  RunRecord second = MakeRun(1, 30);
+  second.steps.resize(4);
+  second.metrics = ComputeMetrics(second.steps);
+  second.status = RunStatus::kFailed;
+  second.reason = "rerun with --force";
+  second.provenance.git_revision = "fedcba9";
+  ASSERT_EQ(first.spec.Key(), second.spec.Key());
+  store.Insert(second);
+
+  std::vector<RunRecord> loaded = store.LoadRuns(true);
+  ASSERT_EQ(loaded.size(), 2u);
+  ExpectSameRun(MakeRun(2, 5), loaded[0], true);
+  ExpectSameRun(second, loaded[1], true);  // a replaced run counts as inserted last
+  EXPECT_EQ(RawQuery(path, "SELECT count(*) FROM steps"), "9");
+  EXPECT_EQ(RawQuery(path, "SELECT count(*) FROM step_values"), "27");
+}
+
+TEST(ResultsStoreTest, RunKeysAndHasRun) {
+  const std::string path = FreshPath("keys");
+  ResultsStore store(path);
+  EXPECT_TRUE(store.RunKeys().empty());
+  const RunRecord a = MakeRun(5, 3);
+  const RunRecord b = MakeRun(2, 3, "bc4");
+  EXPECT_FALSE(store.HasRun(a.spec.Key()));
+  store.Insert(a);
+  store.Insert(b);
+  EXPECT_TRUE(store.HasRun(a.spec.Key()));
+  EXPECT_TRUE(store.HasRun(b.spec.Key()));
+  EXPECT_FALSE(store.HasRun(MakeRun(6, 3).spec.Key()));
+  EXPECT_EQ(store.RunKeys(), (std::vector<std::string>{a.spec.Key(), b.spec.Key()}));
+  // Another connection sees the committed runs.
+  ResultsStore reader(path);
+  EXPECT_TRUE(reader.HasRun(b.spec.Key()));
+}
+
+TEST(ResultsStoreTest, FailedInsertLeavesNothingBehind) {
+  const std::string path = FreshPath("rollback");
+  ResultsStore store(path);
+  const RunRecord good = MakeRun(1, 10);
+  store.Insert(good);
+  RunRecord bad = MakeRun(1, 10);  // same key: would replace good
+  bad.steps[7].step = 2;           // duplicate step number fails mid-insert
+  EXPECT_THROW(store.Insert(bad), StoreError);
+  std::vector<RunRecord> loaded = store.LoadRuns(true);
+  ASSERT_EQ(loaded.size(), 1u);
+  ExpectSameRun(good, loaded[0], true);
+  store.Insert(MakeRun(2, 10));  // still usable after the rollback
+  EXPECT_EQ(store.RunKeys().size(), 2u);
+}
+
+TEST(ResultsStoreTest, MergeFromCopiesOnlyAbsentRuns) {
+  const std::string path_a = FreshPath("merge_a");
+  const std::string path_b = FreshPath("merge_b");
+  {
+    ResultsStore b(path_b);
+    for (int i : {2, 3, 4}) b.Insert(MakeRun(i, 6, "bc4"));
+    RunRecord overlap = MakeRun(1, 6);
+    overlap.reason = "from b";
+    b.Insert(overlap);
+  }
+  ResultsStore a(path_a);
+  for (int i : {0, 1}) a.Insert(MakeRun(i, 6));
+  EXPECT_EQ(a.MergeFrom(path_b), 3);
+  EXPECT_EQ(a.MergeFrom(path_b), 0);  // idempotent
+
+  std::vector<RunRecord> loaded = a.LoadRuns(true);
+  ASSERT_EQ(loaded.size(), 5u);
+  ExpectSameRun(MakeRun(0, 6), loaded[0], true);
+  ExpectSameRun(MakeRun(1, 6), loaded[1], true);  // a's copy kept
+  for (int i : {2, 3, 4}) ExpectSameRun(MakeRun(i, 6, "bc4"), loaded[i], true);
+  ResultsStore b(path_b);
+  EXPECT_EQ(b.RunKeys().size(), 4u);  // the source is left as it was
+}
+
+TEST(ResultsStoreTest, MergeFromMissingStoreFailsAndCreatesNothing) {
+  const std::string path = FreshPath("merge_missing");
+  const std::string missing = FreshPath("does_not_exist");
+  ResultsStore store(path);
+  try {
+    store.MergeFrom(missing);
+    FAIL() << "expected StoreError";
+  } catch (const StoreError& e) {
+    EXPECT_NE(std::string(e.what()).find(missing), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(missing));
+}
+
+TEST(ResultsStoreTest, BadPathsSayWhatAndWhere) {
+  const std::string dir_missing = ::testing::TempDir() + "/icpbench_no_such_dir/sub/results.sqlite";
+  try {
+    ResultsStore store(dir_missing);
+    FAIL() << "expected StoreError";
+  } catch (const StoreError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(dir_missing), std::string::npos) << what;
+    EXPECT_NE(what.find("unable to open database file"), std::string::npos) << what;
+    EXPECT_NE(what.find("does not exist"), std::string::npos) << what;
+  }
+
+  const std::string not_db = FreshPath("not_a_database");
+  {
+    std::ofstream out(not_db);
+    for (int i = 0; i < 100; ++i) out << "this is a text file, not a database\n";
+  }
+  try {
+    ResultsStore store(not_db);
+    FAIL() << "expected StoreError";
+  } catch (const StoreError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(not_db), std::string::npos) << what;
+    EXPECT_NE(what.find("file is not a database"), std::string::npos) << what;
+  }
+
+  const std::string foreign = FreshPath("foreign");
+  {
+    sqlite3* db = nullptr;
+    ASSERT_EQ(sqlite3_open(foreign.c_str(), &db), SQLITE_OK);
+    ASSERT_EQ(sqlite3_exec(db, "CREATE TABLE t(a)", nullptr, nullptr, nullptr), SQLITE_OK);
+    sqlite3_close(db);
+  }
+  try {
+    ResultsStore store(foreign);
+    FAIL() << "expected StoreError";
+  } catch (const StoreError& e) {
+    EXPECT_NE(std::string(e.what()).find("not an icpbench results store"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(ResultsStoreTest, RejectsAnotherSchemaVersion) {
+  const std::string path = FreshPath("version");
+  { ResultsStore store(path); }
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(db, "UPDATE meta SET value='99' WHERE key='schema_version'", nullptr,
+                         nullptr, nullptr),
+            SQLITE_OK);
+  sqlite3_close(db);
+  try {
+    ResultsStore store(path);
+    FAIL() << "expected StoreError";
+  } catch (const StoreError& e) {
+    EXPECT_NE(std::string(e.what()).find("schema version '99'"), std::string::npos) << e.what();
+  }
+}
+
+// A sweep killed while writing loses only the run in flight: the child
+// commits a few runs, signalling each, then starts a run far too large
+// (800000 rows) to finish before the parent kills it with SIGKILL; had it
+// finished, the store would hold one run too many.
+TEST(ResultsStoreCrashTest, KilledWriterLeavesOnlyCompleteRuns) {
+  const std::string path = FreshPath("crash");
+  constexpr int kCommitted = 5;
+  int fds[2];
+  ASSERT_EQ(pipe(fds), 0);
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    close(fds[0]);
+    try {
+      ResultsStore store(path);
+      for (int i = 0;; ++i) {
+        const bool big = i >= kCommitted;
+        RunRecord run = MakeRun(i, big ? 200000 : 2000, "hc4", /*with_metrics=*/!big);
+        const char mark = big ? 'b' : 'r';
+        if (big && write(fds[1], &mark, 1) != 1) _exit(3);
+        store.Insert(run);
+        if (!big && write(fds[1], &mark, 1) != 1) _exit(3);
+      }
+    } catch (...) {
+      _exit(2);
+    }
+    _exit(0);
+  }
+  close(fds[1]);
+  int committed = 0;
+  bool big_started = false;
+  char mark;
+  while (!big_started && read(fds[0], &mark, 1) == 1) {
+    if (mark == 'r') ++committed;
+    if (mark == 'b') big_started = true;
+  }
+  close(fds[0]);
+  // Let the big insert write for a while (pages spill to the WAL), then kill.
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  kill(pid, SIGKILL);
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "child exited with " << WEXITSTATUS(status);
+  ASSERT_EQ(WTERMSIG(status), SIGKILL);
+  ASSERT_TRUE(big_started);
+  ASSERT_EQ(committed, kCommitted);
+
+  ResultsStore store(path);
+  std::vector<RunRecord> loaded = store.LoadRuns(true);
+  ASSERT_EQ(loaded.size(), static_cast<std::size_t>(kCommitted));
+  for (int i = 0; i < kCommitted; ++i) {
+    EXPECT_EQ(loaded[i].steps.size(), 2000u);
+    ExpectSameRun(MakeRun(i, 2000), loaded[i], true);
+  }
+  EXPECT_EQ(RawQuery(path, "PRAGMA integrity_check"), "ok");
+  store.Insert(MakeRun(kCommitted, 10));  // and the sweep can go on
+  EXPECT_EQ(store.RunKeys().size(), static_cast<std::size_t>(kCommitted + 1));
+}
+
+// 20 runs x 2000 steps x 3 variables: loading reads each table once. The
+// time is reported, not asserted (STYLE.md: no wall-clock thresholds).
+TEST(ResultsStoreTest, LoadsALargeStore) {
+  const std::string path = FreshPath("large");
+  {
+    ResultsStore store(path);
+    for (int i = 0; i < 20; ++i) store.Insert(MakeRun(i, 2000));
+  }
+  ResultsStore store(path);
+  const auto start = std::chrono::steady_clock::now();
+  const std::clock_t cpu_start = std::clock();
+  std::vector<RunRecord> loaded = store.LoadRuns(true);
+  const double cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  RecordProperty("load_seconds", std::to_string(seconds));
+  std::printf("loaded 20 x 2000 x 3 in %.3f s (%.3f s CPU)\n", seconds, cpu_seconds);
+  ASSERT_EQ(loaded.size(), 20u);
+  for (int i = 0; i < 20; ++i) {
+    ASSERT_EQ(loaded[i].steps.size(), 2000u);
+    EXPECT_EQ(loaded[i].steps[1999].vars.size(), 3u);
+    EXPECT_EQ(loaded[i].steps[1999].vars[2].name, "theta");
+  }
+  ExpectSameRun(MakeRun(19, 2000), loaded[19], true);
+}
+
+}  // namespace
+}  // namespace icp

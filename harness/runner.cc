@@ -1,0 +1,401 @@
+#include "harness/runner.h"
+
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <deque>
+#include <filesystem>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <set>
+
+#include "algorithms/registry.h"
+#include "harness/metrics.h"
+#include "harness/provenance.h"
+#include "harness/results_store.h"
+#include "problems/registry.h"
+
+namespace icp {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+double Seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+// --- One run -------------------------------------------------------------
+
+// Checks that a contracted box is a box of the CSP inside its initial box.
+std::string InvalidBoxReason(const Box& initial, const Box& result) {
+  if (result.size() != initial.size())
+    return "the box has " + std::to_string(result.size()) + " components, the CSP " +
+           std::to_string(initial.size());
+  if (result.IsEmpty()) return "";
+  for (std::size_t i = 0; i < result.size(); ++i) {
+    if (std::isnan(result[i].lo()) || std::isnan(result[i].hi()))
+      return "component " + std::to_string(i) + " has a NaN bound";
+    if (!result[i].IsSubsetOf(initial[i]))
+      return "component " + std::to_string(i) + " grew beyond its initial domain";
+  }
+  return "";
+}
+
+StepRecord RecordStep(const Step& step, const Box& box, const ContractSummary& summary,
+                      double solve_time_s) {
+  StepRecord r;
+  r.step = step.index;
+  r.status = std::string(ToString(summary.status));
+  r.solve_time_s = solve_time_s;
+  std::vector<ReportedVariable> reported = step.reported;
+  if (reported.empty())
+    for (int i = 0; i < step.csp.num_variables(); ++i) reported.push_back({step.csp.names()[i], i});
+  const bool known = !step.truth.empty();
+  const bool empty = box.IsEmpty();
+  bool contained = true;
+  for (const ReportedVariable& v : reported) {
+    VariableRecord vr;
+    vr.name = v.name;
+    vr.lo = empty ? kInf : box[v.index].lo();
+    vr.hi = empty ? -kInf : box[v.index].hi();
+    vr.truth = known ? step.truth[v.index] : kNaN;
+    if (known && !(vr.lo <= vr.truth && vr.truth <= vr.hi)) contained = false;
+    r.vars.push_back(vr);
+  }
+  r.contained = known ? (contained ? 1 : 0) : -1;
+  r.area = kNaN;
+  r.centre_error = kNaN;
+  if (step.x >= 0 && step.y >= 0 && !empty) {
+    const VariableRecord& x = r.vars[step.x];
+    const VariableRecord& y = r.vars[step.y];
+    r.area = ExactRounding().mul_up(x.hi - x.lo, y.hi - y.lo);
+    if (known) r.centre_error = std::hypot((x.lo + x.hi) / 2 - x.truth, (y.lo + y.hi) / 2 - y.truth);
+  }
+  return r;
+}
+
+}  // namespace
+
+RunRecord ExecuteRun(const RunSpec& spec) {
+  RunRecord record;
+  record.spec = spec;
+  const auto start = Clock::now();
+  try {
+    const AlgorithmInfo& algorithm = FindAlgorithm(spec.algorithm);
+    std::unique_ptr<Problem> problem = FindProblem(spec.problem).make(spec.problem_params, spec.seed);
+    StopCondition stop = spec.timeout_s > 0
+                             ? StopCondition::After(std::chrono::duration<double>(spec.timeout_s))
+                             : StopCondition();
+    Step step;
+    Box previous;
+    bool has_previous = false;
+    while (problem->Next(has_previous ? &previous : nullptr, &step)) {
+      std::unique_ptr<Contractor> contractor = algorithm.make(spec.algorithm_params, step.csp);
+      Box box = step.csp.domains();
+      const auto t0 = Clock::now();
+      ContractSummary summary = contractor->Contract(box, stop);
+      const double solve_time = Seconds(Clock::now() - t0);
+      if (std::string why = InvalidBoxReason(step.csp.domains(), box); !why.empty()) {
+        record.status = RunStatus::kFailed;
+        record.reason = "invalid result at step " + std::to_string(step.index) + ": " + why;
+        break;
+      }
+      record.steps.push_back(RecordStep(step, box, summary, solve_time));
+      if (summary.status == ContractStatus::kStopped && stop.ShouldStop()) {
+        record.status = RunStatus::kTimeout;
+        record.reason = "time limit of " + FormatDouble(spec.timeout_s) + " s reached at step " +
+                        std::to_string(step.index);
+        break;
+      }
+      previous = box;
+      has_previous = true;
+    }
+  } catch (const std::exception& e) {
+    record.status = RunStatus::kFailed;
+    record.reason = std::string("exception: ") + e.what();
+  } catch (...) {
+    record.status = RunStatus::kFailed;
+    record.reason = "exception of unknown type";
+  }
+  record.wall_time_s = Seconds(Clock::now() - start);
+  record.metrics = ComputeMetrics(record.steps, spec.seed);
+  return record;
+}
+
+std::pair<int, int> ParseShard(const std::string& text) {
+  const auto slash = text.find('/');
+  try {
+    if (slash != std::string::npos) {
+      std::size_t a = 0, b = 0;
+      const int i = std::stoi(text.substr(0, slash), &a);
+      const int n = std::stoi(text.substr(slash + 1), &b);
+      if (a == slash && b == text.size() - slash - 1 && n >= 1 && i >= 0 && i < n) return {i, n};
+    }
+  } catch (const std::exception&) {
+  }
+  throw std::invalid_argument("--shard " + text + ": expected i/n with 0 <= i < n");
+}
+
+namespace {
+
+// --- Child-to-parent transport (JSON; NaN and infinities as strings) -----
+
+nlohmann::json D(double v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  return v;
+}
+double D(const nlohmann::json& j) {
+  if (j.is_number()) return j.get<double>();
+  const std::string s = j.get<std::string>();
+  if (s == "inf") return kInf;
+  if (s == "-inf") return -kInf;
+  return kNaN;
+}
+
+std::string Serialize(const RunRecord& r) {
+  nlohmann::json steps = nlohmann::json::array();
+  for (const StepRecord& s : r.steps) {
+    nlohmann::json vars = nlohmann::json::array();
+    for (const VariableRecord& v : s.vars) vars.push_back({v.name, D(v.lo), D(v.hi), D(v.truth)});
+    steps.push_back({s.step, s.status, vars, s.contained, D(s.area), D(s.centre_error),
+                     D(s.solve_time_s)});
+  }
+  nlohmann::json out = {{"status", ToString(r.status)}, {"reason", r.reason},
+                        {"wall_time_s", D(r.wall_time_s)}, {"steps", steps}};
+  return out.dump();
+}
+
+RunRecord Deserialize(const std::string& text, const RunSpec& spec) {
+  const nlohmann::json j = nlohmann::json::parse(text);
+  RunRecord r;
+  r.spec = spec;
+  r.status = ParseRunStatus(j.at("status").get<std::string>());
+  r.reason = j.at("reason").get<std::string>();
+  r.wall_time_s = D(j.at("wall_time_s"));
+  for (const auto& s : j.at("steps")) {
+    StepRecord sr;
+    sr.step = s.at(0).get<int>();
+    sr.status = s.at(1).get<std::string>();
+    for (const auto& v : s.at(2)) sr.vars.push_back({v.at(0).get<std::string>(), D(v.at(1)), D(v.at(2)), D(v.at(3))});
+    sr.contained = s.at(3).get<int>();
+    sr.area = D(s.at(4));
+    sr.centre_error = D(s.at(5));
+    sr.solve_time_s = D(s.at(6));
+    r.steps.push_back(std::move(sr));
+  }
+  r.metrics = ComputeMetrics(r.steps, spec.seed);
+  return r;
+}
+
+bool WriteAll(int fd, const std::string& data) {
+  std::size_t done = 0;
+  while (done < data.size()) {
+    ssize_t n = write(fd, data.data() + done, data.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+// --- The parent's bookkeeping ---------------------------------------------
+
+struct Worker {
+  pid_t pid = -1;
+  int fd = -1;
+  std::string output;
+  Clock::time_point started;
+  double kill_after_s = 0;  // 0: never
+  bool killed = false;
+  PlannedRun run;
+};
+
+class Progress {
+ public:
+  Progress(std::ostream& out, bool terminal, int total)
+      : out_(out), terminal_(terminal), total_(total), start_(Clock::now()) {}
+
+  void Done(const RunRecord& r, const SweepSummary& s) {
+    ++done_;
+    if (terminal_) {
+      const int width = 30;
+      const int filled = total_ ? width * done_ / total_ : width;
+      out_ << "\r[" << std::string(filled, '#') << std::string(width - filled, '.') << "] " << done_
+           << "/" << total_ << " runs  ok " << s.ok << "  failed " << s.failed + s.timed_out
+           << "  ETA " << Eta() << "   " << std::flush;
+      if (r.status != RunStatus::kOk && r.status != RunStatus::kSkipped)
+        out_ << "\n  " << ToString(r.status) << ": " << r.spec.Key() << ": " << r.reason << "\n";
+    } else {
+      out_ << "[" << done_ << "/" << total_ << "] " << ToString(r.status) << " " << r.spec.Key()
+           << " (" << FormatSeconds(r.wall_time_s) << ")"
+           << (r.reason.empty() ? "" : ": " + r.reason) << "\n" << std::flush;
+    }
+  }
+  void Finish() {
+    if (terminal_ && done_ > 0) out_ << "\n";
+  }
+
+ private:
+  static std::string FormatSeconds(double s) {
+    char buf[32];
+    if (s < 60) {
+      std::snprintf(buf, sizeof buf, "%.1fs", s);
+    } else if (s < 3600) {
+      std::snprintf(buf, sizeof buf, "%dm%02ds", static_cast<int>(s) / 60, static_cast<int>(s) % 60);
+    } else {
+      std::snprintf(buf, sizeof buf, "%dh%02dm", static_cast<int>(s) / 3600,
+                    static_cast<int>(s) % 3600 / 60);
+    }
+    return buf;
+  }
+  std::string Eta() const {
+    if (done_ == 0) return "?";
+    const double elapsed = Seconds(Clock::now() - start_);
+    return FormatSeconds(elapsed / done_ * (total_ - done_));
+  }
+  std::ostream& out_;
+  bool terminal_;
+  int total_;
+  int done_ = 0;
+  Clock::time_point start_;
+};
+
+RunRecord Finalize(Worker& w, int wait_status) {
+  RunRecord r;
+  r.spec = w.run.spec;
+  if (w.killed) {
+    r.status = RunStatus::kTimeout;
+    r.reason = "killed after " + FormatDouble(w.kill_after_s) + " s (timeout " +
+               FormatDouble(w.run.spec.timeout_s) + " s)";
+  } else if (WIFSIGNALED(wait_status)) {
+    const int sig = WTERMSIG(wait_status);
+    r.status = RunStatus::kFailed;
+    r.reason = "crashed: signal " + std::to_string(sig) + " (" + strsignal(sig) + ")";
+  } else if (!WIFEXITED(wait_status) || WEXITSTATUS(wait_status) != 0) {
+    r.status = RunStatus::kFailed;
+    r.reason = "worker exited with code " + std::to_string(WEXITSTATUS(wait_status));
+  } else {
+    try {
+      r = Deserialize(w.output, w.run.spec);
+    } catch (const std::exception& e) {
+      r.status = RunStatus::kFailed;
+      r.reason = std::string("invalid result: unreadable worker output (") + e.what() + ")";
+    }
+  }
+  if (r.status != RunStatus::kOk && r.wall_time_s == 0) r.wall_time_s = Seconds(Clock::now() - w.started);
+  return r;
+}
+
+}  // namespace
+
+SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostream& progress_out,
+                      bool terminal) {
+  std::filesystem::create_directories(options.out_dir);
+  ResultsStore store(StorePath(options.out_dir));
+  SweepSummary summary;
+  std::deque<PlannedRun> queue;
+  const std::vector<std::string> stored_keys = store.RunKeys();
+  const std::set<std::string> stored(stored_keys.begin(), stored_keys.end());
+  for (std::size_t i = 0; i < spec.runs.size(); ++i) {
+    if (static_cast<int>(i % options.shard_count) != options.shard_index) continue;
+    ++summary.planned;
+    if (!options.force && stored.count(spec.runs[i].spec.Key())) {
+      ++summary.already_stored;
+      continue;
+    }
+    queue.push_back(spec.runs[i]);
+  }
+  Progress progress(progress_out, terminal, static_cast<int>(queue.size()));
+  auto store_record = [&](RunRecord r, const std::string& experiment) {
+    r.spec_file = spec.file + (experiment.empty() ? "" : "#" + experiment);
+    r.provenance = CurrentProvenance();
+    store.Insert(r);
+    switch (r.status) {
+      case RunStatus::kOk: ++summary.ok; break;
+      case RunStatus::kFailed: ++summary.failed; break;
+      case RunStatus::kTimeout: ++summary.timed_out; break;
+      case RunStatus::kSkipped: ++summary.skipped; break;
+    }
+    progress.Done(r, summary);
+  };
+
+  std::vector<Worker> workers;
+  const int jobs = std::max(1, options.jobs);
+  while (!queue.empty() || !workers.empty()) {
+    while (static_cast<int>(workers.size()) < jobs && !queue.empty()) {
+      PlannedRun run = std::move(queue.front());
+      queue.pop_front();
+      if (!run.skip_reason.empty()) {
+        RunRecord r;
+        r.spec = run.spec;
+        r.status = RunStatus::kSkipped;
+        r.reason = run.skip_reason;
+        store_record(r, run.experiment);
+        continue;
+      }
+      int fds[2];
+      if (pipe(fds) != 0) throw std::runtime_error(std::string("pipe: ") + strerror(errno));
+      std::fflush(nullptr);
+      const pid_t pid = fork();
+      if (pid < 0) throw std::runtime_error(std::string("fork: ") + strerror(errno));
+      if (pid == 0) {  // the worker: one run, its record on the pipe, no cleanup
+        close(fds[0]);
+        for (const Worker& w : workers) close(w.fd);
+        signal(SIGPIPE, SIG_IGN);
+        const bool ok = WriteAll(fds[1], Serialize(ExecuteRun(run.spec)));
+        _exit(ok ? 0 : 3);
+      }
+      close(fds[1]);
+      Worker w;
+      w.pid = pid;
+      w.fd = fds[0];
+      w.started = Clock::now();
+      w.kill_after_s = run.spec.timeout_s > 0 ? run.spec.timeout_s + options.kill_grace_s : 0;
+      w.run = std::move(run);
+      workers.push_back(std::move(w));
+    }
+    if (workers.empty()) continue;
+    std::vector<pollfd> fds;
+    for (const Worker& w : workers) fds.push_back({w.fd, POLLIN, 0});
+    poll(fds.data(), fds.size(), 100);
+    for (std::size_t i = 0; i < workers.size();) {
+      Worker& w = workers[i];
+      bool eof = false;
+      if (fds[i].revents & (POLLIN | POLLHUP | POLLERR)) {
+        char buf[65536];
+        ssize_t n = read(w.fd, buf, sizeof buf);
+        if (n > 0) {
+          w.output.append(buf, static_cast<std::size_t>(n));
+        } else if (n == 0 || errno != EINTR) {
+          eof = true;
+        }
+      }
+      if (!eof && !w.killed && w.kill_after_s > 0 && Seconds(Clock::now() - w.started) > w.kill_after_s) {
+        kill(w.pid, SIGKILL);
+        w.killed = true;
+      }
+      if (!eof) {
+        ++i;
+        continue;
+      }
+      close(w.fd);
+      int status = 0;
+      while (waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {
+      }
+      store_record(Finalize(w, status), w.run.experiment);
+      fds.erase(fds.begin() + static_cast<std::ptrdiff_t>(i));
+      workers.erase(workers.begin() + static_cast<std::ptrdiff_t>(i));
+    }
+  }
+  progress.Finish();
+  return summary;
+}
+
+}  // namespace icp

@@ -1,0 +1,52 @@
+// The sweep runner: executes the run matrix of a spec in parallel worker
+// processes (one forked process per run, at most `jobs` at a time), so that a
+// run that crashes, hangs past its timeout or returns garbage is recorded as
+// failed with its reason while the sweep goes on. Each finished run is
+// written to the results store at once; runs already stored are skipped.
+#ifndef ICPBENCH_HARNESS_RUNNER_H_
+#define ICPBENCH_HARNESS_RUNNER_H_
+
+#include <iosfwd>
+#include <string>
+
+#include "harness/run_record.h"
+#include "harness/spec.h"
+
+namespace icp {
+
+struct RunnerOptions {
+  std::string out_dir;
+  int jobs = 1;
+  int shard_index = 0;  // this machine's share: runs whose index % count == index
+  int shard_count = 1;
+  bool force = false;   // rerun runs that are already stored
+  // Extra seconds after a run's timeout before its process is killed (the
+  // run first gets the chance to stop by itself).
+  double kill_grace_s = 2;
+};
+
+struct SweepSummary {
+  int planned = 0;      // runs in this shard
+  int already_stored = 0;
+  int ok = 0;
+  int failed = 0;
+  int timed_out = 0;
+  int skipped = 0;      // incompatible algorithm/problem pairs
+};
+
+// Runs the sweep; progress goes to `progress` (a bar on a terminal, plain
+// lines otherwise). Throws StoreError if the store cannot be opened.
+SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostream& progress,
+                      bool progress_is_terminal);
+
+// One run in the calling process: the problem's steps fed to the algorithm,
+// each contracted box checked and recorded. Never throws: an exception or an
+// invalid box becomes a failed record with its reason.
+RunRecord ExecuteRun(const RunSpec& spec);
+
+// "i/n" -> (i, n) with 0 <= i < n; throws std::invalid_argument.
+std::pair<int, int> ParseShard(const std::string& text);
+
+}  // namespace icp
+
+#endif  // ICPBENCH_HARNESS_RUNNER_H_

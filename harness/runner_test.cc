@@ -1,0 +1,155 @@
+#include "harness/runner.h"
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <sstream>
+#include <thread>
+
+#include "harness/results_store.h"
+
+namespace icp {
+namespace {
+
+std::string FreshDir(const std::string& name) {
+  const std::string dir = ::testing::TempDir() + "runner_" + name;
+  std::filesystem::remove_all(dir);
+  return dir;
+}
+
+SweepSummary Sweep(const std::string& yaml, const std::string& dir, int jobs = 2,
+                   bool force = false) {
+  Spec spec = ParseSpec(yaml, "test.yaml");
+  RunnerOptions options;
+  options.out_dir = dir;
+  options.jobs = jobs;
+  options.force = force;
+  options.kill_grace_s = 0.5;
+  std::ostringstream progress;
+  return RunSweep(spec, options, progress, false);
+}
+
+TEST(RunnerTest, ExecuteRunRecordsEveryStepAndKeepsTheTruth) {
+  RunRecord r = ExecuteRun(RunSpec{"hc4", {}, "chain", {{"w", "10"}}, 3, 0});
+  ASSERT_EQ(r.status, RunStatus::kOk) << r.reason;
+  ASSERT_EQ(r.steps.size(), 1u);
+  const StepRecord& s = r.steps[0];
+  ASSERT_EQ(s.vars.size(), 3u);  // the newest state: x, y, theta
+  EXPECT_EQ(s.vars[0].name, "x");
+  EXPECT_EQ(s.contained, 1);
+  EXPECT_GT(s.area, 0);
+  EXPECT_EQ(r.metrics.consistency_rate, 1.0);
+  EXPECT_NEAR(s.area, (s.vars[0].hi - s.vars[0].lo) * (s.vars[1].hi - s.vars[1].lo), 1e-9);
+}
+
+TEST(RunnerTest, FaultsAreRecordedAndTheSweepGoesOn) {
+  const std::string dir = FreshDir("faults");
+  SweepSummary s = Sweep(R"(
+timeout_s: 1
+algorithms:
+  - hc4
+  - {name: fault, params: {mode: [segfault, abort, hang, throw, garbage]}}
+problems: [chain]
+)", dir);
+  EXPECT_EQ(s.planned, 6);
+  EXPECT_EQ(s.ok, 1);
+  EXPECT_EQ(s.failed, 4);
+  EXPECT_EQ(s.timed_out, 1);
+  ResultsStore store(StorePath(dir));
+  std::map<std::string, RunRecord> by_mode;
+  for (RunRecord& r : store.LoadRuns(false))
+    by_mode[r.spec.algorithm_params.count("mode") ? r.spec.algorithm_params.at("mode") : "hc4"] = r;
+  EXPECT_EQ(by_mode["hc4"].status, RunStatus::kOk);
+  EXPECT_NE(by_mode["segfault"].reason.find("signal 11"), std::string::npos) << by_mode["segfault"].reason;
+  EXPECT_NE(by_mode["abort"].reason.find("signal 6"), std::string::npos) << by_mode["abort"].reason;
+  EXPECT_EQ(by_mode["hang"].status, RunStatus::kTimeout);
+  EXPECT_NE(by_mode["throw"].reason.find("injected fault"), std::string::npos);
+  EXPECT_NE(by_mode["garbage"].reason.find("invalid result"), std::string::npos)
+      << by_mode["garbage"].reason;
+  EXPECT_FALSE(by_mode["hc4"].provenance.git_revision.empty());
+  EXPECT_FALSE(by_mode["hc4"].provenance.date.empty());
+}
+
+TEST(RunnerTest, RerunSkipsStoredRunsAndForceRerunsThem) {
+  const std::string dir = FreshDir("resume");
+  const std::string yaml = "seeds: [1, 2, 3]\nalgorithms: [hc4, bc4]\nproblems: [chain]\n";
+  SweepSummary first = Sweep(yaml, dir);
+  EXPECT_EQ(first.ok, 6);
+  SweepSummary second = Sweep(yaml, dir);
+  EXPECT_EQ(second.already_stored, 6);
+  EXPECT_EQ(second.ok, 0);
+  SweepSummary forced = Sweep(yaml, dir, 2, true);
+  EXPECT_EQ(forced.ok, 6);
+  EXPECT_EQ(ResultsStore(StorePath(dir)).LoadRuns(false).size(), 6u);
+}
+
+TEST(RunnerTest, ShardsSplitTheMatrixWithoutOverlap) {
+  const std::string yaml = "seeds: [1, 2, 3, 4, 5]\nalgorithms: [hc4]\nproblems: [chain]\n";
+  Spec spec = ParseSpec(yaml, "test.yaml");
+  int total = 0;
+  for (int i = 0; i < 2; ++i) {
+    RunnerOptions options;
+    options.out_dir = FreshDir("shard" + std::to_string(i));
+    options.shard_index = i;
+    options.shard_count = 2;
+    std::ostringstream progress;
+    total += RunSweep(spec, options, progress, false).ok;
+  }
+  EXPECT_EQ(total, 5);
+  const std::string merged_dir = FreshDir("merged");
+  std::filesystem::create_directories(merged_dir);
+  ResultsStore merged(StorePath(merged_dir));
+  EXPECT_EQ(merged.MergeFrom(StorePath(::testing::TempDir() + "runner_shard0")) +
+                merged.MergeFrom(StorePath(::testing::TempDir() + "runner_shard1")),
+            5);
+  EXPECT_EQ(ParseShard("1/3"), std::make_pair(1, 3));
+  EXPECT_THROW(ParseShard("3/3"), std::invalid_argument);
+  EXPECT_THROW(ParseShard("a/b"), std::invalid_argument);
+}
+
+// A sweep killed with SIGKILL keeps every run it finished; running the spec
+// again completes the matrix without redoing them.
+TEST(RunnerTest, AKilledSweepLosesOnlyTheRunsInFlight) {
+  const std::string dir = FreshDir("killed");
+  const std::string yaml =
+      "seeds: [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16]\n"
+      "algorithms: [3b-bc4]\nproblems: [{name: chain, params: {w: 12}}]\n";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    Sweep(yaml, dir, 2);
+    _exit(0);
+  }
+  // Wait until some runs are stored, then kill the whole sweep.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  std::size_t stored = 0;
+  while (std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    if (!std::filesystem::exists(StorePath(dir))) continue;
+    try {
+      stored = ResultsStore(StorePath(dir)).RunKeys().size();
+    } catch (const StoreError&) {
+      continue;
+    }
+    if (stored >= 3) break;
+  }
+  kill(pid, SIGKILL);
+  waitpid(pid, nullptr, 0);
+  ASSERT_GE(stored, 3u) << "the sweep did not store runs in time";
+  std::vector<RunRecord> kept = ResultsStore(StorePath(dir)).LoadRuns(true);
+  ASSERT_LT(kept.size(), 16u) << "the sweep finished before it was killed";
+  for (const RunRecord& r : kept) {
+    EXPECT_EQ(r.status, RunStatus::kOk);
+    EXPECT_EQ(r.steps.size(), 1u);  // complete runs only
+  }
+  SweepSummary resumed = Sweep(yaml, dir, 2);
+  EXPECT_EQ(resumed.already_stored, static_cast<int>(kept.size()));
+  EXPECT_EQ(resumed.ok + resumed.already_stored, 16);
+}
+
+}  // namespace
+}  // namespace icp

@@ -1,0 +1,261 @@
+#include "harness/spec.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "algorithms/registry.h"
+#include "problems/registry.h"
+
+namespace icp {
+
+namespace {
+
+class Reader {
+ public:
+  explicit Reader(std::string source) : source_(std::move(source)) {}
+
+  [[noreturn]] void Fail(const YAML::Node& node, const std::string& key,
+                         const std::string& message) const {
+    const YAML::Mark mark = node.Mark();
+    std::ostringstream out;
+    out << source_;
+    if (mark.line >= 0) out << ":" << mark.line + 1 << ":" << mark.column + 1;
+    out << ": " << (key.empty() ? "" : "key '" + key + "': ") << message;
+    throw SpecError(out.str());
+  }
+
+  void CheckKeys(const YAML::Node& map, const std::string& where,
+                 const std::set<std::string>& allowed) const {
+    if (!map.IsMap()) Fail(map, where, "expected a mapping");
+    for (const auto& kv : map) {
+      const std::string k = kv.first.as<std::string>();
+      if (!allowed.count(k)) {
+        std::string known;
+        for (const auto& a : allowed) known += (known.empty() ? "" : ", ") + a;
+        Fail(kv.first, Join(where, k), "unknown key (expected one of: " + known + ")");
+      }
+    }
+  }
+
+  static std::string Join(const std::string& where, const std::string& key) {
+    return where.empty() ? key : where + "." + key;
+  }
+
+  std::string Scalar(const YAML::Node& node, const std::string& key) const {
+    if (!node.IsScalar()) Fail(node, key, "expected a single value");
+    return node.Scalar();
+  }
+
+  double Positive(const YAML::Node& node, const std::string& key) const {
+    const std::string text = Scalar(node, key);
+    char* end = nullptr;
+    double v = std::strtod(text.c_str(), &end);
+    if (end != text.c_str() + text.size() || !(v > 0))
+      Fail(node, key, "'" + text + "' is not a positive number");
+    return v;
+  }
+
+  std::vector<std::uint64_t> Seeds(const YAML::Node& parent, const std::string& where,
+                                   std::vector<std::uint64_t> fallback) const {
+    const YAML::Node seeds = parent["seeds"];
+    const YAML::Node reps = parent["repetitions"];
+    if (seeds && reps) Fail(reps, Join(where, "repetitions"), "give seeds or repetitions, not both");
+    auto as_seed = [&](const YAML::Node& n, const std::string& key) {
+      const std::string text = Scalar(n, key);
+      std::uint64_t v = 0;
+      std::size_t used = 0;
+      try {
+        v = std::stoull(text, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != text.size() || text.empty() || text[0] == '-')
+        Fail(n, key, "'" + text + "' is not a non-negative integer");
+      return v;
+    };
+    if (seeds) {
+      std::vector<std::uint64_t> out;
+      if (seeds.IsSequence()) {
+        for (std::size_t i = 0; i < seeds.size(); ++i)
+          out.push_back(as_seed(seeds[i], Join(where, "seeds[" + std::to_string(i) + "]")));
+      } else {
+        out.push_back(as_seed(seeds, Join(where, "seeds")));
+      }
+      if (out.empty()) Fail(seeds, Join(where, "seeds"), "no seeds");
+      return out;
+    }
+    if (reps) {
+      const std::uint64_t n = as_seed(reps, Join(where, "repetitions"));
+      if (n < 1 || n > 100000) Fail(reps, Join(where, "repetitions"), "must be in [1, 100000]");
+      std::vector<std::uint64_t> out;
+      for (std::uint64_t s = 1; s <= n; ++s) out.push_back(s);
+      return out;
+    }
+    return fallback;
+  }
+
+  // name: or {name:, params:} -> name and the grid of parameter maps.
+  std::pair<std::string, std::vector<ParamMap>> Plugin(const YAML::Node& node,
+                                                       const std::string& where) const {
+    if (node.IsScalar()) return {node.Scalar(), {ParamMap{}}};
+    CheckKeys(node, where, {"name", "params"});
+    if (!node["name"]) Fail(node, where, "missing 'name'");
+    std::string name = Scalar(node["name"], Join(where, "name"));
+    std::vector<ParamMap> grid = {ParamMap{}};
+    if (const YAML::Node params = node["params"]) {
+      if (!params.IsMap()) Fail(params, Join(where, "params"), "expected a mapping of key: value");
+      for (const auto& kv : params) {
+        const std::string key = kv.first.as<std::string>();
+        const std::string at = Join(where, "params." + key);
+        std::vector<std::string> values;
+        if (kv.second.IsSequence()) {
+          if (kv.second.size() == 0) Fail(kv.second, at, "an empty list of values");
+          for (std::size_t i = 0; i < kv.second.size(); ++i)
+            values.push_back(Scalar(kv.second[i], at + "[" + std::to_string(i) + "]"));
+        } else {
+          values.push_back(Scalar(kv.second, at));
+        }
+        std::vector<ParamMap> next;
+        for (const ParamMap& base : grid)
+          for (const std::string& v : values) {
+            ParamMap m = base;
+            m[key] = v;
+            next.push_back(std::move(m));
+          }
+        grid = std::move(next);
+      }
+    }
+    return {name, grid};
+  }
+
+  // Validates each grid point; ParamError becomes a SpecError at the node.
+  template <class Validate>
+  void ValidateGrid(const YAML::Node& node, const std::string& where, const std::string& name,
+                    const std::vector<ParamMap>& grid, Validate validate) const {
+    for (const ParamMap& m : grid) {
+      try {
+        validate(name, m);
+      } catch (const std::invalid_argument& e) {
+        Fail(node.IsMap() && node["params"] ? node["params"] : node, where, e.what());
+      }
+    }
+  }
+
+  void Experiment(const YAML::Node& node, const std::string& where, const std::string& name,
+                  double timeout, const std::vector<std::uint64_t>& seeds, Spec* spec,
+                  std::set<std::string>* seen) const {
+    const YAML::Node algorithms = node["algorithms"];
+    const YAML::Node problems = node["problems"];
+    if (!algorithms || !algorithms.IsSequence() || algorithms.size() == 0)
+      Fail(algorithms ? algorithms : node, Join(where, "algorithms"), "expected a non-empty list");
+    if (!problems || !problems.IsSequence() || problems.size() == 0)
+      Fail(problems ? problems : node, Join(where, "problems"), "expected a non-empty list");
+    struct Entry {
+      std::string name;
+      std::vector<ParamMap> grid;
+    };
+    std::vector<Entry> algs, probs;
+    for (std::size_t i = 0; i < algorithms.size(); ++i) {
+      const std::string at = Join(where, "algorithms[" + std::to_string(i) + "]");
+      auto [alg, grid] = Plugin(algorithms[i], at);
+      const AlgorithmInfo* info = nullptr;
+      try {
+        info = &FindAlgorithm(alg);
+      } catch (const std::invalid_argument& e) {
+        Fail(algorithms[i], at, e.what());
+      }
+      ValidateGrid(algorithms[i], at, alg, grid, info->validate);
+      algs.push_back({alg, grid});
+    }
+    for (std::size_t i = 0; i < problems.size(); ++i) {
+      const std::string at = Join(where, "problems[" + std::to_string(i) + "]");
+      auto [prob, grid] = Plugin(problems[i], at);
+      const ProblemInfo* info = nullptr;
+      try {
+        info = &FindProblem(prob);
+      } catch (const std::invalid_argument& e) {
+        Fail(problems[i], at, e.what());
+      }
+      ValidateGrid(problems[i], at, prob, grid, info->validate);
+      probs.push_back({prob, grid});
+    }
+    for (const Entry& p : probs) {
+      const ProblemInfo& pinfo = FindProblem(p.name);
+      for (const Entry& a : algs) {
+        const AlgorithmInfo& ainfo = FindAlgorithm(a.name);
+        std::string skip;
+        bool offered = false;
+        for (View v : pinfo.views) offered |= v == ainfo.view;
+        if (!offered)
+          skip = a.name + " needs the " + std::string(ToString(ainfo.view)) + " view, which " +
+                 p.name + " does not offer";
+        for (const ParamMap& pp : p.grid)
+          for (const ParamMap& ap : a.grid)
+            for (std::uint64_t seed : seeds) {
+              PlannedRun run{RunSpec{a.name, ap, p.name, pp, seed, timeout}, name, skip};
+              if (seen->insert(run.spec.Key()).second) spec->runs.push_back(std::move(run));
+            }
+      }
+    }
+  }
+
+ private:
+  std::string source_;
+};
+
+}  // namespace
+
+Spec ParseSpec(const std::string& text, const std::string& source) {
+  Reader reader(source);
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    std::ostringstream out;
+    out << source << ":" << e.mark.line + 1 << ":" << e.mark.column + 1 << ": " << e.msg;
+    throw SpecError(out.str());
+  }
+  if (!root || root.IsNull()) throw SpecError(source + ": empty spec");
+  reader.CheckKeys(root, "",
+                   {"name", "description", "timeout_s", "seeds", "repetitions", "experiments",
+                    "algorithms", "problems"});
+  const double timeout = root["timeout_s"] ? reader.Positive(root["timeout_s"], "timeout_s") : 600;
+  const std::vector<std::uint64_t> seeds = reader.Seeds(root, "", {1});
+  Spec spec;
+  spec.file = source;
+  std::set<std::string> seen;
+  if (const YAML::Node experiments = root["experiments"]) {
+    if (root["algorithms"] || root["problems"])
+      reader.Fail(root, "", "give 'experiments' or top-level 'algorithms'/'problems', not both");
+    if (!experiments.IsSequence() || experiments.size() == 0)
+      reader.Fail(experiments, "experiments", "expected a non-empty list");
+    for (std::size_t i = 0; i < experiments.size(); ++i) {
+      const YAML::Node e = experiments[i];
+      const std::string where = "experiments[" + std::to_string(i) + "]";
+      reader.CheckKeys(e, where,
+                       {"name", "description", "algorithms", "problems", "seeds", "repetitions",
+                        "timeout_s"});
+      const std::string name =
+          e["name"] ? reader.Scalar(e["name"], where + ".name") : "experiment" + std::to_string(i + 1);
+      const double t = e["timeout_s"] ? reader.Positive(e["timeout_s"], where + ".timeout_s") : timeout;
+      reader.Experiment(e, where, name, t, reader.Seeds(e, where, seeds), &spec, &seen);
+    }
+  } else {
+    const std::string name = root["name"] ? reader.Scalar(root["name"], "name") : "main";
+    reader.Experiment(root, "", name, timeout, seeds, &spec, &seen);
+  }
+  return spec;
+}
+
+Spec LoadSpec(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw SpecError(path + ": cannot read the spec file");
+  std::stringstream text;
+  text << in.rdbuf();
+  return ParseSpec(text.str(), path);
+}
+
+}  // namespace icp

@@ -1,0 +1,56 @@
+// Experiment specs (YAML): which algorithms, with which parameter grids, run
+// on which problems, with which seeds. specs/default.yaml is the default
+// suite; the README shows the format. A list value is a grid axis:
+//
+//   timeout_s: 300            # per run (default 600)
+//   seeds: [1, 2]             # or repetitions: 3 (seeds 1..3); default [1]
+//   experiments:
+//     - name: table1
+//       algorithms:
+//         - hc4                                   # defaults
+//         - {name: bc4, params: {ratio: [0.001, 0.01]}}
+//       problems:
+//         - {name: car-track, params: {w: 20}}
+//       seeds: [1]            # optional, overrides the top level
+//
+// A spec with no `experiments` is one experiment with top-level
+// `algorithms` and `problems`. Every name, key and value is checked against
+// the registries before anything runs; errors name the file, line and key.
+#ifndef ICPBENCH_HARNESS_SPEC_H_
+#define ICPBENCH_HARNESS_SPEC_H_
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "harness/run_record.h"
+
+namespace icp {
+
+class SpecError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+struct PlannedRun {
+  RunSpec spec;
+  std::string experiment;
+  // Non-empty when the algorithm cannot run on the problem (views differ):
+  // the run is recorded as skipped with this reason.
+  std::string skip_reason;
+};
+
+struct Spec {
+  std::string file;
+  std::vector<PlannedRun> runs;  // the whole matrix, duplicates removed, in spec order
+};
+
+// Reads and validates a spec file. Throws SpecError("FILE:LINE:COL: key
+// 'algorithms[1].params.ratio': ...") on any problem.
+Spec LoadSpec(const std::string& path);
+// The same from text (source names it in errors).
+Spec ParseSpec(const std::string& text, const std::string& source);
+
+}  // namespace icp
+
+#endif  // ICPBENCH_HARNESS_SPEC_H_

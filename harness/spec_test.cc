@@ -1,0 +1,96 @@
+#include "harness/spec.h"
+
+#include <gtest/gtest.h>
+
+namespace icp {
+namespace {
+
+std::string ErrorOf(const std::string& text) {
+  try {
+    ParseSpec(text, "spec.yaml");
+  } catch (const SpecError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(SpecTest, ExpandsGridsAndSeedsIntoTheMatrix) {
+  Spec spec = ParseSpec(R"(
+timeout_s: 30
+seeds: [1, 2]
+algorithms:
+  - hc4
+  - {name: bc4, params: {ratio: [0.001, 0.01], epsilon: 1e-8}}
+problems:
+  - {name: chain, params: {w: [5, 10, 20]}}
+)", "spec.yaml");
+  // (1 + 2 algorithm points) x 3 problem points x 2 seeds.
+  ASSERT_EQ(spec.runs.size(), 18u);
+  EXPECT_EQ(spec.runs[0].spec.algorithm, "hc4");
+  EXPECT_EQ(spec.runs[0].spec.problem_params.at("w"), "5");
+  EXPECT_EQ(spec.runs[0].spec.seed, 1u);
+  EXPECT_EQ(spec.runs[0].spec.timeout_s, 30);
+  int bc4 = 0;
+  for (const PlannedRun& r : spec.runs) {
+    if (r.spec.algorithm != "bc4") continue;
+    ++bc4;
+    EXPECT_EQ(r.spec.algorithm_params.at("epsilon"), "1e-8");
+    EXPECT_TRUE(r.skip_reason.empty());
+  }
+  EXPECT_EQ(bc4, 12);
+}
+
+TEST(SpecTest, ExperimentsOverrideSeedsAndTimeoutAndDuplicatesAreRemoved) {
+  Spec spec = ParseSpec(R"(
+repetitions: 3
+experiments:
+  - name: a
+    algorithms: [hc4]
+    problems: [chain]
+  - name: b
+    seeds: [1]
+    timeout_s: 5
+    algorithms: [hc4, bc3]
+    problems: [chain]
+)", "spec.yaml");
+  // a: hc4 x seeds 1..3; b: hc4 seed 1 (a duplicate of a's) + bc3 seed 1.
+  ASSERT_EQ(spec.runs.size(), 4u);
+  EXPECT_EQ(spec.runs[0].experiment, "a");
+  EXPECT_EQ(spec.runs[3].spec.algorithm, "bc3");
+  EXPECT_EQ(spec.runs[3].experiment, "b");
+  EXPECT_EQ(spec.runs[3].spec.timeout_s, 5);
+  EXPECT_EQ(spec.runs[0].spec.timeout_s, 600);
+}
+
+TEST(SpecTest, ErrorsNameTheFileLineAndKey) {
+  EXPECT_EQ(ErrorOf("algorithms: [hc4]\nproblems: [chain]\nspeed: 3\n"),
+            "spec.yaml:3:1: key 'speed': unknown key (expected one of: algorithms, description, "
+            "experiments, name, problems, repetitions, seeds, timeout_s)");
+  EXPECT_EQ(ErrorOf("algorithms: [hc5]\nproblems: [chain]\n").substr(0, 60),
+            "spec.yaml:1:14: key 'algorithms[0]': unknown algorithm 'hc5'");
+  std::string e = ErrorOf("algorithms:\n  - {name: hc4, params: {ratio: 2}}\nproblems: [chain]\n");
+  EXPECT_NE(e.find("spec.yaml:2:"), std::string::npos) << e;
+  EXPECT_NE(e.find("hc4.ratio = 2: must be in [0, 1)"), std::string::npos) << e;
+  e = ErrorOf("algorithms: [hc4]\nproblems:\n  - {name: chain, params: {window: 3}}\n");
+  EXPECT_NE(e.find("spec.yaml:3:"), std::string::npos) << e;
+  EXPECT_NE(e.find("unknown parameter 'window' for chain"), std::string::npos) << e;
+  e = ErrorOf("algorithms: [hc4]\nproblems: [chain]\nseeds: [1, x]\n");
+  EXPECT_NE(e.find("spec.yaml:3:12: key 'seeds[1]'"), std::string::npos) << e;
+  e = ErrorOf("algorithms: [hc4]\nproblems: [chain]\ntimeout_s: -1\n");
+  EXPECT_NE(e.find("key 'timeout_s'"), std::string::npos) << e;
+  e = ErrorOf("algorithms: [hc4\nproblems: [chain]\n");
+  EXPECT_NE(e.find("spec.yaml:"), std::string::npos) << e;  // YAML syntax error with position
+  EXPECT_NE(ErrorOf("algorithms: []\nproblems: [chain]\n").find("non-empty list"), std::string::npos);
+  EXPECT_NE(ErrorOf("problems: [chain]\n").find("key 'algorithms'"), std::string::npos);
+  EXPECT_NE(ErrorOf("").find("empty spec"), std::string::npos);
+  EXPECT_NE(ErrorOf("experiments:\n  - algorithms: [hc4]\n    problem: [chain]\n").find(
+                "key 'experiments[0].problem': unknown key"),
+            std::string::npos);
+}
+
+TEST(SpecTest, MissingFileIsASpecError) {
+  EXPECT_THROW(LoadSpec("/nonexistent/spec.yaml"), SpecError);
+}
+
+}  // namespace
+}  // namespace icp

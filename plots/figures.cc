@@ -1,0 +1,417 @@
+#include "plots/figures.h"
+
+#include <gnuplot-iostream.h>
+#include <signal.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <utility>
+
+#include "harness/metrics.h"
+#include "harness/report.h"
+
+namespace icp {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kPixelsPerInch = 110;  // PNG size from the PDF size in inches
+
+// One plotted item: inline data sent after the plot command ('-'), or a
+// function when rows is empty and function is set (e.g. the zero line).
+struct Series {
+  std::string spec;  // what follows '-' (or the function): "using 1:2 with lines ..."
+  std::vector<std::vector<double>> rows;
+  std::string function;
+};
+
+struct Panel {
+  std::string setup;  // gnuplot commands before the plot command
+  std::vector<Series> series;
+};
+
+// A figure: panels in a rows x cols multiplot (one panel: no multiplot).
+struct Figure {
+  std::string name;  // file name without extension
+  std::string title;
+  double width_in = 8;
+  double height_in = 5;
+  int rows = 1;
+  int cols = 1;
+  std::vector<Panel> panels;
+};
+
+enum class Terminal { kPng, kPdf };
+
+// Colours by algorithm, the same in every figure.
+std::string Colour(const std::string& algorithm) {
+  static const std::map<std::string, std::string> kFixed = {
+      {"hc3", "#7f7f7f"}, {"hc4", "#1f77b4"},    {"bc3", "#ff7f0e"},
+      {"bc4", "#2ca02c"}, {"3b-bc4", "#d62728"}, {"3b-hc4", "#9467bd"}};
+  static const std::vector<std::string> kOthers = {"#8c564b", "#e377c2", "#bcbd22", "#17becf"};
+  const auto it = kFixed.find(algorithm);
+  if (it != kFixed.end()) return it->second;
+  return kOthers[std::hash<std::string>{}(algorithm) % kOthers.size()];
+}
+
+// A gnuplot single-quoted string.
+std::string Quote(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) {
+    if (c == '\'') out += '\'';
+    if (c != '\n') out += c;
+  }
+  return out + "'";
+}
+
+double Finite(double v) { return std::isfinite(v) ? v : kNaN; }
+double Positive(double v) { return std::isfinite(v) && v > 0 ? v : kNaN; }
+
+bool HasPoint(const Series& s) {
+  if (!s.function.empty()) return true;
+  for (const auto& row : s.rows) {
+    if (!row.empty() && std::all_of(row.begin(), row.end(), [](double v) { return !std::isnan(v); }))
+      return true;
+  }
+  return false;
+}
+
+bool GnuplotAvailable() {
+  static const bool available = std::system("gnuplot --version >/dev/null 2>&1") == 0;
+  return available;
+}
+
+// The shared terminal setup: cairo PNG or PDF of the figure's size, UTF-8,
+// output to path.
+void SetTerminal(Gnuplot& gp, Terminal terminal, const Figure& f, const std::string& path) {
+  gp << "set encoding utf8\n";
+  if (terminal == Terminal::kPng) {
+    gp << "set terminal pngcairo enhanced size " << static_cast<int>(f.width_in * kPixelsPerInch)
+       << "," << static_cast<int>(f.height_in * kPixelsPerInch) << " font 'Sans,10'\n";
+  } else {
+    gp << "set terminal pdfcairo enhanced size " << f.width_in << "in," << f.height_in
+       << "in font 'Sans,8'\n";
+  }
+  gp << "set output " << Quote(path) << "\n";
+}
+
+void DrawPanel(Gnuplot& gp, const Panel& panel) {
+  gp << "reset\nset encoding utf8\nset grid\n" << panel.setup << "\n";
+  std::vector<const Series*> drawn;
+  for (const Series& s : panel.series) {
+    if (HasPoint(s)) drawn.push_back(&s);
+  }
+  if (drawn.empty()) {  // keep the multiplot's place
+    gp << "unset key\nset xrange [0:1]\nset yrange [0:1]\n"
+          "set label 99 'no data' at graph 0.5, graph 0.5 center\nplot 2 notitle\n";
+    return;
+  }
+  gp << "plot ";
+  for (std::size_t i = 0; i < drawn.size(); ++i) {
+    gp << (i ? ", " : "") << (drawn[i]->function.empty() ? "'-'" : drawn[i]->function) << " "
+       << drawn[i]->spec;
+  }
+  gp << "\n";
+  for (const Series* s : drawn) {
+    if (s->function.empty()) gp.send1d(s->rows);
+  }
+}
+
+// Writes f as out_dir/NAME.png and .pdf in one gnuplot session and records
+// the files that came out non-empty.
+void Render(const Figure& f, const std::string& out_dir, PlotOutput* out) {
+  if (!GnuplotAvailable()) {
+    out->messages.push_back(f.name + ": skipped: gnuplot not found");
+    return;
+  }
+  const std::vector<std::pair<Terminal, std::string>> outputs = {
+      {Terminal::kPng, (std::filesystem::path(out_dir) / (f.name + ".png")).string()},
+      {Terminal::kPdf, (std::filesystem::path(out_dir) / (f.name + ".pdf")).string()}};
+  for (const auto& [terminal, path] : outputs) std::filesystem::remove(path);
+  // gnuplot reads on after an error, but should it die, a write must fail
+  // rather than kill the process.
+  struct sigaction ignore = {}, previous = {};
+  ignore.sa_handler = SIG_IGN;
+  sigaction(SIGPIPE, &ignore, &previous);
+  {
+    Gnuplot gp("gnuplot");
+    for (const auto& [terminal, path] : outputs) {
+      SetTerminal(gp, terminal, f, path);
+      const bool multiplot = f.panels.size() > 1;
+      if (multiplot) {
+        gp << "set multiplot layout " << f.rows << "," << f.cols;
+        if (!f.title.empty()) gp << " title " << Quote(f.title) << " noenhanced";
+        gp << "\n";
+      }
+      for (const Panel& p : f.panels) DrawPanel(gp, p);
+      if (multiplot) gp << "unset multiplot\n";
+      gp << "unset output\n";
+    }
+  }  // closing the pipe waits for gnuplot to finish
+  sigaction(SIGPIPE, &previous, nullptr);
+  for (const auto& [terminal, path] : outputs) {
+    std::error_code ec;
+    if (std::filesystem::file_size(path, ec) > 0 && !ec) {
+      out->files.push_back(path);
+    } else {
+      out->messages.push_back(path + ": gnuplot wrote nothing (see its messages above)");
+    }
+  }
+}
+
+// The ok run with the smallest seed of each algorithm's paper group
+// (FindPaperGroup), in algorithm order; runs without steps are left out.
+std::vector<const RunRecord*> PaperRuns(const std::vector<GroupSummary>& groups) {
+  std::vector<std::string> algorithms;
+  for (const GroupSummary& g : groups) {
+    if (std::find(algorithms.begin(), algorithms.end(), g.algorithm) == algorithms.end())
+      algorithms.push_back(g.algorithm);
+  }
+  std::stable_sort(algorithms.begin(), algorithms.end(), [](const auto& a, const auto& b) {
+    return AlgorithmRank(a) < AlgorithmRank(b);
+  });
+  std::vector<const RunRecord*> runs;
+  for (const std::string& algorithm : algorithms) {
+    const GroupSummary* g = FindPaperGroup(groups, algorithm);
+    if (!g) continue;
+    const RunRecord* best = nullptr;
+    for (const RunRecord* r : g->ok_runs) {
+      if (!r->steps.empty() && (!best || r->spec.seed < best->spec.seed)) best = r;
+    }
+    if (best) runs.push_back(best);
+  }
+  return runs;
+}
+
+// The corridor [lo - truth, hi - truth] of variable var over the steps:
+// rows {step, lower, upper}; NaN where the box is empty or the truth unknown.
+std::vector<std::vector<double>> CorridorRows(const RunRecord& run, const std::string& var) {
+  std::vector<std::vector<double>> rows;
+  for (const StepRecord& s : run.steps) {
+    double lower = kNaN, upper = kNaN;
+    for (const VariableRecord& v : s.vars) {
+      if (v.name != var || !(v.lo <= v.hi) || std::isnan(v.truth)) continue;
+      lower = Finite(v.lo - v.truth);
+      upper = Finite(v.hi - v.truth);
+    }
+    rows.push_back({static_cast<double>(s.step), lower, upper});
+  }
+  return rows;
+}
+
+// A y range holding 98 % of the corridor's bounds and zero, so a few wide
+// boxes at the start (unknown heading) do not flatten the rest.
+std::string CorridorRange(const std::vector<std::vector<double>>& rows) {
+  std::vector<double> lower, upper;
+  for (const auto& row : rows) {
+    lower.push_back(row[1]);
+    upper.push_back(row[2]);
+  }
+  const double lo = std::min(0.0, Quantile(lower, 0.01));
+  const double hi = std::max(0.0, Quantile(upper, 0.99));
+  if (std::isnan(lo) || std::isnan(hi) || !(hi > lo)) return "";
+  const double margin = 0.1 * (hi - lo);
+  return "set yrange [" + std::to_string(lo - margin) + ":" + std::to_string(hi + margin) + "]\n";
+}
+
+std::string RunLabel(const RunRecord& r) {
+  std::string label = r.spec.algorithm + " (seed " + std::to_string(r.spec.seed);
+  ParamMap others = r.spec.problem_params;
+  others.erase("w");
+  if (!others.empty()) label += ", " + CompactParams(others);
+  return label + ")";
+}
+
+}  // namespace
+
+void PlotWindowFigure(const std::vector<RunRecord>& runs, const std::string& out_dir,
+                      PlotOutput* out) {
+  const std::vector<WindowPoint> points = WindowSweep(runs);
+  if (points.empty()) {
+    out->messages.push_back(
+        "fig2_window: skipped: no car-track configuration with ok runs at two or more w");
+    return;
+  }
+  Figure f;
+  f.name = "fig2_window";
+  f.title = "Average localization area and computing time against the window w (car-track)";
+  f.width_in = 10;
+  f.height_in = 4.2;
+  f.cols = 2;
+  Panel area, time;
+  area.setup =
+      "set title 'Mean x-y area'\nset xlabel 'window w (steps)'\nset ylabel 'area (m^2)'\n"
+      "set key top right noenhanced\n";
+  time.setup =
+      "set title 'Mean time per CSP'\nset xlabel 'window w (steps)'\nset ylabel 'time (ms)'\n"
+      "set key top left noenhanced\n";
+  for (std::size_t i = 0; i < points.size();) {
+    const std::string& label = points[i].label;
+    const std::string style = "with linespoints lw 2 pt 7 ps 0.7 lc rgb " +
+                              Quote(Colour(points[i].algorithm)) + " title " + Quote(label);
+    Series a{"using 1:2 " + style, {}, ""};
+    Series t{"using 1:2 " + style, {}, ""};
+    for (; i < points.size() && points[i].label == label; ++i) {
+      a.rows.push_back({points[i].w, Finite(points[i].mean_area)});
+      t.rows.push_back({points[i].w, Finite(points[i].mean_time_s * 1e3)});
+    }
+    area.series.push_back(std::move(a));
+    time.series.push_back(std::move(t));
+  }
+  f.panels = {area, time};
+  Render(f, out_dir, out);
+}
+
+void PlotCorridorFigure(const std::vector<RunRecord>& runs, const std::string& out_dir,
+                        PlotOutput* out) {
+  const std::vector<GroupSummary> groups = SummariseGroups(runs);
+  Figure f;
+  f.name = "fig3_corridors";
+  f.title = "Interval error [lo - truth, hi - truth] over the lap (car-track, w = 20)";
+  f.width_in = 10;
+  f.cols = 2;
+  for (const RunRecord* r : PaperRuns(groups)) {
+    Panel row[2];
+    bool any = false;
+    const char* vars[2] = {"x", "y"};
+    for (int k = 0; k < 2; ++k) {
+      std::vector<std::vector<double>> rows = CorridorRows(*r, vars[k]);
+      const std::string colour = Quote(Colour(r->spec.algorithm));
+      row[k].setup = "set title " + Quote(RunLabel(*r) + ": " + vars[k]) +
+                     " noenhanced\nset xlabel 'step'\nset ylabel 'error in " + vars[k] +
+                     " (m)'\nset key top right\n" + CorridorRange(rows);
+      row[k].series = {
+          {"using 1:2:3 with filledcurves fc rgb " + colour + " fs transparent solid 0.25 notitle",
+           rows, ""},
+          {"using 1:2 with lines lw 1.2 lc rgb " + colour + " title 'lo - truth'", rows, ""},
+          {"using 1:3 with lines lw 1.2 dt 2 lc rgb " + colour + " title 'hi - truth'", rows, ""},
+          {"with lines lw 1 lc rgb 'black' title 'zero'", {}, "0"}};
+      any = any || HasPoint(row[k].series[0]);
+    }
+    if (!any) continue;
+    f.panels.push_back(row[0]);
+    f.panels.push_back(row[1]);
+  }
+  if (f.panels.empty()) {
+    out->messages.push_back(
+        "fig3_corridors: skipped: no ok car-track run at w = 20 with default parameters, "
+        "steps and truth");
+    return;
+  }
+  f.rows = static_cast<int>(f.panels.size()) / 2;
+  f.height_in = 0.6 + 2.3 * f.rows;
+  Render(f, out_dir, out);
+}
+
+void PlotAreaFigure(const std::vector<RunRecord>& runs, const std::string& out_dir,
+                    PlotOutput* out) {
+  const std::vector<GroupSummary> groups = SummariseGroups(runs);
+  Panel panel;
+  panel.setup =
+      "set title 'Size of the localization area (car-track, w = 20)'\nset xlabel 'step'\n"
+      "set ylabel 'x-y area (m^2)'\nset logscale y\nset key top right noenhanced\n";
+  for (const RunRecord* r : PaperRuns(groups)) {
+    Series s{"using 1:2 with lines lw 1.5 lc rgb " + Quote(Colour(r->spec.algorithm)) +
+                 " title " + Quote(RunLabel(*r)),
+             {}, ""};
+    for (const StepRecord& step : r->steps) {
+      s.rows.push_back({static_cast<double>(step.step), Positive(step.area)});
+    }
+    if (HasPoint(s)) panel.series.push_back(std::move(s));
+  }
+  if (panel.series.empty()) {
+    out->messages.push_back(
+        "fig4_area: skipped: no ok car-track run at w = 20 with default parameters and areas");
+    return;
+  }
+  Figure f;
+  f.name = "fig4_area";
+  f.width_in = 9;
+  f.height_in = 4.5;
+  f.panels = {panel};
+  Render(f, out_dir, out);
+}
+
+void PlotTimingFigure(const std::vector<RunRecord>& runs, const std::string& out_dir,
+                      PlotOutput* out) {
+  const std::vector<GroupSummary> groups = SummariseGroups(runs);
+  // The paper groups; else the default-param groups of the problem
+  // configuration with the most ok runs.
+  std::vector<const GroupSummary*> chosen;
+  std::string setting = "car-track, w = 20";
+  for (const GroupSummary& g : groups) {
+    if (FindPaperGroup(groups, g.algorithm) == &g) chosen.push_back(&g);
+  }
+  if (chosen.empty()) {
+    std::map<std::pair<std::string, ParamMap>, int> ok_runs;
+    for (const GroupSummary& g : groups) {
+      if (g.algorithm_params.empty()) ok_runs[{g.problem, g.problem_params}] += g.ok;
+    }
+    const auto best = std::max_element(ok_runs.begin(), ok_runs.end(), [](const auto& a, const auto& b) {
+      return a.second < b.second;
+    });
+    if (best != ok_runs.end() && best->second > 0) {
+      setting = best->first.first;
+      if (!best->first.second.empty()) setting += ", " + CompactParams(best->first.second);
+      for (const GroupSummary& g : groups) {
+        if (g.algorithm_params.empty() && g.ok > 0 && g.problem == best->first.first &&
+            g.problem_params == best->first.second) {
+          chosen.push_back(&g);
+        }
+      }
+    }
+  }
+  Panel panel;
+  std::string xtics;
+  for (const GroupSummary* g : chosen) {  // groups are in algorithm order
+    const double x = static_cast<double>(panel.series.size() + 1);
+    Series s{"using (" + std::to_string(x) + "):1 with boxplot lw 1.2 lc rgb " +
+                 Quote(Colour(g->algorithm)) + " notitle",
+             {}, ""};
+    for (const RunRecord* r : g->ok_runs) {
+      for (const StepRecord& step : r->steps) s.rows.push_back({Positive(step.solve_time_s * 1e6)});
+    }
+    if (!HasPoint(s)) continue;
+    xtics += std::string(xtics.empty() ? "" : ", ") + Quote(g->algorithm) + " " + std::to_string(x);
+    panel.series.push_back(std::move(s));
+  }
+  if (panel.series.empty()) {
+    out->messages.push_back("fig_timing: skipped: no ok run with per-step solve times");
+    return;
+  }
+  panel.setup = "set title " + Quote("Solve time per CSP (" + setting + ")") +
+                " noenhanced\nset ylabel 'time per CSP (µs)'\nset logscale y\n"
+                "set style boxplot outliers pointtype 7\nset pointsize 0.3\nset boxwidth 0.5\n"
+                "set xtics (" + xtics + ") noenhanced\nset xrange [0.4:" +
+                std::to_string(panel.series.size() + 0.6) + "]\nset grid noxtics\n";
+  Figure f;
+  f.name = "fig_timing";
+  f.width_in = std::max(4.0, 1.4 * static_cast<double>(panel.series.size()) + 1.5);
+  f.height_in = 4.5;
+  f.panels = {panel};
+  Render(f, out_dir, out);
+}
+
+PlotOutput PlotRuns(const std::vector<RunRecord>& runs, const std::string& out_dir) {
+  std::filesystem::create_directories(out_dir);
+  PlotOutput out;
+  PlotWindowFigure(runs, out_dir, &out);
+  PlotCorridorFigure(runs, out_dir, &out);
+  PlotAreaFigure(runs, out_dir, &out);
+  PlotTimingFigure(runs, out_dir, &out);
+  return out;
+}
+
+std::vector<std::string> PlotDirectory(const std::string& dir, const std::string& out_dir,
+                                       std::vector<std::string>* messages) {
+  PlotOutput out = PlotRuns(LoadRunsFromDirectory(dir), out_dir);
+  if (messages) *messages = std::move(out.messages);
+  return out.files;
+}
+
+}  // namespace icp

@@ -1,0 +1,140 @@
+#include "plots/figures.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "harness/metrics.h"
+
+namespace icp {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A synthetic car-track run: a box around a circular track whose width
+// shrinks over the first steps, times spread around base_time_s.
+RunRecord MakeRun(const std::string& algorithm, const std::string& problem, ParamMap problem_params,
+                  std::uint64_t seed, int steps, double base_time_s, double half_width) {
+  RunRecord r;
+  r.spec.algorithm = algorithm;
+  r.spec.problem = problem;
+  r.spec.problem_params = std::move(problem_params);
+  r.spec.seed = seed;
+  for (int k = 0; k < steps; ++k) {
+    StepRecord s;
+    s.step = k;
+    s.status = "fixpoint";
+    const double tx = 100 * std::cos(k / 30.0), ty = 100 * std::sin(k / 30.0);
+    const double h = half_width * (1 + 4.0 / (1 + k)) * (1 + 0.2 * std::sin(k / 7.0));
+    const double skew = 0.5 * h * std::sin(k / 11.0);
+    s.vars = {{"x", tx - h + skew, tx + h + skew, tx},
+              {"y", ty - h - skew, ty + h - skew, ty},
+              {"theta", -0.1, 0.1, 0}};
+    s.contained = 1;
+    s.area = 4 * h * h;
+    s.centre_error = std::sqrt(2.0) * std::fabs(skew);
+    s.solve_time_s = base_time_s * (1 + 0.5 * std::sin(k * 1.7) + ((k % 23) == 0 ? 3 : 0));
+    r.steps.push_back(s);
+  }
+  r.metrics = ComputeMetrics(r.steps);
+  return r;
+}
+
+std::vector<RunRecord> PaperLikeRuns() {
+  std::vector<RunRecord> runs;
+  const struct {
+    const char* algorithm;
+    double time_s;
+    double half_width;
+  } kAlgorithms[] = {{"hc4", 0.5e-3, 14}, {"bc3", 1e-3, 14}, {"bc4", 0.6e-3, 13.5},
+                     {"3b-bc4", 1.4, 12}};
+  for (const auto& a : kAlgorithms) {
+    runs.push_back(MakeRun(a.algorithm, "car-track", {}, 2, 150, a.time_s, a.half_width));
+    runs.push_back(MakeRun(a.algorithm, "car-track", {}, 1, 150, a.time_s, a.half_width));
+  }
+  for (const char* w : {"1", "5", "10", "40"}) {
+    const double wv = std::stod(w);
+    for (const char* algorithm : {"hc4", "bc4"}) {
+      runs.push_back(MakeRun(algorithm, "car-track", {{"w", w}}, 1, 20, 0.025e-3 * wv,
+                             14 * (1 + 2 / wv)));
+    }
+  }
+  return runs;
+}
+
+bool GnuplotMissing() { return std::system("gnuplot --version >/dev/null 2>&1") != 0; }
+
+fs::path TempDir(const std::string& name) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("icpbench_figures_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  return dir;
+}
+
+std::string Head(const std::string& path, std::size_t n) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(n, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(n));
+  return head;
+}
+
+TEST(FiguresTest, WritesEveryFigureAsPngAndPdf) {
+  if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
+  const fs::path dir = TempDir("all");
+  const PlotOutput out = PlotRuns(PaperLikeRuns(), dir.string());
+  EXPECT_TRUE(out.messages.empty()) << out.messages.front();
+  std::vector<std::string> expected;
+  for (const char* name : {"fig2_window", "fig3_corridors", "fig4_area", "fig_timing"}) {
+    expected.push_back((dir / (std::string(name) + ".png")).string());
+    expected.push_back((dir / (std::string(name) + ".pdf")).string());
+  }
+  EXPECT_EQ(out.files, expected);
+  for (const std::string& path : expected) {
+    ASSERT_TRUE(fs::exists(path)) << path;
+    EXPECT_GT(fs::file_size(path), 1000u) << path;
+    EXPECT_EQ(Head(path, 4), path.ends_with(".png") ? "\x89PNG" : "%PDF") << path;
+  }
+  fs::remove_all(dir);
+}
+
+TEST(FiguresTest, EmptyStoreWritesNothing) {
+  const fs::path dir = TempDir("empty");
+  PlotOutput out;
+  ASSERT_NO_THROW(out = PlotRuns({}, dir.string()));
+  EXPECT_TRUE(out.files.empty());
+  EXPECT_EQ(out.messages.size(), 4u);
+  EXPECT_TRUE(fs::is_empty(dir));
+  fs::remove_all(dir);
+}
+
+TEST(FiguresTest, SkipsWhatTheStoreLacks) {
+  if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
+  const fs::path dir = TempDir("partial");
+  // No car-track: only the timing box plot, over the chain runs.
+  std::vector<RunRecord> runs = {MakeRun("hc4", "chain", {{"w", "4"}}, 1, 30, 1e-5, 1),
+                                 MakeRun("bc4", "chain", {{"w", "4"}}, 1, 30, 2e-5, 1)};
+  // A failed run and a run with undefined areas and times change nothing.
+  RunRecord failed = MakeRun("bc3", "car-track", {}, 1, 0, 0, 0);
+  failed.status = RunStatus::kFailed;
+  runs.push_back(failed);
+  const PlotOutput out = PlotRuns(runs, dir.string());
+  EXPECT_EQ(out.files, (std::vector<std::string>{(dir / "fig_timing.png").string(),
+                                                 (dir / "fig_timing.pdf").string()}));
+  EXPECT_EQ(out.messages.size(), 3u);
+  fs::remove_all(dir);
+}
+
+TEST(FiguresTest, PlotDirectoryNeedsAStore) {
+  EXPECT_THROW(PlotDirectory("/nonexistent/icpbench-figures-test", TempDir("none").string()),
+               std::runtime_error);
+}
+
+}  // namespace
+}  // namespace icp

@@ -1,0 +1,496 @@
+#include "problems/car_track/car_track.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <ostream>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <string_view>
+
+namespace icp {
+
+void Describe(CarTrackParams& p, ParamSet& set) {
+  set.Add("w", &p.w, "window length in steps (3w constraints)", Range::Closed(1, 100000));
+  set.Add("steps", &p.steps, "number of steps (CSPs); with a log, at most this many rows",
+          Range::Closed(1, 1e6));
+  set.Add("speed", &p.speed, "mean speed, m/s (simulator)", Range::Positive(100));
+  set.Add("rate", &p.rate, "sensor sampling rate, Hz (simulator)", Range::Positive(1000));
+  set.Add("track_width", &p.track_width, "distance between the rear wheels, m (simulator)",
+          Range::Positive(10));
+  set.Add("wheel_radius", &p.wheel_radius, "nominal rear wheel radius, m", Range::Positive(5));
+  set.Add("radius_error", &p.radius_error,
+          "half-width of the wheel radius intervals (eq. 13), m; below wheel_radius",
+          Range::Closed(0, 5));
+  set.Add("ticks_per_rev", &p.ticks_per_rev, "odometer resolution P (eq. 13), ticks/revolution",
+          Range::Closed(1, 1e9));
+  set.Add("odo_slip", &p.odo_slip, "wheel slip bound eps_odo (eq. 9), ticks per step",
+          Range::Closed(0, 1e9));
+  set.Add("gyro_error", &p.gyro_error, "gyro half-width eps_gyro (eq. 10), rad per step",
+          Range::Positive(10));
+  set.Add("gps_error", &p.gps_error, "simulated GPS half-width on x and y (eq. 11), m",
+          Range::Positive(1e6));
+  set.Add("gps_period", &p.gps_period, "use a GPS fix every gps_period steps",
+          Range::Closed(1, 1e9));
+  set.Add("outage_start", &p.outage_start, "first step of a GPS outage", Range::Closed(0, 1e9));
+  set.Add("outage_length", &p.outage_length, "GPS outage length in steps (0: none)",
+          Range::Closed(0, 1e9));
+  set.Add("heading_known", &p.heading_known,
+          "th[0] is the true heading ± 0.1 rad (else [-pi, pi])");
+  set.Add("log", &p.log, "CSV log replacing the simulator (empty: simulate)");
+}
+
+void Validate(const CarTrackParams& p, const std::string& owner) {
+  ParamSet set(owner);
+  CarTrackParams copy = p;
+  Describe(copy, set);
+  set.Validate();
+  if (!(p.radius_error < p.wheel_radius))
+    throw ParamError(owner + ".radius_error = " + FormatDouble(p.radius_error) +
+                     ": must be below wheel_radius (" + FormatDouble(p.wheel_radius) + ")");
+}
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kHeadingKnownError = 0.1;
+
+// The track as a curvature profile along the arc length: straights (angle 0)
+// and bends whose curvature rises and falls smoothly (2 sin^2 profile, so the
+// heading changes by `angle` over `length` metres with no curvature jump).
+// Four left corners and an S-bend on each long side; 5560 m, one lap at
+// 13.9 m/s and 5 Hz in 2000 steps. It closes exactly in continuous geometry.
+struct Segment {
+  double length;  // m
+  double angle;   // heading change over the segment, rad
+};
+constexpr Segment kTrack[] = {
+    {440, 0}, {200, 0.35}, {200, -0.35}, {440, 0}, {400, kPi / 2}, {700, 0}, {400, kPi / 2},
+    {440, 0}, {200, 0.35}, {200, -0.35}, {440, 0}, {400, kPi / 2}, {700, 0}, {400, kPi / 2},
+};
+
+double TrackLength() {
+  double total = 0;
+  for (const Segment& s : kTrack) total += s.length;
+  return total;
+}
+
+// Heading change from the start of the track to arc length s >= 0.
+double TrackHeading(double s) {
+  static const double kLength = TrackLength();
+  const double laps = std::floor(s / kLength);
+  double u = s - laps * kLength;
+  double heading = laps * 2 * kPi;
+  for (const Segment& seg : kTrack) {
+    if (u >= seg.length) {
+      heading += seg.angle;
+      u -= seg.length;
+      continue;
+    }
+    heading += seg.angle * (u / seg.length - std::sin(2 * kPi * u / seg.length) / (2 * kPi));
+    break;
+  }
+  return heading;
+}
+
+// x + [-e, e], outward rounded.
+Interval Around(double x, double e) { return Interval(x) + Interval(-e, e); }
+
+}  // namespace
+
+std::vector<CarTrackRecord> SimulateCarTrack(const CarTrackParams& p, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_real_distribution<double> fraction(0.0, 1.0);
+  // Bounded noise: at most 0.9 of each bound, so the truth stays strictly
+  // inside every measurement interval and rounding cannot push it out.
+  auto noise = [&](double bound) { return 0.9 * bound * unit(rng); };
+
+  const double theta0 = 0.999 * kPi * unit(rng);
+  const double speed_phase = kPi * unit(rng);
+  const double r_left = p.wheel_radius + noise(p.radius_error);
+  const double r_right = p.wheel_radius + noise(p.radius_error);
+  // Cumulative wheel rotation in ticks; the encoders read its floor.
+  double rot_left = fraction(rng), rot_right = fraction(rng);
+
+  std::vector<CarTrackRecord> records;
+  records.reserve(p.steps);
+  double x = 0, y = 0, th = theta0, s = 0;
+  for (int k = 0; k < p.steps; ++k) {
+    double gyro = 0;
+    if (k > 0) {
+      // The true motion (ds, dth) and the truth by eq. 12 exactly.
+      const double v = p.speed * (1 + 0.05 * std::sin(2 * kPi * k / (60 * p.rate) + speed_phase));
+      const double ds = v / p.rate;
+      const double dth = TrackHeading(s + ds) - TrackHeading(s);
+      s += ds;
+      const double heading = th + dth / 2;
+      x += ds * std::cos(heading);
+      y += ds * std::sin(heading);
+      th += dth;
+      // Each rear wheel travels ds -+ (track_width / 2) dth, so their mean is
+      // ds: eq. 13 holds exactly for the true radii and tick counts.
+      const double d_left = ds - p.track_width / 2 * dth;
+      const double d_right = ds + p.track_width / 2 * dth;
+      const double per_metre = p.ticks_per_rev / (2 * kPi);
+      rot_left += d_left * per_metre / r_left + noise(p.odo_slip);
+      rot_right += d_right * per_metre / r_right + noise(p.odo_slip);
+      gyro = dth + noise(p.gyro_error);
+    }
+    CarTrackRecord r;
+    r.t = k / p.rate;
+    r.odo_left_ticks = static_cast<std::int64_t>(std::floor(rot_left));
+    r.odo_right_ticks = static_cast<std::int64_t>(std::floor(rot_right));
+    r.gyro_dtheta = gyro;
+    r.has_gps = true;
+    r.gps_x = x + noise(p.gps_error);
+    r.gps_y = y + noise(p.gps_error);
+    r.gps_ex = r.gps_ey = p.gps_error;
+    r.has_truth = true;
+    r.truth_x = x;
+    r.truth_y = y;
+    r.truth_theta = th;
+    records.push_back(r);
+  }
+  return records;
+}
+
+std::vector<CarTrackMeasurement> MeasureCarTrack(const CarTrackParams& p,
+                                                 const std::vector<CarTrackRecord>& records) {
+  const Interval ticks_error = Interval(1) + Interval(p.odo_slip);  // eq. 9
+  const Interval radius = Around(p.wheel_radius, p.radius_error);   // [w_l], [w_r]
+  const Interval ticks_per_rev(p.ticks_per_rev);
+  std::vector<CarTrackMeasurement> out(records.size());
+  for (std::size_t k = 0; k < records.size(); ++k) {
+    const CarTrackRecord& r = records[k];
+    CarTrackMeasurement& m = out[k];
+    if (k > 0) {
+      const CarTrackRecord& prev = records[k - 1];
+      const Interval dp_left =
+          Around(static_cast<double>(r.odo_left_ticks - prev.odo_left_ticks), ticks_error.hi());
+      const Interval dp_right =
+          Around(static_cast<double>(r.odo_right_ticks - prev.odo_right_ticks), ticks_error.hi());
+      m.ds = Pi() * (radius * dp_left + radius * dp_right) / ticks_per_rev;  // eq. 13
+      m.dth = Around(r.gyro_dtheta, p.gyro_error);                           // eq. 10
+    }
+    const std::int64_t step = static_cast<std::int64_t>(k);
+    const bool in_outage = step >= p.outage_start &&
+                           step < static_cast<std::int64_t>(p.outage_start) + p.outage_length;
+    if (r.has_gps && step % p.gps_period == 0 && !in_outage) {  // eq. 11
+      m.x = Around(r.gps_x, r.gps_ex);
+      m.y = Around(r.gps_y, r.gps_ey);
+    }
+  }
+  return out;
+}
+
+CarTrackProblem::CarTrackProblem(const CarTrackParams& params, std::vector<CarTrackRecord> records)
+    : params_(params), records_(std::move(records)) {
+  measurements_ = MeasureCarTrack(params_, records_);
+  num_steps_ = static_cast<int>(std::min<std::size_t>(records_.size(), params_.steps));
+  heading0_ = Interval(-Pi().hi(), Pi().hi());
+  if (params_.heading_known) {
+    if (records_.empty() || !records_[0].has_truth)
+      throw ParamError("car-track.heading_known = true: the first row of the log has no truth");
+    heading0_ = Around(records_[0].truth_theta, kHeadingKnownError);
+  }
+}
+
+bool CarTrackProblem::Next(const Box* previous_result, Step* step) {
+  if (k_ >= num_steps_) return false;
+  const int k = k_;
+  const int oldest = std::max(0, k - params_.w);
+  bool carry = k > 0 && previous_result != nullptr && !previous_result->IsEmpty();
+  if (carry && static_cast<int>(previous_result->size()) != previous_size_)
+    throw std::invalid_argument("car-track step " + std::to_string(k) + ": previous_result has " +
+                                std::to_string(previous_result->size()) +
+                                " variables, the previous CSP " + std::to_string(previous_size_));
+
+  *step = Step();
+  step->index = k;
+  ConstraintSystem& csp = step->csp;
+  bool truth_known = true;
+  for (int j = oldest; j <= k; ++j) {
+    const CarTrackMeasurement& m = measurements_[j];
+    Interval x = m.x, y = m.y, th = j == 0 ? heading0_ : Interval();
+    if (carry && j < k) {
+      const int base = 3 * (j - previous_oldest_);
+      x = Intersect(x, (*previous_result)[base]);
+      y = Intersect(y, (*previous_result)[base + 1]);
+      th = Intersect(th, (*previous_result)[base + 2]);
+    }
+    const std::string index = "[" + std::to_string(j) + "]";
+    csp.AddVariable("x" + index, x);
+    csp.AddVariable("y" + index, y);
+    csp.AddVariable("th" + index, th);
+    const CarTrackRecord& r = records_[j];
+    truth_known = truth_known && r.has_truth;
+    step->truth.insert(step->truth.end(), {r.truth_x, r.truth_y, r.truth_theta});
+  }
+  if (!truth_known) step->truth.clear();
+  for (int j = oldest + 1; j <= k; ++j) {  // eq. 14
+    const int b = 3 * (j - 1 - oldest);
+    Expr xp = csp.Var(b), yp = csp.Var(b + 1), thp = csp.Var(b + 2);
+    Expr xj = csp.Var(b + 3), yj = csp.Var(b + 4), thj = csp.Var(b + 5);
+    Expr ds = csp.Constant(measurements_[j].ds);
+    Expr dth = csp.Constant(measurements_[j].dth);
+    Expr mid_heading = thp + dth / 2.0;
+    csp.AddConstraint(xj, Relation::kEq, xp + ds * Cos(mid_heading));
+    csp.AddConstraint(yj, Relation::kEq, yp + ds * Sin(mid_heading));
+    csp.AddConstraint(thj, Relation::kEq, thp + dth);
+  }
+  const int last = 3 * (k - oldest);
+  step->reported = {{"x", last}, {"y", last + 1}, {"theta", last + 2}};
+  step->x = 0;
+  step->y = 1;
+
+  previous_oldest_ = oldest;
+  previous_size_ = csp.num_variables();
+  ++k_;
+  return true;
+}
+
+// --- CSV log ----------------------------------------------------------------
+
+namespace {
+
+enum Column {
+  kT,
+  kOdoLeft,
+  kOdoRight,
+  kGyro,
+  kGpsX,
+  kGpsY,
+  kGpsEx,
+  kGpsEy,
+  kTruthX,
+  kTruthY,
+  kTruthTheta,
+  kNumColumns
+};
+constexpr const char* kColumnNames[kNumColumns] = {
+    "t",      "odo_left_ticks", "odo_right_ticks", "gyro_dtheta", "gps_x",      "gps_y",
+    "gps_ex", "gps_ey",         "truth_x",         "truth_y",     "truth_theta"};
+constexpr int kFirstOptional = kTruthX;
+
+std::string_view Trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
+    s.remove_suffix(1);
+  return s;
+}
+
+std::vector<std::string_view> SplitFields(std::string_view line) {
+  std::vector<std::string_view> fields;
+  while (true) {
+    const std::size_t comma = line.find(',');
+    fields.push_back(Trim(line.substr(0, comma)));
+    if (comma == std::string_view::npos) break;
+    line.remove_prefix(comma + 1);
+  }
+  return fields;
+}
+
+class LogReader {
+ public:
+  explicit LogReader(std::string source) : source_(std::move(source)) {}
+
+  std::vector<CarTrackRecord> Read(std::istream& in) {
+    std::string line;
+    std::vector<CarTrackRecord> records;
+    bool have_header = false;
+    while (std::getline(in, line)) {
+      ++line_number_;
+      const std::string_view text = Trim(line);
+      if (text.empty() || text.front() == '#') continue;
+      if (!have_header) {
+        ReadHeader(text);
+        have_header = true;
+        continue;
+      }
+      records.push_back(ReadRow(text));
+      if (records.size() > 1 && !(records.back().t > records[records.size() - 2].t))
+        Fail("column 't': " + FormatDouble(records.back().t) + " is not after the previous row's " +
+             FormatDouble(records[records.size() - 2].t));
+    }
+    if (!have_header) throw std::invalid_argument(source_ + ": no header line");
+    if (records.empty()) throw std::invalid_argument(source_ + ": no data rows");
+    UnwrapTruthHeading(records);
+    return records;
+  }
+
+ private:
+  [[noreturn]] void Fail(const std::string& what) const {
+    throw std::invalid_argument(source_ + ":" + std::to_string(line_number_) + ": " + what);
+  }
+
+  void ReadHeader(std::string_view text) {
+    position_.fill(-1);
+    names_.clear();
+    for (std::string_view name : SplitFields(text)) {
+      names_.emplace_back(name);
+      const int field = static_cast<int>(names_.size()) - 1;
+      const auto* it = std::find(std::begin(kColumnNames), std::end(kColumnNames), name);
+      if (it == std::end(kColumnNames)) {
+        std::string known;
+        for (const char* n : kColumnNames) known += (known.empty() ? "" : ", ") + std::string(n);
+        Fail("header column " + std::to_string(field + 1) + ": unknown column '" +
+             std::string(name) + "' (known: " + known + ")");
+      }
+      const int column = static_cast<int>(it - std::begin(kColumnNames));
+      if (position_[column] >= 0) Fail("header: column '" + std::string(name) + "' repeated");
+      position_[column] = field;
+    }
+    for (int c = 0; c < kFirstOptional; ++c)
+      if (position_[c] < 0) Fail("header lacks column '" + std::string(kColumnNames[c]) + "'");
+    const int truth_columns =
+        (position_[kTruthX] >= 0) + (position_[kTruthY] >= 0) + (position_[kTruthTheta] >= 0);
+    if (truth_columns != 0 && truth_columns != 3)
+      Fail("header: truth_x, truth_y and truth_theta go together");
+  }
+
+  std::string Where(int column) const {
+    return "column " + std::to_string(position_[column] + 1) + " (" + kColumnNames[column] + ")";
+  }
+
+  std::string_view Field(int column) const {
+    return position_[column] < 0 ? std::string_view() : fields_[position_[column]];
+  }
+
+  double Double(int column) const {
+    const std::string_view f = Field(column);
+    double v = 0;
+    const auto [end, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
+    if (f.empty() || ec != std::errc() || end != f.data() + f.size() || !std::isfinite(v))
+      Fail(Where(column) + ": '" + std::string(f) + "' is not a finite number");
+    return v;
+  }
+
+  std::int64_t Integer(int column) const {
+    const std::string_view f = Field(column);
+    std::int64_t v = 0;
+    const auto [end, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
+    if (f.empty() || ec != std::errc() || end != f.data() + f.size())
+      Fail(Where(column) + ": '" + std::string(f) + "' is not an integer");
+    return v;
+  }
+
+  // True when every field of the group is given, false when all are empty.
+  bool Group(std::initializer_list<int> columns, const char* what) const {
+    int given = 0;
+    for (int c : columns) given += !Field(c).empty();
+    if (given != 0 && given != static_cast<int>(columns.size()))
+      Fail(std::string(what) + " columns must be all given or all empty");
+    return given != 0;
+  }
+
+  CarTrackRecord ReadRow(std::string_view text) {
+    fields_ = SplitFields(text);
+    if (fields_.size() != names_.size())
+      Fail(std::to_string(fields_.size()) + " fields, the header has " +
+           std::to_string(names_.size()));
+    CarTrackRecord r;
+    r.t = Double(kT);
+    r.odo_left_ticks = Integer(kOdoLeft);
+    r.odo_right_ticks = Integer(kOdoRight);
+    r.gyro_dtheta = Double(kGyro);
+    r.has_gps = Group({kGpsX, kGpsY, kGpsEx, kGpsEy}, "gps_x, gps_y, gps_ex, gps_ey");
+    if (r.has_gps) {
+      r.gps_x = Double(kGpsX);
+      r.gps_y = Double(kGpsY);
+      r.gps_ex = Double(kGpsEx);
+      r.gps_ey = Double(kGpsEy);
+      if (!(r.gps_ex > 0)) Fail(Where(kGpsEx) + ": " + FormatDouble(r.gps_ex) + " must be > 0");
+      if (!(r.gps_ey > 0)) Fail(Where(kGpsEy) + ": " + FormatDouble(r.gps_ey) + " must be > 0");
+    }
+    r.has_truth = position_[kTruthX] >= 0 &&
+                  Group({kTruthX, kTruthY, kTruthTheta}, "truth_x, truth_y, truth_theta");
+    if (r.has_truth) {
+      r.truth_x = Double(kTruthX);
+      r.truth_y = Double(kTruthY);
+      r.truth_theta = Double(kTruthTheta);
+    }
+    return r;
+  }
+
+  // The CSP carries the unwrapped heading from th[0] in [-pi, pi].
+  static void UnwrapTruthHeading(std::vector<CarTrackRecord>& records) {
+    const double two_pi = 2 * kPi;
+    bool first = true;
+    double previous = 0;
+    for (CarTrackRecord& r : records) {
+      if (!r.has_truth) continue;
+      const double turns = first ? std::ceil((r.truth_theta - kPi) / two_pi)
+                                 : std::round((r.truth_theta - previous) / two_pi);
+      if (turns != 0) r.truth_theta -= turns * two_pi;
+      previous = r.truth_theta;
+      first = false;
+    }
+  }
+
+  std::string source_;
+  int line_number_ = 0;
+  std::array<int, kNumColumns> position_{};
+  std::vector<std::string> names_;
+  std::vector<std::string_view> fields_;
+};
+
+}  // namespace
+
+std::vector<CarTrackRecord> ReadCarTrackLog(std::istream& in, const std::string& source) {
+  return LogReader(source).Read(in);
+}
+
+std::vector<CarTrackRecord> ReadCarTrackLog(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::invalid_argument(path + ": cannot open the car-track log");
+  return ReadCarTrackLog(in, path);
+}
+
+void WriteCarTrackLog(const std::vector<CarTrackRecord>& records, std::ostream& out,
+                      const std::string& comment) {
+  std::istringstream lines(comment);
+  for (std::string line; std::getline(lines, line);) out << "# " << line << "\n";
+  for (int c = 0; c < kNumColumns; ++c) out << (c ? "," : "") << kColumnNames[c];
+  out << "\n";
+  for (const CarTrackRecord& r : records) {
+    out << FormatDouble(r.t) << "," << r.odo_left_ticks << "," << r.odo_right_ticks << ","
+        << FormatDouble(r.gyro_dtheta);
+    if (r.has_gps) {
+      out << "," << FormatDouble(r.gps_x) << "," << FormatDouble(r.gps_y) << ","
+          << FormatDouble(r.gps_ex) << "," << FormatDouble(r.gps_ey);
+    } else {
+      out << ",,,,";
+    }
+    if (r.has_truth) {
+      out << "," << FormatDouble(r.truth_x) << "," << FormatDouble(r.truth_y) << ","
+          << FormatDouble(r.truth_theta);
+    } else {
+      out << ",,,";
+    }
+    out << "\n";
+  }
+}
+
+void ValidateCarTrack(const std::string& owner, const ParamMap& values) {
+  CarTrackParams p = ParseParams<CarTrackParams>(owner, values);
+  Validate(p, owner);
+  if (!p.log.empty()) {
+    const CarTrackProblem checked(p, ReadCarTrackLog(p.log));  // heading_known needs a truth
+    static_cast<void>(checked);
+  }
+}
+
+std::unique_ptr<Problem> MakeCarTrack(const ParamMap& params, std::uint64_t seed) {
+  CarTrackParams p = ParseParams<CarTrackParams>("car-track", params);
+  Validate(p);
+  std::vector<CarTrackRecord> records =
+      p.log.empty() ? SimulateCarTrack(p, seed) : ReadCarTrackLog(p.log);
+  return std::make_unique<CarTrackProblem>(p, std::move(records));
+}
+
+}  // namespace icp
