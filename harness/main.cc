@@ -12,10 +12,12 @@
 #include <thread>
 
 #include "harness/list_command.h"
+#include "harness/report.h"
 #include "harness/results_store.h"
 #include "harness/runner.h"
 #include "harness/solve_command.h"
 #include "harness/spec.h"
+#include "plots/figures.h"
 
 namespace {
 constexpr int kUsageError = 2;
@@ -63,6 +65,18 @@ int main(int argc, char** argv) {
   merge_cmd->add_option("OUT", merge_out, "output directory")->required();
   merge_cmd->add_option("IN", merge_in, "input directories")->required();
 
+  std::string report_dir;
+  std::string report_format = "md";
+  CLI::App* report_cmd = app.add_subcommand("report", "timing and accuracy tables of a results store");
+  report_cmd->add_option("DIR", report_dir, "output directory of `icpbench run`")->required();
+  report_cmd->add_option("--format,-f", report_format, "md, tex or csv")->capture_default_str();
+
+  std::string plot_dir;
+  std::string plot_out;
+  CLI::App* plot_cmd = app.add_subcommand("plot", "figures (PNG and PDF) of a results store");
+  plot_cmd->add_option("DIR", plot_dir, "output directory of `icpbench run`")->required();
+  plot_cmd->add_option("--out,-o", plot_out, "where to write the figures (default DIR/figures)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -94,6 +108,14 @@ int main(int argc, char** argv) {
       std::cerr << "icpbench: " << s.planned << " planned, " << s.already_stored
                 << " already stored, " << s.ok << " ok, " << s.failed << " failed, "
                 << s.timed_out << " timed out, " << s.skipped << " skipped\n";
+    } else if (*report_cmd) {
+      std::cout << icp::ReportDirectory(report_dir, report_format);
+    } else if (*plot_cmd) {
+      if (plot_out.empty()) plot_out = plot_dir + "/figures";
+      std::vector<std::string> messages;
+      for (const std::string& file : icp::PlotDirectory(plot_dir, plot_out, &messages))
+        std::cout << file << "\n";
+      for (const std::string& m : messages) std::cerr << "icpbench: " << m << "\n";
     } else if (*merge_cmd) {
       std::filesystem::create_directories(merge_out);
       icp::ResultsStore out(icp::StorePath(merge_out));

@@ -19,9 +19,14 @@
 // weighted mean square for the RMSE); median, p90 and the interval of the
 // mean then cannot be pooled and are shown only for a single run.
 //
+// Parameters show as "k=v,k2=v2" ("default" in md/tex, an empty field in CSV
+// when none were given). Numbers have about 4 significant digits
+// (FormatNumber), a missing one (NaN) shows as "—". Times are µs per CSP in
+// table 1, ms in tables 2 and 3 (the paper's unit).
+//
 // CSV holds table 1 only, one header row then one row per group, RFC 4180
-// quoting, full numbers (6 significant digits), NaN as an empty field; tables
-// 2 and 3 follow from its columns.
+// quoting, 6 significant digits, NaN as an empty field; tables 2 and 3
+// follow from its columns.
 #ifndef ICPBENCH_HARNESS_REPORT_H_
 #define ICPBENCH_HARNESS_REPORT_H_
 
@@ -86,9 +91,14 @@ double CarTrackWindow(const RunSpec& spec);
 // problem parameters are not constrained.
 bool IsPaperSetting(const RunSpec& spec);
 
+// True when the problem params set nothing but w and steps: the paper's
+// scenario (the simulated lap, possibly shortened), not a variant such as a
+// GPS outage.
+bool IsPaperScenario(const ParamMap& problem_params);
+
 // The group that paper 000 Table 1 compares for algorithm: among the groups
-// in the paper setting, the one with the most CSPs in ok runs; nullptr when
-// none has an ok run.
+// in the paper setting with ok runs, those in the paper scenario first, then
+// the one with the most CSPs in ok runs; nullptr when none.
 const GroupSummary* FindPaperGroup(const std::vector<GroupSummary>& groups,
                                    const std::string& algorithm);
 
@@ -110,6 +120,7 @@ struct WindowPoint {
   int steps = 0;
   double mean_area = 0;    // m^2
   double mean_time_s = 0;  // per CSP
+  bool paper_scenario = false;  // IsPaperScenario of the problem params
 };
 // The points of every configuration with ok runs at two or more w, ordered by
 // algorithm (paper order), label and w.

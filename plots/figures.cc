@@ -231,7 +231,11 @@ std::string RunLabel(const RunRecord& r) {
 
 void PlotWindowFigure(const std::vector<RunRecord>& runs, const std::string& out_dir,
                       PlotOutput* out) {
-  const std::vector<WindowPoint> points = WindowSweep(runs);
+  // The paper's scenario when it was swept, else every sweep.
+  std::vector<WindowPoint> points = WindowSweep(runs);
+  if (std::any_of(points.begin(), points.end(), [](const auto& p) { return p.paper_scenario; })) {
+    std::erase_if(points, [](const WindowPoint& p) { return !p.paper_scenario; });
+  }
   if (points.empty()) {
     out->messages.push_back(
         "fig2_window: skipped: no car-track configuration with ok runs at two or more w");
@@ -270,41 +274,62 @@ void PlotWindowFigure(const std::vector<RunRecord>& runs, const std::string& out
 void PlotCorridorFigure(const std::vector<RunRecord>& runs, const std::string& out_dir,
                         PlotOutput* out) {
   const std::vector<GroupSummary> groups = SummariseGroups(runs);
-  Figure f;
-  f.name = "fig3_corridors";
-  f.title = "Interval error [lo - truth, hi - truth] over the lap (car-track, w = 20)";
-  f.width_in = 10;
-  f.cols = 2;
+  const char* const kVars[2] = {"x", "y"};
+  // Corridors of every shown run first: each column shares its y range so
+  // the algorithms compare at a glance.
+  std::vector<const RunRecord*> shown;
+  std::vector<std::vector<std::vector<double>>> corridors[2];
+  std::vector<std::vector<double>> all[2];
   for (const RunRecord* r : PaperRuns(groups)) {
-    Panel row[2];
-    bool any = false;
-    const char* vars[2] = {"x", "y"};
+    std::vector<std::vector<double>> rows[2] = {CorridorRows(*r, kVars[0]),
+                                                CorridorRows(*r, kVars[1])};
+    const Series probe[2] = {{"", rows[0], ""}, {"", rows[1], ""}};
+    if (!HasPoint(probe[0]) && !HasPoint(probe[1])) continue;
+    shown.push_back(r);
     for (int k = 0; k < 2; ++k) {
-      std::vector<std::vector<double>> rows = CorridorRows(*r, vars[k]);
-      const std::string colour = Quote(Colour(r->spec.algorithm));
-      row[k].setup = "set title " + Quote(RunLabel(*r) + ": " + vars[k]) +
-                     " noenhanced\nset xlabel 'step'\nset ylabel 'error in " + vars[k] +
-                     " (m)'\nset key top right\n" + CorridorRange(rows);
-      row[k].series = {
-          {"using 1:2:3 with filledcurves fc rgb " + colour + " fs transparent solid 0.25 notitle",
-           rows, ""},
-          {"using 1:2 with lines lw 1.2 lc rgb " + colour + " title 'lo - truth'", rows, ""},
-          {"using 1:3 with lines lw 1.2 dt 2 lc rgb " + colour + " title 'hi - truth'", rows, ""},
-          {"with lines lw 1 lc rgb 'black' title 'zero'", {}, "0"}};
-      any = any || HasPoint(row[k].series[0]);
+      all[k].insert(all[k].end(), rows[k].begin(), rows[k].end());
+      corridors[k].push_back(std::move(rows[k]));
     }
-    if (!any) continue;
-    f.panels.push_back(row[0]);
-    f.panels.push_back(row[1]);
   }
-  if (f.panels.empty()) {
+  if (shown.empty()) {
     out->messages.push_back(
         "fig3_corridors: skipped: no ok car-track run at w = 20 with default parameters, "
         "steps and truth");
     return;
   }
-  f.rows = static_cast<int>(f.panels.size()) / 2;
-  f.height_in = 0.6 + 2.3 * f.rows;
+  // One step axis for all, so a shorter run shows as shorter.
+  double last_step = 0;
+  for (const RunRecord* r : shown) {
+    for (const StepRecord& st : r->steps) last_step = std::max(last_step, static_cast<double>(st.step));
+  }
+  const std::string x_range = "set xrange [0:" + std::to_string(std::max(1.0, last_step)) + "]\n";
+  Figure f;
+  f.name = "fig3_corridors";
+  f.title =
+      "Interval error over the lap (car-track, w = 20): solid lo - truth, dashed hi - truth";
+  f.width_in = 10;
+  f.cols = 2;
+  f.rows = static_cast<int>(shown.size());
+  f.height_in = 0.6 + 2.2 * f.rows;
+  for (std::size_t i = 0; i < shown.size(); ++i) {
+    const RunRecord& r = *shown[i];
+    const std::string colour = Quote(Colour(r.spec.algorithm));
+    for (int k = 0; k < 2; ++k) {
+      Panel p;
+      p.setup = "set title " + Quote(RunLabel(r) + ": " + kVars[k]) + " noenhanced\n" +
+                "set ylabel 'error in " + kVars[k] + " (m)'\n" + CorridorRange(all[k]) +
+                (i + 1 == shown.size() ? "set xlabel 'step'\n" : "") +
+                "unset key\n" + x_range;
+      const auto& rows = corridors[k][i];
+      p.series = {
+          {"using 1:2:3 with filledcurves fc rgb " + colour + " fs transparent solid 0.25 notitle",
+           rows, ""},
+          {"using 1:2 with lines lw 1.2 lc rgb " + colour + " notitle", rows, ""},
+          {"using 1:3 with lines lw 1.2 dt 2 lc rgb " + colour + " notitle", rows, ""},
+          {"with lines lw 1 lc rgb 'black' notitle", {}, "0"}};
+      f.panels.push_back(std::move(p));
+    }
+  }
   Render(f, out_dir, out);
 }
 
@@ -385,7 +410,7 @@ void PlotTimingFigure(const std::vector<RunRecord>& runs, const std::string& out
     return;
   }
   panel.setup = "set title " + Quote("Solve time per CSP (" + setting + ")") +
-                " noenhanced\nset ylabel 'time per CSP (µs)'\nset logscale y\n"
+                " noenhanced\nset ylabel 'time per CSP (µs)'\nset logscale y\nset format y '10^{%L}'\n"
                 "set style boxplot outliers pointtype 7\nset pointsize 0.3\nset boxwidth 0.5\n"
                 "set xtics (" + xtics + ") noenhanced\nset xrange [0.4:" +
                 std::to_string(panel.series.size() + 0.6) + "]\nset grid noxtics\n";

@@ -4,7 +4,9 @@
 //
 //   fig2_window     paper 000 Fig. 2: mean x-y area and mean time per CSP
 //                   against the window w, one line per car-track
-//                   configuration run at two or more w (WindowSweep)
+//                   configuration run at two or more w (WindowSweep); only
+//                   the paper-scenario ones (IsPaperScenario) when there are
+//                   any, so variants such as GPS outages stay in the table
 //   fig3_corridors  paper 000 Fig. 3: interval error corridors
 //                   [lo - truth, hi - truth] of x and y over the steps, one
 //                   row of panels per algorithm

@@ -1,14 +1,19 @@
 #!/usr/bin/env bash
-# The main job of the README: installs what is missing, builds, then lists
-# the registered algorithms and solves the shipped examples with each one.
+# The main job of the README: installs what is missing, builds, runs the
+# default benchmark suite (specs/default.yaml) into results/default, then
+# writes its tables (Markdown, LaTeX, CSV) and figures (PNG, PDF).
+# Rerunning resumes: runs already stored are skipped.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/deps.sh
 bash scripts/build.sh
-./build/icpbench list algorithms
-for file in examples/*.bch; do
-  for algorithm in $(./build/icpbench list algorithms | grep -v '^ ' | grep -v 'test plugin'); do
-    echo "== $file with $algorithm"
-    ./build/icpbench solve "$file" --algorithm "$algorithm"
-  done
-done
+out=${ICPBENCH_OUT:-results/default}
+./build/icpbench run specs/default.yaml --out "$out" --jobs "${ICPBENCH_JOBS:-$(nproc)}"
+./build/icpbench report "$out" --format md > "$out/report.md"
+./build/icpbench report "$out" --format tex > "$out/report.tex"
+./build/icpbench report "$out" --format csv > "$out/report.csv"
+./build/icpbench plot "$out" --out "$out/figures" > /dev/null
+echo
+echo "results store: $out/results.sqlite"
+echo "tables:        $out/report.md, $out/report.tex, $out/report.csv"
+echo "figures:       $out/figures/ ($(ls "$out/figures" | tr '\n' ' '))"
