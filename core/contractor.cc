@@ -44,23 +44,24 @@ bool ShrankByMoreThan(const Interval& before, const Interval& after, double rati
   return wb - wa > ratio * wb;
 }
 
+namespace {
+// Adds a part's summary to the total; true when the part ended the
+// contraction (empty box or stop), with the total's status set.
+bool Absorb(const ContractSummary& part, Box& box, ContractSummary& total) {
+  total.work += part.work;
+  if (part.status == ContractStatus::kEmpty) box.SetEmpty();
+  if (part.status != ContractStatus::kEmpty && part.status != ContractStatus::kStopped) return false;
+  total.status = part.status;
+  total.message = part.message;
+  return true;
+}
+}  // namespace
+
 ContractSummary SequenceContractor::Contract(Box& box, const StopCondition& stop) {
   const Box before = box;
   ContractSummary summary;
-  for (auto& part : parts_) {
-    ContractSummary s = part->Contract(box, stop);
-    summary.work += s.work;
-    if (s.status == ContractStatus::kEmpty) {
-      box.SetEmpty();
-      summary.status = ContractStatus::kEmpty;
-      return summary;
-    }
-    if (s.status == ContractStatus::kStopped) {
-      summary.status = ContractStatus::kStopped;
-      summary.message = s.message;
-      return summary;
-    }
-  }
+  for (auto& part : parts_)
+    if (Absorb(part->Contract(box, stop), box, summary)) return summary;
   summary.status = StatusOf(before, box);
   return summary;
 }
@@ -70,18 +71,7 @@ ContractSummary FixpointContractor::Contract(Box& box, const StopCondition& stop
   ContractSummary summary;
   for (int it = 0; it < max_iterations_; ++it) {
     const Box before = box;
-    ContractSummary s = inner_->Contract(box, stop);
-    summary.work += s.work;
-    if (s.status == ContractStatus::kEmpty) {
-      box.SetEmpty();
-      summary.status = ContractStatus::kEmpty;
-      return summary;
-    }
-    if (s.status == ContractStatus::kStopped) {
-      summary.status = ContractStatus::kStopped;
-      summary.message = s.message;
-      return summary;
-    }
+    if (Absorb(inner_->Contract(box, stop), box, summary)) return summary;
     bool shrank = false;
     for (std::size_t i = 0; i < box.size() && !shrank; ++i)
       shrank = ShrankByMoreThan(before[i], box[i], ratio_);

@@ -196,17 +196,11 @@ void BwdMin(const Interval& z, Interval& x, Interval& y) {
 }
 
 void BwdMax(const Interval& z, Interval& x, Interval& y) {
-  Interval at_most = Interval(-kInf, z.hi());
-  x = Intersect(x, at_most);
-  y = Intersect(y, at_most);
-  if (z.IsEmpty()) x = y = Interval::Empty();
-  if (x.IsEmpty() || y.IsEmpty()) {
-    x = y = Interval::Empty();
-    return;
-  }
-  if (Intersect(y, z).IsEmpty()) x = Intersect(x, z);
-  if (Intersect(x, z).IsEmpty()) y = Intersect(y, z);
-  if (x.IsEmpty() || y.IsEmpty()) x = y = Interval::Empty();
+  // max(x, y) = -min(-x, -y).
+  Interval nx = -x, ny = -y;
+  BwdMin(-z, nx, ny);
+  x = -nx;
+  y = -ny;
 }
 
 }  // namespace icp

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "algorithms/registry.h"
+#include "tests/test_names.h"
 #include "harness/runner.h"
 
 namespace icp {
@@ -36,12 +37,7 @@ std::vector<std::string> IcpAlgorithms() {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllAlgorithms, LapTest, ::testing::ValuesIn(IcpAlgorithms()),
-                         [](const auto& info) {
-                           std::string n = info.param;
-                           for (char& c : n)
-                             if (!isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return n;
-                         });
+                         testing::RegistryName());
 
 }  // namespace
 }  // namespace icp

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "algorithms/registry.h"
+#include "tests/test_names.h"
 #include "tests/random_csp.h"
 
 namespace icp {
@@ -36,12 +37,7 @@ std::vector<std::string> AlgorithmNames() {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllAlgorithms, SoundnessTest, ::testing::ValuesIn(AlgorithmNames()),
-                         [](const auto& info) {
-                           std::string n = info.param;
-                           for (char& c : n)
-                             if (!isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return n;
-                         });
+                         testing::RegistryName());
 
 }  // namespace
 }  // namespace icp

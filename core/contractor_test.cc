@@ -1,0 +1,97 @@
+#include "core/contractor.h"
+
+#include <gtest/gtest.h>
+
+#include <thread>
+
+namespace icp {
+namespace {
+
+// Halves the upper bound of component i each call (a slowly converging
+// contractor, as propagation on x = y / 2 is).
+class HalveUpper : public Contractor {
+ public:
+  explicit HalveUpper(std::size_t i) : i_(i) {}
+  std::string_view Name() const override { return "halve"; }
+  ContractSummary Contract(Box& box, const StopCondition&) override {
+    ContractSummary s;
+    s.work.revise_calls = 1;
+    box[i_] = Interval(box[i_].lo(), box[i_].lo() + box[i_].Width() / 2);
+    s.status = ContractStatus::kContracted;
+    return s;
+  }
+
+ private:
+  std::size_t i_;
+};
+
+class MakeEmpty : public Contractor {
+ public:
+  std::string_view Name() const override { return "empty"; }
+  ContractSummary Contract(Box& box, const StopCondition&) override {
+    box.SetEmpty();
+    return {ContractStatus::kEmpty, "", {}};
+  }
+};
+
+TEST(ContractorTest, SequenceAppliesEachPartOnceAndAddsTheirWork) {
+  std::vector<std::unique_ptr<Contractor>> parts;
+  parts.push_back(std::make_unique<HalveUpper>(0));
+  parts.push_back(std::make_unique<HalveUpper>(1));
+  SequenceContractor seq(std::move(parts));
+  Box box{{0, 8}, {0, 4}};
+  ContractSummary s = seq.Contract(box, StopCondition());
+  EXPECT_EQ(s.status, ContractStatus::kContracted);
+  EXPECT_EQ(s.work.revise_calls, 2);
+  EXPECT_EQ(box[0], Interval(0, 4));
+  EXPECT_EQ(box[1], Interval(0, 2));
+}
+
+TEST(ContractorTest, SequenceStopsAtAnEmptyBox) {
+  std::vector<std::unique_ptr<Contractor>> parts;
+  parts.push_back(std::make_unique<MakeEmpty>());
+  parts.push_back(std::make_unique<HalveUpper>(0));
+  SequenceContractor seq(std::move(parts));
+  Box box{{0, 8}};
+  EXPECT_EQ(seq.Contract(box, StopCondition()).status, ContractStatus::kEmpty);
+  EXPECT_TRUE(box.IsEmpty());
+}
+
+TEST(ContractorTest, FixpointRepeatsUntilTheRatio) {
+  // Each call removes half of the width. With ratio 0.6 that is not enough
+  // to go on, so one call; with ratio 0.4 it goes on to the iteration bound.
+  Box a{{0, 1}};
+  FixpointContractor loose(std::make_unique<HalveUpper>(0), 0.6, 100);
+  ContractSummary s = loose.Contract(a, StopCondition());
+  EXPECT_EQ(s.work.revise_calls, 1);
+  Box b{{0, 1}};
+  FixpointContractor tight(std::make_unique<HalveUpper>(0), 0.4, 10);
+  s = tight.Contract(b, StopCondition());
+  EXPECT_EQ(s.work.revise_calls, 10);
+  EXPECT_EQ(b[0], Interval(0, 1.0 / 1024));
+  EXPECT_EQ(s.status, ContractStatus::kContracted);
+}
+
+TEST(ContractorTest, StopConditionHonoursDeadlineAndCancelFlag) {
+  EXPECT_FALSE(StopCondition().ShouldStop());
+  StopCondition soon = StopCondition::After(std::chrono::milliseconds(1));
+  std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  EXPECT_TRUE(soon.ShouldStop());
+  std::atomic<bool> cancel{false};
+  StopCondition flag;
+  flag.WithCancelFlag(&cancel);
+  EXPECT_FALSE(flag.ShouldStop());
+  cancel = true;
+  EXPECT_TRUE(flag.ShouldStop());
+}
+
+TEST(ContractorTest, ShrankByMoreThanUsesRelativeWidth) {
+  EXPECT_TRUE(ShrankByMoreThan(Interval(0, 1), Interval(0, 0.5), 0.1));
+  EXPECT_FALSE(ShrankByMoreThan(Interval(0, 1), Interval(0, 0.95), 0.1));
+  EXPECT_TRUE(ShrankByMoreThan(Interval(), Interval(0, 1e300), 0.1));  // became bounded
+  EXPECT_FALSE(ShrankByMoreThan(Interval(), Interval(0, kInf), 0.1));
+  EXPECT_TRUE(ShrankByMoreThan(Interval(0, 1), Interval::Empty(), 0.1));
+}
+
+}  // namespace
+}  // namespace icp
