@@ -42,6 +42,9 @@ void Describe(CarTrackParams& p, ParamSet& set) {
   set.Add("heading_known", &p.heading_known,
           "th[0] is the true heading ± 0.1 rad (else [-pi, pi])");
   set.Add("log", &p.log, "CSV log replacing the simulator (empty: simulate)");
+  set.Add("carry", &p.carry,
+          "window states starting from the previous result: the first (paper) or all",
+          {"first", "all"});
 }
 
 void Validate(const CarTrackParams& p, const std::string& owner) {
@@ -217,7 +220,7 @@ bool CarTrackProblem::Next(const Box* previous_result, Step* step) {
   for (int j = oldest; j <= k; ++j) {
     const CarTrackMeasurement& m = measurements_[j];
     Interval x = m.x, y = m.y, th = j == 0 ? heading0_ : Interval();
-    if (carry && j < k) {
+    if (carry && j < k && (j == oldest || params_.carry == "all")) {
       const int base = 3 * (j - previous_oldest_);
       x = Intersect(x, (*previous_result)[base]);
       y = Intersect(y, (*previous_result)[base + 1]);

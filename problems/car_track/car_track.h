@@ -82,6 +82,11 @@ struct CarTrackParams {
   // Path of a CSV log (ReadCarTrackLog) that replaces the simulator; empty
   // to simulate.
   std::string log;
+  // Which states of the window start from the previous step's contracted box:
+  // "first" (paper 000 §4.3: the window's first state; the others start from
+  // their measurements, so a longer window carries more GPS fixes) or "all"
+  // (every state the windows share: a filter that forgets nothing).
+  std::string carry = "first";
 };
 void Describe(CarTrackParams& p, ParamSet& set);
 // Checks every range and what ranges alone cannot (radius_error below
