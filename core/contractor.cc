@@ -36,14 +36,6 @@ ContractStatus StatusOf(const Box& before, const Box& after) {
   return before == after ? ContractStatus::kFixpoint : ContractStatus::kContracted;
 }
 
-bool ShrankByMoreThan(const Interval& before, const Interval& after, double ratio) {
-  if (after.IsEmpty()) return !before.IsEmpty();
-  const double wb = before.Width();
-  const double wa = after.Width();
-  if (wb == kInf) return wa < kInf;
-  return wb - wa > ratio * wb;
-}
-
 namespace {
 // Adds a part's summary to the total; true when the part ended the
 // contraction (empty box or stop), with the total's status set.

@@ -69,7 +69,13 @@ ContractStatus StatusOf(const Box& before, const Box& after);
 
 // True when some component of after is narrower than in before by more than
 // ratio times its width (or became bounded).
-bool ShrankByMoreThan(const Interval& before, const Interval& after, double ratio);
+inline bool ShrankByMoreThan(const Interval& before, const Interval& after, double ratio) {
+  if (after.IsEmpty()) return !before.IsEmpty();
+  const double wb = before.Width();
+  const double wa = after.Width();
+  if (wb == kInf) return wa < kInf;
+  return wb - wa > ratio * wb;
+}
 
 // Applies each contractor once, in order; stops early on an empty box.
 class SequenceContractor : public Contractor {

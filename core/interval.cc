@@ -106,10 +106,28 @@ double RootUp(double v, int n) {
 constexpr double kTrigFar = 0x1p50;
 constexpr double kHalfPiApprox = std::numbers::pi / 2;  // only to count multiples
 
-// Whether x may contain m * pi / 2 (m an integer).
+// Every integer m with m * pi / 2 in x lies in [*first, *last] (x bounded,
+// |x| < kTrigFar). The quotient x / kHalfPiApprox is within 2.5e-16 of the
+// exact x / (pi / 2) in relative terms (one rounding of pi / 2, one of the
+// division; no overflow below kTrigFar and an absolute error under 1e-300
+// if it underflows), so a margin of 1e-15 relative, which also covers the
+// rounding of the subtraction, is safe. Below 2^51 the integers are exact
+// in an int64.
+void HalfPiMultiplesIn(const Interval& x, std::int64_t* first, std::int64_t* last) {
+  const double q_lo = x.lo() / kHalfPiApprox;
+  const double q_hi = x.hi() / kHalfPiApprox;
+  *first = static_cast<std::int64_t>(std::floor(q_lo - (1e-15 * std::fabs(q_lo) + 1e-300)));
+  *last = static_cast<std::int64_t>(std::ceil(q_hi + (1e-15 * std::fabs(q_hi) + 1e-300)));
+}
+
+// Whether x may contain m * pi / 2 (m an integer): the enclosure of
+// m * pi / 2 that Interval(m) * HalfPi() gives, computed on the bounds.
 bool MayContainHalfPiMultiple(const Interval& x, double m) {
-  Interval t = Interval(m) * HalfPi();
-  return t.hi() >= x.lo() && t.lo() <= x.hi();
+  ExactRounding rnd;
+  const Interval& half_pi = HalfPi();
+  const double t_lo = rnd.mul_down(m, m >= 0 ? half_pi.lo() : half_pi.hi());
+  const double t_hi = rnd.mul_up(m, m >= 0 ? half_pi.hi() : half_pi.lo());
+  return t_hi >= x.lo() && t_lo <= x.hi();
 }
 
 // sin (shift 1) or cos (shift 0): the extrema are at m * pi / 2 with m of the
@@ -118,17 +136,26 @@ Interval SinCos(const Interval& x, int shift) {
   if (x.IsEmpty()) return x;
   if (!x.IsBounded()) return Interval(-1, 1);
   ExactRounding rnd;
-  auto down = [&](double t) { return shift ? rnd.sin_down(t) : rnd.cos_down(t); };
-  auto up = [&](double t) { return shift ? rnd.sin_up(t) : rnd.cos_up(t); };
-  if (x.IsPoint()) return Interval(down(x.lo()), up(x.lo()));
+  auto both = [&](double t, double* down, double* up) {
+    if (shift) {
+      rnd.sin_both(t, down, up);
+    } else {
+      rnd.cos_both(t, down, up);
+    }
+  };
+  double lo_down, lo_up;
+  both(x.lo(), &lo_down, &lo_up);
+  if (x.IsPoint()) return Interval(lo_down, lo_up);
   if (x.Width() >= TwoPi().lo() || x.Mag() >= kTrigFar) return Interval(-1, 1);
-  double lo = std::fmin(down(x.lo()), down(x.hi()));
-  double hi = std::fmax(up(x.lo()), up(x.hi()));
-  // The quotients are within 1 of the exact ones below kTrigFar.
-  for (double m = std::floor(x.lo() / kHalfPiApprox) - 2;
-       m <= std::ceil(x.hi() / kHalfPiApprox) + 2; ++m) {
-    if (std::fabs(std::fmod(m, 2)) != shift || !MayContainHalfPiMultiple(x, m)) continue;
-    if (std::fmod((m - shift) / 2, 2) == 0) {
+  double hi_down, hi_up;
+  both(x.hi(), &hi_down, &hi_up);
+  double lo = lo_down < hi_down ? lo_down : hi_down;
+  double hi = lo_up < hi_up ? hi_up : lo_up;
+  std::int64_t first, last;
+  HalfPiMultiplesIn(x, &first, &last);
+  for (std::int64_t m = first + ((first - shift) & 1); m <= last; m += 2) {
+    if (!MayContainHalfPiMultiple(x, static_cast<double>(m))) continue;
+    if ((((m - shift) / 2) & 1) == 0) {
       hi = 1;
     } else {
       lo = -1;
@@ -137,11 +164,6 @@ Interval SinCos(const Interval& x, int shift) {
   return Interval(lo, hi);
 }
 }  // namespace
-
-double Interval::Width() const {
-  if (IsEmpty()) return 0;
-  return ExactRounding().sub_up(hi(), lo());
-}
 
 double Interval::Mid() const {
   if (IsEmpty()) return 0;
@@ -152,21 +174,6 @@ double Interval::Mid() const {
   return std::fmin(std::fmax(m, lo()), hi());
 }
 
-double Interval::Mag() const {
-  if (IsEmpty()) return 0;
-  return std::fmax(std::fabs(lo()), std::fabs(hi()));
-}
-
-Interval operator+(const Interval& x, const Interval& y) { return Wrap(x.boost() + y.boost()); }
-Interval operator-(const Interval& x, const Interval& y) { return Wrap(x.boost() - y.boost()); }
-Interval operator*(const Interval& x, const Interval& y) { return Wrap(x.boost() * y.boost()); }
-Interval operator/(const Interval& x, const Interval& y) {
-  if (x.IsEmpty() || y.IsEmpty() || (y.lo() == 0 && y.hi() == 0)) return Interval::Empty();
-  return Wrap(x.boost() / y.boost());
-}
-Interval operator-(const Interval& x) { return Wrap(-x.boost()); }
-
-Interval Sqr(const Interval& x) { return Wrap(bn::square(x.boost())); }
 
 Interval Pow(const Interval& x, int n) {
   if (x.IsEmpty()) return x;
@@ -201,9 +208,10 @@ Interval Tan(const Interval& x) {
   if (x.IsPoint()) return Interval(rnd.tan_down(x.lo()), rnd.tan_up(x.lo()));
   if (x.Width() >= Pi().lo() || x.Mag() >= kTrigFar) return Interval();
   // A pole (an odd multiple of pi/2) inside x: tan takes every value.
-  for (double m = std::floor(x.lo() / kHalfPiApprox) - 2;
-       m <= std::ceil(x.hi() / kHalfPiApprox) + 2; ++m) {
-    if (std::fabs(std::fmod(m, 2)) == 1 && MayContainHalfPiMultiple(x, m)) return Interval();
+  std::int64_t first, last;
+  HalfPiMultiplesIn(x, &first, &last);
+  for (std::int64_t m = first + ((first + 1) & 1); m <= last; m += 2) {
+    if (MayContainHalfPiMultiple(x, static_cast<double>(m))) return Interval();
   }
   return Interval(rnd.tan_down(x.lo()), rnd.tan_up(x.hi()));
 }
@@ -225,20 +233,6 @@ Interval Max(const Interval& x, const Interval& y) {
   if (x.IsEmpty() || y.IsEmpty()) return Interval::Empty();
   return Interval(std::fmax(x.lo(), y.lo()), std::fmax(x.hi(), y.hi()));
 }
-
-Interval Intersect(const Interval& x, const Interval& y) {
-  if (x.IsEmpty() || y.IsEmpty()) return Interval::Empty();
-  return Interval(std::fmax(x.lo(), y.lo()), std::fmin(x.hi(), y.hi()));
-}
-Interval Hull(const Interval& x, const Interval& y) {
-  if (x.IsEmpty()) return y;
-  if (y.IsEmpty()) return x;
-  return Interval(std::fmin(x.lo(), y.lo()), std::fmax(x.hi(), y.hi()));
-}
-
-Interval Pi() { return Wrap(bn::interval_lib::pi<BoostInterval>()); }
-Interval HalfPi() { return Wrap(bn::interval_lib::pi_half<BoostInterval>()); }
-Interval TwoPi() { return Wrap(bn::interval_lib::pi_twice<BoostInterval>()); }
 
 bool ParseDecimal(const std::string& text, Interval* out) {
   if (text.empty()) return false;

@@ -35,9 +35,9 @@ class Interval {
   // [lo, hi]; empty if lo > hi, a bound is NaN, or it holds no real number.
   Interval(double lo, double hi) {
     if (!(lo <= hi) || lo == kInf || hi == -kInf) {
-      b_ = detail::BoostInterval::empty();
+      b_ = detail::BoostInterval(kInf, -kInf, true);  // Boost's empty() for this policy
     } else {
-      b_.assign(lo, hi);
+      b_ = detail::BoostInterval(lo, hi, true);  // checked above: no NaN, lo <= hi
     }
   }
   explicit Interval(const detail::BoostInterval& b) : Interval(b.lower(), b.upper()) {}
@@ -74,6 +74,8 @@ class Interval {
   detail::BoostInterval b_;
 };
 
+// The arithmetic operators, Sqr, Intersect, Hull and the pi constants sit on
+// the hot path of every revise; they are inline (definitions below).
 Interval operator+(const Interval& x, const Interval& y);
 Interval operator-(const Interval& x, const Interval& y);
 Interval operator*(const Interval& x, const Interval& y);
@@ -123,6 +125,64 @@ Interval TwoPi();
 bool ParseDecimal(const std::string& text, Interval* out);
 
 std::ostream& operator<<(std::ostream& os, const Interval& x);
+
+inline double Interval::Width() const {
+  if (IsEmpty()) return 0;
+  return ExactRounding().sub_up(hi(), lo());
+}
+
+inline double Interval::Mag() const {
+  if (IsEmpty()) return 0;
+  const double a = std::fabs(lo()), b = std::fabs(hi());  // not NaN when non-empty
+  return a < b ? b : a;
+}
+
+// As Boost's operators with the ExactRounding policy, without the wrapper's
+// second round of checks.
+inline Interval operator+(const Interval& x, const Interval& y) {
+  if (x.IsEmpty() || y.IsEmpty()) return Interval::Empty();
+  ExactRounding rnd;
+  return Interval(rnd.add_down(x.lo(), y.lo()), rnd.add_up(x.hi(), y.hi()));
+}
+inline Interval operator-(const Interval& x, const Interval& y) {
+  if (x.IsEmpty() || y.IsEmpty()) return Interval::Empty();
+  ExactRounding rnd;
+  return Interval(rnd.sub_down(x.lo(), y.hi()), rnd.sub_up(x.hi(), y.lo()));
+}
+inline Interval operator*(const Interval& x, const Interval& y) {
+  return Interval(x.boost() * y.boost());
+}
+inline Interval operator/(const Interval& x, const Interval& y) {
+  if (x.IsEmpty() || y.IsEmpty() || (y.lo() == 0 && y.hi() == 0)) return Interval::Empty();
+  return Interval(x.boost() / y.boost());
+}
+inline Interval operator-(const Interval& x) { return Interval(-x.boost()); }
+inline Interval Sqr(const Interval& x) { return Interval(boost::numeric::square(x.boost())); }
+
+// Bounds of non-empty intervals are never NaN, so plain comparisons do what
+// fmin / fmax would, without the libm call.
+inline Interval Intersect(const Interval& x, const Interval& y) {
+  if (x.IsEmpty() || y.IsEmpty()) return Interval::Empty();
+  return Interval(x.lo() < y.lo() ? y.lo() : x.lo(), x.hi() < y.hi() ? x.hi() : y.hi());
+}
+inline Interval Hull(const Interval& x, const Interval& y) {
+  if (x.IsEmpty()) return y;
+  if (y.IsEmpty()) return x;
+  return Interval(x.lo() < y.lo() ? x.lo() : y.lo(), x.hi() < y.hi() ? y.hi() : x.hi());
+}
+
+inline Interval Pi() {
+  static const Interval pi(boost::numeric::interval_lib::pi<detail::BoostInterval>());
+  return pi;
+}
+inline Interval HalfPi() {
+  static const Interval half_pi(boost::numeric::interval_lib::pi_half<detail::BoostInterval>());
+  return half_pi;
+}
+inline Interval TwoPi() {
+  static const Interval two_pi(boost::numeric::interval_lib::pi_twice<detail::BoostInterval>());
+  return two_pi;
+}
 
 }  // namespace icp
 

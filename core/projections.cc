@@ -1,6 +1,8 @@
 #include "core/projections.h"
 
 #include <cmath>
+#include <cstdint>
+#include <numbers>
 
 namespace icp {
 
@@ -12,43 +14,91 @@ Interval IntersectSymmetric(const Interval& x, const Interval& p) {
   return Hull(Intersect(x, p), Intersect(x, -p));
 }
 
+// The enclosure piece + Interval(k) * period of the k-th copy of piece, on
+// the bounds (period > 0, k an integer).
+struct Copies {
+  const Interval& piece;
+  const Interval& period;
+  double Lo(double k) const {
+    ExactRounding rnd;
+    return rnd.add_down(piece.lo(), rnd.mul_down(k, k >= 0 ? period.lo() : period.hi()));
+  }
+  double Hi(double k) const {
+    ExactRounding rnd;
+    return rnd.add_up(piece.hi(), rnd.mul_up(k, k >= 0 ? period.hi() : period.lo()));
+  }
+};
+
 // The hull of x ∩ ⋃_k (piece + k * period) for k in Z, where piece is a
 // bounded interval and period an enclosure of the period. Used for the
 // inverse images of sin, cos and tan. Bounds far beyond 2^50 are left as they
 // are: k * period is too imprecise there to contract soundly.
+//
+// The copies' enclosures are increasing in k, so the new lower bound comes
+// from the first copy that reaches lo (and the upper bound from the last one
+// that reaches hi); the quotient estimates are within one of those k, and
+// the loops walk to them from a k verified to be on the far side.
 Interval IntersectPeriodic(const Interval& x, const Interval& piece, const Interval& period) {
   if (x.IsEmpty() || piece.IsEmpty()) return Interval::Empty();
   constexpr double kFar = 0x1p50;
+  const Copies copies{piece, period};
   double lo = x.lo();
   double hi = x.hi();
   if (std::fabs(lo) < kFar) {
-    // First k whose copy of piece reaches lo; step down a little for safety.
-    double k = std::floor((lo - piece.hi()) / period.lo()) - 1;
-    while ((piece + Interval(k) * period).hi() >= lo) k -= 1;
-    for (int guard = 0;; ++guard, k += 1) {
-      Interval copy = piece + Interval(k) * period;
-      if (copy.lo() > hi) return Interval::Empty();
-      if (copy.hi() >= lo) {
-        lo = std::fmax(lo, copy.lo());
+    double k = std::floor((lo - piece.hi()) / period.lo());
+    while (copies.Hi(k) >= lo) k -= 1;
+    for (int guard = 0;; ++guard) {
+      k += 1;
+      if (copies.Hi(k) >= lo) {
+        const double copy_lo = copies.Lo(k);
+        if (copy_lo > hi) return Interval::Empty();
+        if (copy_lo > lo) lo = copy_lo;
         break;
       }
       if (guard > 8) break;  // unreachable for a valid period; stay sound
     }
   }
   if (std::fabs(hi) < kFar) {
-    double k = std::ceil((hi - piece.lo()) / period.lo()) + 1;
-    while ((piece + Interval(k) * period).lo() <= hi) k += 1;
-    for (int guard = 0;; ++guard, k -= 1) {
-      Interval copy = piece + Interval(k) * period;
-      if (copy.hi() < lo) return Interval::Empty();
-      if (copy.lo() <= hi) {
-        hi = std::fmin(hi, copy.hi());
+    double k = std::ceil((hi - piece.lo()) / period.lo());
+    while (copies.Lo(k) <= hi) k += 1;
+    for (int guard = 0;; ++guard) {
+      k -= 1;
+      if (copies.Lo(k) <= hi) {
+        const double copy_hi = copies.Hi(k);
+        if (copy_hi < lo) return Interval::Empty();
+        if (copy_hi < hi) hi = copy_hi;
         break;
       }
       if (guard > 8) break;
     }
   }
   return Interval(lo, hi);
+}
+
+// x ∩ (piece + k * period) for one copy k.
+Interval IntersectCopy(const Interval& x, const Interval& piece, double k, const Interval& period) {
+  const Copies copies{piece, period};
+  const double copy_lo = copies.Lo(k), copy_hi = copies.Hi(k);
+  return Interval(x.lo() < copy_lo ? copy_lo : x.lo(), x.hi() < copy_hi ? x.hi() : copy_hi);
+}
+
+// Whether x lies inside one branch (m pi - shift, (m + 1) pi - shift) of
+// sin or cos (shift pi / 2 and 0: the maximal intervals on which they are
+// monotone), clear of its ends by a margin; sets *m. The margin, 1e-12 of
+// the quotient, dwarfs the rounding of the quotients (a few 1e-16 of them)
+// and how far the enclosures of the other branches' copies in
+// IntersectPeriodic can reach past the branch ends (a few ulps of k * 2 pi),
+// so none of them meets x.
+bool InOneBranch(const Interval& x, double shift_in_pi, std::int64_t* m) {
+  constexpr double kPiApprox = std::numbers::pi;  // only to count branches
+  if (x.IsEmpty() || !(x.Mag() < 0x1p40)) return false;
+  const double q_lo = x.lo() / kPiApprox + shift_in_pi;
+  const double q_hi = x.hi() / kPiApprox + shift_in_pi;
+  const double m_lo = std::floor(q_lo - 1e-12 * (std::fabs(q_lo) + 1));
+  const double m_hi = std::floor(q_hi + 1e-12 * (std::fabs(q_hi) + 1));
+  if (m_lo != m_hi) return false;
+  *m = static_cast<std::int64_t>(m_lo);
+  return true;
 }
 
 }  // namespace
@@ -67,16 +117,6 @@ Interval DivideRelational(const Interval& x, const Interval& z, const Interval& 
   return result;
 }
 
-void BwdAdd(const Interval& z, Interval& x, Interval& y) {
-  x = Intersect(x, z - y);
-  y = Intersect(y, z - x);
-}
-
-void BwdSub(const Interval& z, Interval& x, Interval& y) {
-  x = Intersect(x, z + y);
-  y = Intersect(y, x - z);
-}
-
 void BwdMul(const Interval& z, Interval& x, Interval& y) {
   x = DivideRelational(x, z, y);
   y = DivideRelational(y, z, x);
@@ -87,8 +127,6 @@ void BwdDiv(const Interval& z, Interval& x, Interval& y) {
   x = Intersect(x, z * y);
   y = DivideRelational(y, x, z);
 }
-
-void BwdNeg(const Interval& z, Interval& x) { x = Intersect(x, -z); }
 
 void BwdSqr(const Interval& z, Interval& x) {
   x = IntersectSymmetric(x, Sqrt(z));
@@ -127,8 +165,19 @@ void BwdSin(const Interval& z, Interval& x) {
     x = Interval::Empty();
     return;
   }
-  const Interval two_pi = TwoPi();
-  // sin t in z  <=>  t in (a + 2k pi) or (pi - a + 2k pi).
+  const Interval& two_pi = TwoPi();
+  // sin t in z  <=>  t in (a + 2k pi) or (pi - a + 2k pi). On one monotone
+  // branch [m pi - pi/2, m pi + pi/2] only one copy can meet x: the same
+  // result as the general case below, found directly.
+  std::int64_t m;
+  if (InOneBranch(x, 0.5, &m)) {
+    if ((m & 1) == 0) {
+      x = IntersectCopy(x, a, static_cast<double>(m / 2), two_pi);
+    } else {
+      x = IntersectCopy(x, Pi() - a, static_cast<double>((m - 1) / 2), two_pi);
+    }
+    return;
+  }
   x = Hull(IntersectPeriodic(x, a, two_pi), IntersectPeriodic(x, Pi() - a, two_pi));
 }
 
@@ -138,8 +187,18 @@ void BwdCos(const Interval& z, Interval& x) {
     x = Interval::Empty();
     return;
   }
-  const Interval two_pi = TwoPi();
-  // cos t in z  <=>  t in (a + 2k pi) or (-a + 2k pi).
+  const Interval& two_pi = TwoPi();
+  // cos t in z  <=>  t in (a + 2k pi) or (-a + 2k pi). On one monotone
+  // branch [m pi, (m + 1) pi] only one copy can meet x (see BwdSin).
+  std::int64_t m;
+  if (InOneBranch(x, 0.0, &m)) {
+    if ((m & 1) == 0) {
+      x = IntersectCopy(x, a, static_cast<double>(m / 2), two_pi);
+    } else {
+      x = IntersectCopy(x, -a, static_cast<double>((m + 1) / 2), two_pi);
+    }
+    return;
+  }
   x = Hull(IntersectPeriodic(x, a, two_pi), IntersectPeriodic(x, -a, two_pi));
 }
 

@@ -14,11 +14,18 @@ namespace icp {
 // division, tighter than x ∩ z / y when 0 lies in y.
 Interval DivideRelational(const Interval& x, const Interval& z, const Interval& y);
 
-void BwdAdd(const Interval& z, Interval& x, Interval& y);
-void BwdSub(const Interval& z, Interval& x, Interval& y);
+// (BwdAdd, BwdSub and BwdNeg are inline: they run in every revise.)
+inline void BwdAdd(const Interval& z, Interval& x, Interval& y) {
+  x = Intersect(x, z - y);
+  y = Intersect(y, z - x);
+}
+inline void BwdSub(const Interval& z, Interval& x, Interval& y) {
+  x = Intersect(x, z + y);
+  y = Intersect(y, x - z);
+}
 void BwdMul(const Interval& z, Interval& x, Interval& y);
 void BwdDiv(const Interval& z, Interval& x, Interval& y);
-void BwdNeg(const Interval& z, Interval& x);
+inline void BwdNeg(const Interval& z, Interval& x) { x = Intersect(x, -z); }
 void BwdSqr(const Interval& z, Interval& x);
 void BwdPow(const Interval& z, Interval& x, int n);
 void BwdSqrt(const Interval& z, Interval& x);

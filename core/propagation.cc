@@ -55,14 +55,18 @@ ContractSummary PropagationContractor::Propagate(Box& box, const StopCondition& 
     --count_;
     queued_[c] = 0;
     const Tape& tape = system_->tape(c);
-    before_.clear();
-    for (int v : tape.variables()) before_.push_back(box[v]);
-    ++summary.work.revise_calls;
-    if (!Revise(c, box, summary.work)) return finish(ContractStatus::kEmpty, "");
     const auto& vars = tape.variables();
+    before_.resize(vars.size());
+    for (std::size_t i = 0; i < vars.size(); ++i) before_[i] = box[vars[i]];
+    ++summary.work.revise_calls;
+    bool idempotent = false;
+    if (!Revise(c, box, summary.work, &idempotent)) return finish(ContractStatus::kEmpty, "");
     for (std::size_t i = 0; i < vars.size(); ++i) {
-      if (!ShrankByMoreThan(before_[i], box[vars[i]], ratio_)) continue;
-      for (int other : system_->constraints_of(vars[i])) Push(other);
+      const Interval& after = box[vars[i]];
+      if (after.lo() == before_[i].lo() && after.hi() == before_[i].hi()) continue;
+      if (!ShrankByMoreThan(before_[i], after, ratio_)) continue;
+      for (int other : system_->constraints_of(vars[i]))
+        if (other != c || !idempotent) Push(other);
     }
   }
   summary.status = StatusOf(start, box);

@@ -1,7 +1,9 @@
 // The AC3-like propagation loop shared by HC4, BC3 and BC4 (paper 000 §3):
 // a FIFO queue of constraints; each popped constraint is revised, and every
 // variable that shrank by more than `ratio` of its width re-queues the
-// constraints it occurs in (itself included). Subclasses say what revising a constraint means.
+// constraints it occurs in (itself included, unless its revise reported that
+// a second one could change nothing). Subclasses say what revising a
+// constraint means.
 #ifndef ICPBENCH_CORE_PROPAGATION_H_
 #define ICPBENCH_CORE_PROPAGATION_H_
 
@@ -32,10 +34,12 @@ class PropagationContractor : public Contractor {
  protected:
   // Narrows box with constraint c; returns false if c has no solution in box.
   // A revise is not assumed idempotent: even with single occurrences, a
-  // backward projection that takes the hull of a union (abs, sqr, sin, a
-  // division by an interval holding 0) can narrow more on a second call, so
-  // a constraint whose variables shrank is queued again.
-  virtual bool Revise(int c, Box& box, WorkCounters& work) = 0;
+  // backward projection that takes the hull of a union (a division by an
+  // interval holding 0, an overflowed enclosure) can narrow more on a second
+  // call, so a constraint whose variables shrank is queued again, unless the
+  // revise sets *idempotent (false on entry) because it knows that calling
+  // it again right away would narrow nothing (Tape::Revise says when).
+  virtual bool Revise(int c, Box& box, WorkCounters& work, bool* idempotent) = 0;
 
  private:
   ContractSummary Propagate(Box& box, const StopCondition& stop);

@@ -39,14 +39,18 @@ inline double NextUp(double x) {
 // The next double below x (x itself for -inf and NaN).
 inline double NextDown(double x) { return -NextUp(-x); }
 
-inline double StepDown(double x, int ulps) {
-  for (int i = 0; i < ulps; ++i) x = NextDown(x);
-  return x;
-}
+// x moved by ulps doubles (0 <= ulps <= 16). Away from zero and infinity the
+// doubles of one sign are consecutive bit patterns, so this is one integer
+// step there; elsewhere it steps one double at a time.
 inline double StepUp(double x, int ulps) {
+  constexpr double kSmall = 0x1p-1000, kLarge = 0x1p1000;
+  const auto bits = std::bit_cast<std::uint64_t>(x);
+  if (x >= kSmall && x <= kLarge) return std::bit_cast<double>(bits + ulps);
+  if (x <= -kSmall && x >= -kLarge) return std::bit_cast<double>(bits - ulps);
   for (int i = 0; i < ulps; ++i) x = NextUp(x);
   return x;
 }
+inline double StepDown(double x, int ulps) { return -StepUp(-x, ulps); }
 
 // Below this magnitude an FMA residual may underflow and no longer be exact;
 // results there are widened by one ulp unconditionally.
@@ -62,6 +66,16 @@ struct ExactRounding {
 
   double add_down(double x, double y) { return -add_up(-x, -y); }
   double add_up(double x, double y) {
+    // Usual case, finite operands below 2^1020: Knuth's TwoSum, exact
+    // (s + err = x + y) when no intermediate overflows, which these bounds
+    // guarantee; no branch on the operands' order.
+    if (std::fabs(x) < 0x1p1020 && std::fabs(y) < 0x1p1020) {
+      const double s = x + y;
+      const double y_part = s - x;
+      const double x_part = s - y_part;
+      const double err = (x - x_part) + (y - y_part);
+      return err > 0 ? NextUp(s) : s;
+    }
     double s = x + y;
     if (std::isnan(s)) return kInf;              // inf + -inf: no information
     if (std::isinf(s)) {                         // exact if an input is infinite,
@@ -142,18 +156,26 @@ struct ExactRounding {
   // f(0) and f(1) below that equals 0 or 1 does so exactly (exp, cos, cosh at
   // 0; the odd functions at 0; log, acos, acosh at 1), and no other f(0) or
   // f(1) is near 0 or 1.
+  static double WidenDown(double x, double v, double lo_clamp) {
+    if (std::isnan(v)) return lo_clamp;
+    if (IsKnownExact(x, v)) return v;
+    const double d = StepDown(v, kLibmUlps);  // not NaN: no fmax call needed
+    return d < lo_clamp ? lo_clamp : d;
+  }
+  static double WidenUp(double x, double v, double hi_clamp) {
+    if (std::isnan(v)) return hi_clamp;
+    if (IsKnownExact(x, v)) return v;
+    const double u = StepUp(v, kLibmUlps);
+    return u > hi_clamp ? hi_clamp : u;
+  }
+  // f_both gives f_down and f_up from one libm call.
 #define ICP_WIDENED(f, lo_clamp, hi_clamp)                                  \
-  double f##_down(double x) {                                               \
-    double v = std::f(x);                                                   \
-    if (std::isnan(v)) return lo_clamp;                                     \
-    if (IsKnownExact(x, v)) return v;                                       \
-    return std::fmax(StepDown(v, kLibmUlps), lo_clamp);                     \
-  }                                                                         \
-  double f##_up(double x) {                                                 \
-    double v = std::f(x);                                                   \
-    if (std::isnan(v)) return hi_clamp;                                     \
-    if (IsKnownExact(x, v)) return v;                                       \
-    return std::fmin(StepUp(v, kLibmUlps), hi_clamp);                       \
+  double f##_down(double x) { return WidenDown(x, std::f(x), lo_clamp); }   \
+  double f##_up(double x) { return WidenUp(x, std::f(x), hi_clamp); }       \
+  void f##_both(double x, double* down, double* up) {                       \
+    const double v = std::f(x);                                             \
+    *down = WidenDown(x, v, lo_clamp);                                      \
+    *up = WidenUp(x, v, hi_clamp);                                          \
   }
   ICP_WIDENED(exp, 0.0, kInf)
   ICP_WIDENED(log, -kInf, kInf)

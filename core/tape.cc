@@ -29,6 +29,17 @@ Tape::Tape(const ExprGraph& graph, const Constraint& constraint) : range_(constr
     code_.push_back(in);
     constants_.push_back(e.op == Op::kConst ? e.value : Interval());
   }
+  // Constant folding: an operation on constants only is evaluated once here,
+  // exactly as Forward would on every call, and becomes a constant slot, so
+  // that neither sweep spends time on it.
+  for (int s = 0; s < size(); ++s) {
+    TapeInstr& in = code_[s];
+    if (in.op == Op::kConst || in.op == Op::kVar) continue;
+    const int b = in.b >= 0 ? in.b : in.a;
+    if (code_[in.a].op != Op::kConst || code_[b].op != Op::kConst) continue;
+    constants_[s] = EvalOp(in.op, constants_[in.a], constants_[b], in.n);
+    in = TapeInstr{Op::kConst, -1, -1, 0};
+  }
   // Occurrences: number of root-to-node paths (uses of shared nodes count).
   std::vector<double> paths(code_.size(), 0);
   paths.back() = 1;
@@ -40,9 +51,17 @@ Tape::Tape(const ExprGraph& graph, const Constraint& constraint) : range_(constr
   for (int s = 0; s < size(); ++s)
     if (code_[s].op == Op::kVar)
       occ[code_[s].n] = static_cast<int>(std::min(paths[s], 1e9));
+  idempotent_when_bounded_ = true;
   for (auto [var, count] : occ) {
     variables_.push_back(var);
     occurrences_.push_back(count);
+    if (count > 1) idempotent_when_bounded_ = false;
+  }
+  for (const TapeInstr& in : code_) {
+    if (in.op == Op::kDiv || in.op == Op::kTan || in.op == Op::kLog ||
+        (in.op == Op::kPow && in.n < 0))
+      idempotent_when_bounded_ = false;
+    if (in.op == Op::kSqrt || in.op == Op::kLog) has_partial_ops_ = true;
   }
 }
 
@@ -52,7 +71,8 @@ int Tape::Occurrences(int var) const {
   return occurrences_[it - variables_.begin()];
 }
 
-Interval Tape::Forward(const Box& box, std::vector<Interval>& slots) const {
+template <bool kTrackBounded>
+Interval Tape::ForwardSweep(const Box& box, std::vector<Interval>& slots, bool* bounded) const {
   if (slots.size() < code_.size()) slots.resize(code_.size());
   const int n = size();
   for (int s = 0; s < n; ++s) {
@@ -62,12 +82,19 @@ Interval Tape::Forward(const Box& box, std::vector<Interval>& slots) const {
       z = constants_[s];
     } else if (in.op == Op::kVar) {
       z = box[in.n];
+      if (z.IsEmpty()) return Interval::Empty();
+      continue;
     } else {
       z = EvalOp(in.op, slots[in.a], slots[in.b >= 0 ? in.b : in.a], in.n);
     }
     if (z.IsEmpty()) return Interval::Empty();
+    if (kTrackBounded && !z.IsBounded()) *bounded = false;
   }
   return slots[n - 1];
+}
+
+Interval Tape::Forward(const Box& box, std::vector<Interval>& slots) const {
+  return ForwardSweep<false>(box, slots, nullptr);
 }
 
 Interval Tape::ForwardWithDerivative(const Box& box, int var, std::vector<Interval>& slots,
@@ -102,25 +129,58 @@ Interval Tape::ForwardWithDerivative(const Box& box, int var, std::vector<Interv
 bool Tape::Backward(Box& box, std::vector<Interval>& slots) const {
   const int n = size();
   Interval& root = slots[n - 1];
-  root = Intersect(root, range_);
-  if (root.IsEmpty()) return false;
+  const Interval narrowed = Intersect(root, range_);
+  if (narrowed.IsEmpty()) return false;
+  // A projection whose result set z still holds its forward enclosure keeps
+  // every operand value where the operation is defined (each has a partner
+  // with op(a, b) in z), and a sound projection intersected with the operand
+  // then returns the operand itself. So only slots narrowed below their
+  // forward value are projected: if the root already lies in range, nothing
+  // can change. Tapes with sqrt or log, whose projections also cut the
+  // operand to the function's domain, are swept in full.
+  if (narrowed == root && !has_partial_ops_) return true;
+  root = narrowed;
+  constexpr int kStackSlots = 256;
+  char stack_changed[kStackSlots];
+  std::vector<char> heap_changed;
+  char* changed = stack_changed;
+  if (n > kStackSlots) {
+    heap_changed.assign(n, has_partial_ops_);
+    changed = heap_changed.data();
+  } else {
+    std::fill(stack_changed, stack_changed + n, has_partial_ops_);
+  }
+  changed[n - 1] = 1;
   Interval unused;
   for (int s = n - 1; s >= 0; --s) {
+    if (!changed[s]) continue;
     const TapeInstr& in = code_[s];
-    if (in.op == Op::kConst) continue;
+    if (in.op == Op::kConst) continue;  // narrowed constants are not written back
     if (in.op == Op::kVar) {
       box[in.n] = slots[s];  // started as box[in.n] and only shrank
       continue;
     }
+    Interval& a = slots[in.a];
     Interval& b = in.b >= 0 ? slots[in.b] : unused;
-    ProjectOp(in.op, slots[s], slots[in.a], b, in.n);
-    if (slots[in.a].IsEmpty() || b.IsEmpty()) return false;
+    const Interval a_before = a;
+    const Interval b_before = b;
+    ProjectOp(in.op, slots[s], a, b, in.n);
+    if (a.IsEmpty() || b.IsEmpty()) return false;
+    if (!(a == a_before)) changed[in.a] = 1;
+    if (in.b >= 0 && !(b == b_before)) changed[in.b] = 1;
   }
   return true;
 }
 
-bool Tape::Revise(Box& box, std::vector<Interval>& slots) const {
-  if (Forward(box, slots).IsEmpty()) return false;
+bool Tape::Revise(Box& box, std::vector<Interval>& slots, bool* idempotent) const {
+  if (idempotent && idempotent_when_bounded_) {
+    bool bounded = true;
+    if (ForwardSweep<true>(box, slots, &bounded).IsEmpty()) return false;
+    *idempotent = bounded;
+  } else {
+    if (Forward(box, slots).IsEmpty()) return false;
+    if (idempotent) *idempotent = false;
+  }
   return Backward(box, slots);
 }
 

@@ -39,7 +39,20 @@ class Tape {
   Interval ForwardWithDerivative(const Box& box, int var, std::vector<Interval>& slots,
                                  std::vector<Interval>& dslots, Interval* derivative) const;
   // HC4Revise = Forward + Backward. Returns false when box has no solution.
-  bool Revise(Box& box, std::vector<Interval>& slots) const;
+  // If idempotent is given, it is set to whether a second Revise right after
+  // this one could narrow nothing more (see idempotent_when_bounded()): the
+  // tape qualifies and the forward enclosure of every operation was bounded.
+  bool Revise(Box& box, std::vector<Interval>& slots, bool* idempotent = nullptr) const;
+  // True when every variable occurs once and every operation is continuous
+  // with an interval image (no division, tan, log or negative power). HC4Revise
+  // on such a tape is then idempotent while all forward enclosures of the
+  // operations are bounded: it computes the hull of each projection of the
+  // constraint's solution set, and evaluating that hull again gives back the
+  // same enclosures. Unbounded enclosures break this (0 * inf is 0 on bounds,
+  // overflowed results lose the link to their operands), and so do the
+  // excluded operations, whose images over an interval can have a gap that
+  // the hull fills (core/tape_test.cc has examples of each).
+  bool idempotent_when_bounded() const { return idempotent_when_bounded_; }
 
   // Distinct variables of the constraint, ascending.
   const std::vector<int>& variables() const { return variables_; }
@@ -52,11 +65,18 @@ class Tape {
   const Interval& constant(int slot) const { return constants_[slot]; }
 
  private:
+  // Forward; with kTrackBounded, also clears *bounded if the enclosure of
+  // some operation or constant is unbounded.
+  template <bool kTrackBounded>
+  Interval ForwardSweep(const Box& box, std::vector<Interval>& slots, bool* bounded) const;
+
   std::vector<TapeInstr> code_;
   std::vector<Interval> constants_;  // per slot; used by kConst slots
   std::vector<int> variables_;
   std::vector<int> occurrences_;     // parallel to variables_
   Interval range_;
+  bool idempotent_when_bounded_ = false;
+  bool has_partial_ops_ = false;  // sqrt or log: Backward sweeps every slot
 };
 
 // Every constraint of a system, compiled, with the variable -> constraints

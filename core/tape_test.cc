@@ -46,6 +46,23 @@ TEST(TapeTest, BackwardProjectsThroughSharedNodes) {
   EXPECT_EQ(box[1], Interval(0, 2));
 }
 
+TEST(TapeTest, BackwardCutsOperandsToTheDomainOfSqrtAndLog) {
+  // The root lies in its range, yet x loses its negative part.
+  ConstraintSystem csp;
+  Expr x = csp.AddVariable("x", {-1, 4});
+  Expr y = csp.AddVariable("y", {1, 2});
+  csp.AddConstraint(Sqrt(x) + y, Interval(0, 10));
+  csp.AddConstraint(Log(x) + y, Interval());
+  for (int c = 0; c < 2; ++c) {
+    Tape tape(csp.graph(), csp.constraints()[c]);
+    Box box = csp.domains();
+    std::vector<Interval> slots;
+    ASSERT_TRUE(tape.Revise(box, slots));
+    EXPECT_EQ(box[0], Interval(0, 4)) << c;
+    EXPECT_EQ(box[1], Interval(1, 2)) << c;
+  }
+}
+
 TEST(TapeTest, ReviseReportsInconsistency) {
   ConstraintSystem csp;
   Expr x = csp.AddVariable("x", {-1, 1});
@@ -63,6 +80,89 @@ TEST(TapeTest, UndefinedEverywhereIsEmpty) {
   Tape tape(csp.graph(), csp.constraints()[0]);
   std::vector<Interval> slots;
   EXPECT_TRUE(tape.Forward(csp.domains(), slots).IsEmpty());
+}
+
+TEST(TapeTest, ConstantSubExpressionsAreFoldedWithTheSameEnclosure) {
+  // dth / 2 is folded at construction; Forward gives what evaluating it on
+  // every call gave.
+  ConstraintSystem csp;
+  Expr th = csp.AddVariable("th", {0.1, 0.3});
+  Expr dth = csp.Constant(Interval(0.01, 0.02));
+  csp.AddConstraint(Cos(th + dth / 2.0), Interval());
+  Tape tape(csp.graph(), csp.constraints()[0]);
+  EXPECT_EQ(tape.size(), 6);  // th, dth, 2, dth / 2, th + dth / 2, cos
+  std::vector<Interval> slots;
+  EXPECT_EQ(tape.Forward(csp.domains(), slots),
+            Cos(Interval(0.1, 0.3) + Interval(0.01, 0.02) / Interval(2.0)));
+}
+
+// Revise reports idempotence only where a second call changes nothing, and
+// the two ways it can fail (see Tape::idempotent_when_bounded) do fail.
+TEST(TapeTest, ReviseClaimsIdempotenceOnlyWhenItHolds) {
+  {
+    // The car-track odometry constraint: single occurrences, continuous.
+    ConstraintSystem csp;
+    Expr xp = csp.AddVariable("xp", {-10, 10});
+    Expr thp = csp.AddVariable("thp", {0.1, 0.3});
+    Expr xk = csp.AddVariable("xk", {-8, 12});
+    csp.AddConstraint(xk, Relation::kEq,
+                      xp + csp.Constant(Interval(2.7, 2.8)) * Cos(thp + csp.Constant(0.01)));
+    Tape tape(csp.graph(), csp.constraints()[0]);
+    EXPECT_TRUE(tape.idempotent_when_bounded());
+    Box box = csp.domains();
+    std::vector<Interval> slots;
+    bool idempotent = false;
+    ASSERT_TRUE(tape.Revise(box, slots, &idempotent));
+    EXPECT_TRUE(idempotent);
+    EXPECT_NE(box, csp.domains());
+    Box again = box;
+    ASSERT_TRUE(tape.Revise(again, slots));
+    EXPECT_EQ(again, box);
+  }
+  {
+    // Overflow: sinh(-800) is -inf, and only the second call, on x without
+    // the overflowing part, narrows y.
+    ConstraintSystem csp;
+    Expr x = csp.AddVariable("x", {-800, 1.3});
+    Expr y = csp.AddVariable("y", {-0.5, 2.5});
+    csp.AddConstraint(Sqr(y) * Sinh(x), Interval(0.5, 3));
+    Tape tape(csp.graph(), csp.constraints()[0]);
+    EXPECT_TRUE(tape.idempotent_when_bounded());
+    Box box = csp.domains();
+    std::vector<Interval> slots;
+    bool idempotent = true;
+    ASSERT_TRUE(tape.Revise(box, slots, &idempotent));
+    EXPECT_FALSE(idempotent);
+    Box again = box;
+    ASSERT_TRUE(tape.Revise(again, slots));
+    EXPECT_LT(again[1].Width(), box[1].Width());
+  }
+  {
+    // Division by an interval holding 0: the quotient is the whole line
+    // until z is narrowed, then it narrows y.
+    ConstraintSystem csp;
+    Expr x = csp.AddVariable("x", {-2, -1});
+    Expr y = csp.AddVariable("y", {-1.5, 2.5});
+    Expr z = csp.AddVariable("z", {-0.1, 2});
+    csp.AddConstraint(y - x / z, Interval(-2, 1));
+    Tape tape(csp.graph(), csp.constraints()[0]);
+    EXPECT_FALSE(tape.idempotent_when_bounded());
+    Box box = csp.domains();
+    std::vector<Interval> slots;
+    bool idempotent = true;
+    ASSERT_TRUE(tape.Revise(box, slots, &idempotent));
+    EXPECT_FALSE(idempotent);
+    Box again = box;
+    ASSERT_TRUE(tape.Revise(again, slots));
+    EXPECT_LT(again[1].Width(), box[1].Width());
+  }
+  {
+    // A variable occurring twice.
+    ConstraintSystem csp;
+    Expr x = csp.AddVariable("x", {-2, 4});
+    csp.AddConstraint(x * x + x, Interval(0.0));
+    EXPECT_FALSE(Tape(csp.graph(), csp.constraints()[0]).idempotent_when_bounded());
+  }
 }
 
 TEST(TapeTest, CompiledSystemIndexesConstraintsByVariable) {

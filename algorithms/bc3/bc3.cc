@@ -109,7 +109,7 @@ BC3Contractor::BC3Contractor(std::shared_ptr<const CompiledSystem> system, const
     : PropagationContractor(std::move(system), params.ratio, params.max_revise_calls),
       narrower_(params.epsilon, params.max_bisections) {}
 
-bool BC3Contractor::Revise(int c, Box& box, WorkCounters& work) {
+bool BC3Contractor::Revise(int c, Box& box, WorkCounters& work, bool*) {
   const Tape& tape = system().tape(c);
   for (int v : tape.variables())
     if (!narrower_.Narrow(tape, v, box, work)) return false;

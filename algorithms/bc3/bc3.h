@@ -72,7 +72,7 @@ class BC3Contractor : public PropagationContractor {
   std::string_view Name() const override { return "bc3"; }
 
  protected:
-  bool Revise(int c, Box& box, WorkCounters& work) override;
+  bool Revise(int c, Box& box, WorkCounters& work, bool* idempotent) override;
 
  private:
   BoxNarrower narrower_;

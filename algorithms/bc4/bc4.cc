@@ -14,10 +14,12 @@ BC4Contractor::BC4Contractor(std::shared_ptr<const CompiledSystem> system, const
   }
 }
 
-bool BC4Contractor::Revise(int c, Box& box, WorkCounters& work) {
+bool BC4Contractor::Revise(int c, Box& box, WorkCounters& work, bool* idempotent) {
   const Tape& tape = system().tape(c);
-  // HC4Revise is sound for every variable and optimal for single occurrences.
-  if (!tape.Revise(box, slots_)) return false;
+  // HC4Revise is sound for every variable and optimal for single occurrences
+  // (where it is idempotent too; with multiple occurrences BC3 narrowing
+  // follows and nothing is claimed).
+  if (!tape.Revise(box, slots_, multiple_[c].empty() ? idempotent : nullptr)) return false;
   for (int v : multiple_[c])
     if (!narrower_.Narrow(tape, v, box, work)) return false;
   return true;

@@ -26,7 +26,7 @@ class BC4Contractor : public PropagationContractor {
   std::string_view Name() const override { return "bc4"; }
 
  protected:
-  bool Revise(int c, Box& box, WorkCounters& work) override;
+  bool Revise(int c, Box& box, WorkCounters& work, bool* idempotent) override;
 
  private:
   BoxNarrower narrower_;

@@ -14,8 +14,8 @@ HC4Contractor::HC4Contractor(std::shared_ptr<const CompiledSystem> system, const
     : PropagationContractor(std::move(system), params.ratio, params.max_revise_calls),
       slots_(this->system().max_tape_size()) {}
 
-bool HC4Contractor::Revise(int c, Box& box, WorkCounters&) {
-  return system().tape(c).Revise(box, slots_);
+bool HC4Contractor::Revise(int c, Box& box, WorkCounters&, bool* idempotent) {
+  return system().tape(c).Revise(box, slots_, idempotent);
 }
 
 std::unique_ptr<Contractor> MakeHC4(const ParamMap& params, const ConstraintSystem& csp) {

@@ -36,7 +36,7 @@ class HC4Contractor : public PropagationContractor {
   std::string_view Name() const override { return "hc4"; }
 
  protected:
-  bool Revise(int c, Box& box, WorkCounters& work) override;
+  bool Revise(int c, Box& box, WorkCounters& work, bool* idempotent) override;
 
  private:
   std::vector<Interval> slots_;
