@@ -117,7 +117,7 @@ TEST(RunnerTest, AKilledSweepLosesOnlyTheRunsInFlight) {
   const std::string dir = FreshDir("killed");
   const std::string yaml =
       "seeds: [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16]\n"
-      "algorithms: [3b-bc4]\nproblems: [{name: chain, params: {w: 12}}]\n";
+      "algorithms: [bc4]\nproblems: [{name: car-track, params: {w: 20, steps: 300}}]\n";
   const pid_t pid = fork();
   ASSERT_GE(pid, 0);
   if (pid == 0) {
@@ -144,7 +144,7 @@ TEST(RunnerTest, AKilledSweepLosesOnlyTheRunsInFlight) {
   ASSERT_LT(kept.size(), 16u) << "the sweep finished before it was killed";
   for (const RunRecord& r : kept) {
     EXPECT_EQ(r.status, RunStatus::kOk);
-    EXPECT_EQ(r.steps.size(), 1u);  // complete runs only
+    EXPECT_EQ(r.steps.size(), 300u);  // complete runs only
   }
   SweepSummary resumed = Sweep(yaml, dir, 2);
   EXPECT_EQ(resumed.already_stored, static_cast<int>(kept.size()));
