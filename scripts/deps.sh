@@ -6,6 +6,7 @@ packages=(
   build-essential cmake ninja-build pkg-config git
   libboost-dev libeigen3-dev libtbb-dev libopencv-dev libsqlite3-dev sqlite3
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
+  libboost-iostreams-dev libboost-filesystem-dev libboost-system-dev
   libgtest-dev libgmock-dev libbenchmark-dev libmpfr-dev libgmp-dev
   gnuplot-nox libgnuplot-iostream-dev
 )
