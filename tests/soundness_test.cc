@@ -29,6 +29,25 @@ TEST_P(SoundnessTest, NeverRemovesTheKnownSolution) {
   EXPECT_GT(contracted, 1500);
 }
 
+// Inconsistent systems: a constant constraint that fails, a variable forced
+// out of its domain, and two constraints that contradict each other.
+TEST_P(SoundnessTest, EmptiesTheBoxOfInconsistentSystems) {
+  const AlgorithmInfo& info = FindAlgorithm(GetParam());
+  std::vector<ConstraintSystem> systems(3);
+  for (ConstraintSystem& csp : systems) csp.AddVariable("x", {0, 1});
+  systems[0].AddConstraint(systems[0].Constant(1), Relation::kEq, systems[0].Constant(2));
+  systems[1].AddConstraint(Sqr(systems[1].Var(0)), Relation::kEq, systems[1].Constant(4));
+  Expr y = systems[2].AddVariable("y", {-10, 10});
+  systems[2].AddConstraint(y, Relation::kEq, systems[2].Var(0) + 3.0);
+  systems[2].AddConstraint(y, Relation::kLeq, systems[2].Constant(2));
+  for (std::size_t i = 0; i < systems.size(); ++i) {
+    Box box = systems[i].domains();
+    ContractSummary s = info.make({}, systems[i])->Contract(box, StopCondition());
+    EXPECT_EQ(s.status, ContractStatus::kEmpty) << "system " << i;
+    EXPECT_TRUE(box.IsEmpty()) << "system " << i;
+  }
+}
+
 std::vector<std::string> AlgorithmNames() {
   std::vector<std::string> names;
   for (const AlgorithmInfo& a : Algorithms())

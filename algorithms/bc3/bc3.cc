@@ -111,6 +111,9 @@ BC3Contractor::BC3Contractor(std::shared_ptr<const CompiledSystem> system, const
 
 bool BC3Contractor::Revise(int c, Box& box, WorkCounters& work, bool*) {
   const Tape& tape = system().tape(c);
+  if (tape.variables().empty()) {  // a constant constraint (1 = 2): just test it
+    return !Intersect(tape.Forward(box, scratch_), tape.range()).IsEmpty();
+  }
   for (int v : tape.variables())
     if (!narrower_.Narrow(tape, v, box, work)) return false;
   return true;

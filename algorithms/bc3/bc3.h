@@ -76,6 +76,7 @@ class BC3Contractor : public PropagationContractor {
 
  private:
   BoxNarrower narrower_;
+  std::vector<Interval> scratch_;
 };
 
 std::unique_ptr<Contractor> MakeBC3(const ParamMap& params, const ConstraintSystem& csp);

@@ -73,6 +73,13 @@ TEST(BC3Test, InconsistencyGivesEmpty) {
   EXPECT_TRUE(box.IsEmpty());
 }
 
+TEST(BC3Test, AConstantConstraintThatFailsEmptiesTheBox) {
+  ConstraintSystem csp;
+  csp.AddVariable("x", {0, 1});
+  csp.AddConstraint(csp.Constant(1), Relation::kEq, csp.Constant(2));
+  EXPECT_TRUE(RunBC3(csp).IsEmpty());
+}
+
 TEST(BC3Test, InequalitiesKeepTheirFeasibleSide) {
   ConstraintSystem csp;
   Expr x = csp.AddVariable("x", {-10, 10});
