@@ -7,29 +7,52 @@
 #include "algorithms/fault/fault.h"
 #include "algorithms/hc3/hc3.h"
 #include "algorithms/hc4/hc4.h"
+#include "algorithms/test_estimators/test_estimators.h"
 #include "algorithms/three_b/three_b.h"
 
 namespace icp {
 
-const std::vector<AlgorithmInfo>& Algorithms() {
-  static const std::vector<AlgorithmInfo> kAlgorithms = {
-      {"hc3", "HC3: constraints decomposed into primitives with auxiliary variables, AC3 queue",
-       &MakeHC3, &DefaultParams<HC3Params>, &ValidateParams<HC3Params>},
-      {"hc4", "HC4: HC4Revise (forward-backward on each constraint's tree) propagated to a fixpoint",
-       &MakeHC4, &DefaultParams<HC4Params>, &ValidateParams<HC4Params>},
-      {"bc3", "BC3: box consistency per (constraint, variable) by interval Newton and bisection",
-       &MakeBC3, &DefaultParams<BC3Params>, &ValidateParams<BC3Params>},
-      {"bc4", "BC4: HC4Revise for single occurrences, BC3 narrowing for multiple ones",
-       &MakeBC4, &DefaultParams<BC4Params>, &ValidateParams<BC4Params>},
-      {"3b-bc4", "3B consistency: bounds shaved in slices refuted by BC4 (the paper's 3B-BC4)",
-       &MakeThreeBBC4, &DefaultParams<ThreeBParams<BC4Params>>, &ValidateParams<ThreeBParams<BC4Params>>},
-      {"3b-hc4", "3B consistency: bounds shaved in slices refuted by HC4",
-       &MakeThreeBHC4, &DefaultParams<ThreeBParams<HC4Params>>, &ValidateParams<ThreeBParams<HC4Params>>},
+namespace {
+std::vector<AlgorithmInfo>& Table() {
+  static std::vector<AlgorithmInfo> table = {
+      CspAlgorithm<HC3Params, &MakeHC3>(
+          "hc3", "HC3: constraints decomposed into primitives with auxiliary variables, AC3 queue",
+          {"HC3", 10, "#8c564b"}),
+      CspAlgorithm<HC4Params, &MakeHC4>(
+          "hc4", "HC4: HC4Revise (forward-backward on each constraint's tree) propagated to a fixpoint",
+          {"HC4", 20, "#1f77b4"}),
+      CspAlgorithm<BC3Params, &MakeBC3>(
+          "bc3", "BC3: box consistency per (constraint, variable) by interval Newton and bisection",
+          {"BC3", 30, "#ff7f0e"}),
+      CspAlgorithm<BC4Params, &MakeBC4>(
+          "bc4", "BC4: HC4Revise for single occurrences, BC3 narrowing for multiple ones",
+          {"BC4", 40, "#2ca02c"}),
+      CspAlgorithm<ThreeBParams<BC4Params>, &MakeThreeBBC4>(
+          "3b-bc4", "3B consistency: bounds shaved in slices refuted by BC4 (the paper's 3B-BC4)",
+          {"3B-BC4", 50, "#d62728"}),
+      CspAlgorithm<ThreeBParams<HC4Params>, &MakeThreeBHC4>(
+          "3b-hc4", "3B consistency: bounds shaved in slices refuted by HC4",
+          {"3B-HC4", 60, "#9467bd"}),
       {"fault", "not an algorithm: injects a crash, hang, exception or bad box (harness tests)",
-       &MakeFault, &DefaultParams<FaultParams>, &ValidateParams<FaultParams>, View::kCsp, true},
+       &MakeFault, &DefaultParams<FaultParams>, &ResolveParams<FaultParams>, View::kCsp,
+       {"fault", 900, "#7f7f7f"}, nullptr, true},
+      {"test-paving", "not an algorithm: a paving of the newest state's box (harness tests)",
+       &MakeTestPaving, &DefaultParams<TestPavingParams>, &ResolveParams<TestPavingParams>,
+       View::kCsp, {"test paving", 910, "#17becf"}, nullptr, true},
+      {"test-accumulator", "not an algorithm: a grid accumulator over the newest state's x-y box (harness tests)",
+       &MakeTestAccumulator, &DefaultParams<TestAccumulatorParams>,
+       &ResolveParams<TestAccumulatorParams>, View::kCsp, {"test accumulator", 920, "#bcbd22"},
+       nullptr, true},
+      {"test-particles", "not an algorithm: particles drawn in the newest state's box (harness tests)",
+       &MakeTestParticles, &DefaultParams<TestParticlesParams>,
+       &ResolveParams<TestParticlesParams>, View::kCsp, {"test particles", 930, "#e377c2"},
+       nullptr, true},
   };
-  return kAlgorithms;
+  return table;
 }
+}  // namespace
+
+const std::vector<AlgorithmInfo>& Algorithms() { return Table(); }
 
 const AlgorithmInfo& FindAlgorithm(const std::string& name) {
   std::string known;
@@ -38,6 +61,13 @@ const AlgorithmInfo& FindAlgorithm(const std::string& name) {
     known += (known.empty() ? "" : ", ") + a.name;
   }
   throw std::invalid_argument("unknown algorithm '" + name + "' (known: " + known + ")");
+}
+
+void RegisterAlgorithm(AlgorithmInfo info) {
+  for (const AlgorithmInfo& a : Algorithms())
+    if (a.name == info.name)
+      throw std::invalid_argument("algorithm '" + info.name + "' is already registered");
+  Table().push_back(std::move(info));
 }
 
 }  // namespace icp

@@ -98,11 +98,17 @@ P ParseParams(const std::string& owner, const ParamMap& values) {
   return params;
 }
 
-// Checks key=value text against P without keeping the result (specs are
-// validated before the first run).
+// The effective parameters of P from key=value text: every declared field,
+// defaults filled in, each value in its canonical spelling (what identifies
+// a run). Throws ParamError like ParseParams.
 template <class P>
-void ValidateParams(const std::string& owner, const ParamMap& values) {
-  ParseParams<P>(owner, values);
+ParamMap ResolveParams(const std::string& owner, const ParamMap& values) {
+  P params;
+  ParamSet set(owner);
+  Describe(params, set);
+  set.SetAll(values);
+  set.Validate();
+  return set.Values();
 }
 
 // The parameters of P with their defaults, for listings.

@@ -1,25 +1,86 @@
-// What an algorithm consumes of a problem (DESIGN.md "A problem offers
-// views"): ICP algorithms need the CSP view; relaxed solvers the
-// measurement-set view (one contractor per measurement); the particle filter
-// the probabilistic view (motion model and likelihood). The harness pairs
-// algorithms with problems by view and records other pairs as skipped.
+// What an estimator consumes of a problem's step (DESIGN.md "A problem is a
+// stream of steps with their truth, offering views"):
+//   - the CSP view, for ICP: constraints over a window of states, each
+//     variable tagged with the state and time step it stands for;
+//   - the measurement-set view, for the relaxed solvers: a prior box and one
+//     contractor per measurement, some of which may be outliers;
+//   - the probabilistic view, for the particle filter: a prior and a motion
+//     model to sample, a measurement likelihood to weigh with.
+// A problem offers some of them at every step; an algorithm needs one. The
+// harness records a pair whose views do not meet as skipped.
 #ifndef ICPBENCH_CORE_VIEW_H_
 #define ICPBENCH_CORE_VIEW_H_
 
+#include <functional>
+#include <memory>
+#include <optional>
+#include <random>
 #include <string_view>
+#include <vector>
+
+#include "core/box.h"
+#include "core/constraint_system.h"
+#include "core/contractor.h"
+#include "core/estimate.h"
 
 namespace icp {
 
 enum class View { kCsp, kMeasurementSet, kProbabilistic };
+// "csp", "measurement-set", "probabilistic": the words of `icpbench list`.
+std::string_view ToString(View view);
 
-inline std::string_view ToString(View view) {
-  switch (view) {
-    case View::kCsp: return "csp";
-    case View::kMeasurementSet: return "measurement-set";
-    case View::kProbabilistic: return "probabilistic";
-  }
-  return "?";
-}
+// The state a CSP variable stands for: component `component` of the state
+// space at time step `time` (absolute, so the same state in two windows has
+// the same identity).
+struct StateRef {
+  int time = 0;
+  int component = 0;
+  friend bool operator==(const StateRef&, const StateRef&) = default;
+  friend auto operator<=>(const StateRef&, const StateRef&) = default;
+};
+
+struct CspView {
+  // Its domains come from the measurements alone: nothing of an earlier
+  // step's result is in them (an estimator carries that itself).
+  ConstraintSystem csp;
+  // One per CSP variable.
+  std::vector<StateRef> states;
+  // The time step whose state the step estimates (the window's newest).
+  int newest = 0;
+};
+
+struct MeasurementSetView {
+  // The search box: every component of the state.
+  Box prior;
+  // One contractor per measurement, each sound for its own measurement: it
+  // never removes a state consistent with it.
+  std::vector<std::shared_ptr<Contractor>> measurements;
+  // Which measurements are outliers (inconsistent with the truth), when the
+  // truth is known; empty otherwise. For metrics, never for estimators.
+  std::vector<bool> outliers;
+};
+
+using RandomEngine = std::mt19937_64;
+
+struct ProbabilisticView {
+  // Draws a state from the prior of the first step.
+  std::function<std::vector<double>(RandomEngine&)> sample_prior;
+  // Moves a state from the previous step to this one by a draw of the motion
+  // model (identity at the first step).
+  std::function<void(std::vector<double>& state, RandomEngine&)> sample_motion;
+  // Log-likelihood of this step's measurements given a state.
+  std::function<double(const std::vector<double>& state)> log_likelihood;
+};
+
+// Everything an estimator may see of a step. The truth is not here.
+struct Views {
+  int step = 0;
+  StateSpace space;
+  std::optional<CspView> csp;
+  std::optional<MeasurementSetView> measurement_set;
+  std::optional<ProbabilisticView> probabilistic;
+  bool Offers(View view) const;
+};
 
 }  // namespace icp
 

@@ -98,6 +98,79 @@ double Quantile(std::vector<double> values, double p) {
   return a + frac * (b - a);
 }
 
+namespace {
+// truth moved by the multiple of period that brings it nearest to x's
+// midpoint (truth itself for a plain component or an unbounded x).
+double Representative(double truth, double period, const Interval& x) {
+  if (period <= 0 || x.IsEmpty() || !(x.Width() < kInf)) return truth;
+  const double turns = std::round(((x.lo() + x.hi()) / 2 - truth) / period);
+  return turns == 0 ? truth : truth + turns * period;
+}
+
+// The box every estimate of the step lies in.
+Box Domains(const Views& views) {
+  Box region(static_cast<std::size_t>(views.space.size()));
+  if (views.csp) {
+    const CspView& v = *views.csp;
+    for (std::size_t i = 0; i < v.states.size(); ++i)
+      if (v.states[i].time == v.newest) region[v.states[i].component] = v.csp.domains()[i];
+  } else if (views.measurement_set) {
+    region = views.measurement_set->prior;
+  }
+  return region;
+}
+}  // namespace
+
+StepRecord MeasureStep(const Step& step, const Estimate& estimate) {
+  const StateSpace& space = step.views.space;
+  const Box hull = estimate.Hull();
+  const bool empty = hull.IsEmpty();
+  const bool known = !step.truth.empty();
+  StepRecord r;
+  r.step = step.views.step;
+  r.estimate = std::string(estimate.Kind());
+  std::vector<double> truth = step.truth;
+  for (int c = 0; c < space.size(); ++c) {
+    VariableRecord v;
+    v.name = space.names[c];
+    v.lo = empty ? kInf : hull[c].lo();
+    v.hi = empty ? -kInf : hull[c].hi();
+    if (known) truth[c] = Representative(truth[c], space.Period(c), hull[c]);
+    v.truth = known ? truth[c] : kNaN;
+    r.vars.push_back(v);
+  }
+  r.contained = known ? (!empty && estimate.Contains(truth) ? 1 : 0) : -1;
+  r.area = kNaN;
+  r.centre_error = kNaN;
+  if (space.x >= 0 && space.y >= 0 && !empty) {
+    r.area = estimate.Area(space.x, space.y);
+    const std::vector<double> centre = estimate.Centre();
+    if (known && !centre.empty())
+      r.centre_error = std::hypot(centre[space.x] - truth[space.x], centre[space.y] - truth[space.y]);
+  }
+  return r;
+}
+
+std::string InvalidEstimateReason(const Views& views, const Estimate& estimate) {
+  const Box hull = estimate.Hull();
+  if (static_cast<int>(hull.size()) != views.space.size())
+    return "the estimate has " + std::to_string(hull.size()) + " components, the state " +
+           std::to_string(views.space.size());
+  if (hull.IsEmpty()) return "";
+  const Box domains = Domains(views);
+  for (int c = 0; c < views.space.size(); ++c) {
+    const std::string& name = views.space.names[c];
+    if (std::isnan(hull[c].lo()) || std::isnan(hull[c].hi())) return name + " has a NaN bound";
+    const double period = views.space.Period(c);
+    if (period > 0 && !(domains[c].Width() < period)) continue;  // any frame is fine
+    if (!hull[c].IsSubsetOf(domains[c]))
+      return name + " = [" + FormatDouble(hull[c].lo()) + ", " + FormatDouble(hull[c].hi()) +
+             "] is not inside its domain [" + FormatDouble(domains[c].lo()) + ", " +
+             FormatDouble(domains[c].hi()) + "]";
+  }
+  return "";
+}
+
 RunMetrics ComputeMetrics(const std::vector<StepRecord>& steps, std::uint64_t bootstrap_seed) {
   RunMetrics m;
   m.steps = static_cast<int>(steps.size());

@@ -5,9 +5,25 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/estimate.h"
 #include "harness/run_record.h"
+#include "problems/problem.h"
 
 namespace icp {
+
+// The metrics of one step from its estimate and truth, whatever the kind of
+// estimate: each component's hull bounds and truth, containment of the truth
+// (paper 004 eq. 31), the x-y area and the centre error. A periodic
+// component's truth is moved by the multiple of its period nearest to the
+// hull's midpoint, so a heading estimated in another frame (2 pi apart) is
+// judged exactly. status, solve time and properties are left to the caller.
+StepRecord MeasureStep(const Step& step, const Estimate& estimate);
+
+// Why an estimate cannot be the answer to the step, or "" when it can: a
+// hull of the wrong dimension, a NaN bound, or a component outside the
+// step's domains (the CSP view's newest state, the measurement set's prior;
+// a periodic component is compared modulo its period).
+std::string InvalidEstimateReason(const Views& views, const Estimate& estimate);
 
 // Aggregates steps: mean area, consistency rate, centre RMSE, corridors, and
 // mean/median/p90 solve time with a bootstrap 95% interval of the mean

@@ -1,5 +1,8 @@
 #include "harness/report.h"
 
+#include "algorithms/registry.h"
+#include "problems/registry.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -385,7 +388,31 @@ std::string Overview(const std::vector<RunRecord>& runs) {
       << counts[2] << " timeout, " << counts[3] << " skipped. Machines: "
       << Distinct(runs, &Provenance::machine)
       << ". Revisions: " << Distinct(runs, &Provenance::git_revision) << ".";
+  std::set<std::string> revisions;
+  for (const RunRecord& r : runs)
+    if (r.status == RunStatus::kOk) revisions.insert(r.provenance.git_revision);
+  if (revisions.size() > 1)
+    out << " Note: the tables mix runs of " << revisions.size()
+        << " code revisions; rerun with --force to measure one.";
   return out.str();
+}
+
+// The current defaults of a plugin's parameters ({} for an unknown plugin).
+template <class Info>
+ParamMap Defaults(const Info& info) {
+  ParamMap out;
+  for (const ParamInfo& p : info.params(info.name)) out[p.name] = p.default_value;
+  return out;
+}
+ParamMap AlgorithmDefaults(const std::string& name) {
+  for (const AlgorithmInfo& a : Algorithms())
+    if (a.name == name) return Defaults(a);
+  return {};
+}
+ParamMap ProblemDefaults(const std::string& name) {
+  for (const ProblemInfo& p : Problems())
+    if (p.name == name) return Defaults(p);
+  return {};
 }
 
 }  // namespace
@@ -605,7 +632,21 @@ std::vector<RunRecord> LoadRunsFromDirectory(const std::string& dir) {
   if (!std::filesystem::is_regular_file(path)) {
     throw std::runtime_error("no results store in '" + dir + "' (expected " + path + ")");
   }
-  return ResultsStore(path).LoadRuns(/*with_steps=*/true);
+  std::vector<RunRecord> runs = ResultsStore(path).LoadRuns(/*with_steps=*/true);
+  for (RunRecord& r : runs) {
+    r.spec.algorithm_params = NonDefaultParams(AlgorithmDefaults(r.spec.algorithm), r.spec.algorithm_params);
+    r.spec.problem_params = NonDefaultParams(ProblemDefaults(r.spec.problem), r.spec.problem_params);
+  }
+  return runs;
+}
+
+ParamMap NonDefaultParams(const ParamMap& defaults, const ParamMap& params) {
+  ParamMap out;
+  for (const auto& [key, value] : params) {
+    const auto it = defaults.find(key);
+    if (it == defaults.end() || it->second != value) out[key] = value;
+  }
+  return out;
 }
 
 std::string ReportDirectory(const std::string& dir, const std::string& format) {

@@ -48,7 +48,10 @@ std::string Report(const std::vector<RunRecord>& runs, const std::string& format
 std::string ReportDirectory(const std::string& dir, const std::string& format);
 
 // Loads every run of the store in dir with its steps; the shared entry of
-// ReportDirectory and the plots. Throws as ReportDirectory.
+// ReportDirectory and the plots. The store keeps effective parameters; the
+// runs come back with only those that differ from the current defaults
+// (NonDefaultParams), which is what the tables show. Throws as
+// ReportDirectory.
 std::vector<RunRecord> LoadRunsFromDirectory(const std::string& dir);
 
 // The runs of one configuration, aggregated over seeds (see the top).
@@ -72,6 +75,10 @@ struct GroupSummary {
   // The ok runs, in store order (pointers into the input vector).
   std::vector<const RunRecord*> ok_runs;
 };
+
+// The entries of params whose value differs from defaults (or that defaults
+// lacks).
+ParamMap NonDefaultParams(const ParamMap& defaults, const ParamMap& params);
 
 // Groups runs by (algorithm, algorithm params, problem, problem params),
 // ordered by problem, problem params, algorithm (paper order: hc3, hc4, bc3,

@@ -11,13 +11,15 @@
 #include <string_view>
 #include <system_error>
 #include <unordered_map>
+#include <type_traits>
 #include <utility>
+#include <variant>
 
 namespace icp {
 
 namespace {
 
-constexpr int kSchemaVersion = 1;
+constexpr int kSchemaVersion = 2;
 constexpr int kBusyTimeoutMs = 30000;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -26,7 +28,11 @@ constexpr const char* kConventions =
     "0 (not) or NULL (truth unknown); empty boxes have lo=+inf, hi=-inf; times in s, areas in "
     "m^2, distances in m; *_params are JSON objects of text values; corridors is a JSON array "
     "(NaN as null, +-inf as \"inf\"/\"-inf\"); seed is the uint64 read as int64; step_values.pos "
-    "is the variable's place in its step (0-based).";
+    "is the variable's place in its step (0-based); steps.estimate is the estimate's kind "
+    "(box, paving, accumulator, particles); step_properties and run_properties hold what an "
+    "estimator reports beyond the typed columns, as (name, type, value) with type int, real or "
+    "text and value of that SQL type; *_params hold the effective parameters (defaults "
+    "resolved), as the run key does.";
 
 constexpr const char* kSchema = R"sql(
 CREATE TABLE IF NOT EXISTS meta (
@@ -70,6 +76,7 @@ CREATE TABLE IF NOT EXISTS steps (
   area REAL,
   centre_error REAL,
   solve_time_s REAL,
+  estimate TEXT,
   PRIMARY KEY (run_id, step)
 ) WITHOUT ROWID;
 CREATE TABLE IF NOT EXISTS step_values (
@@ -83,6 +90,26 @@ CREATE TABLE IF NOT EXISTS step_values (
   PRIMARY KEY (run_id, step, pos),
   UNIQUE (run_id, step, var),
   FOREIGN KEY (run_id, step) REFERENCES steps(run_id, step)
+) WITHOUT ROWID;
+)sql";
+
+// Tables added by version 2; also the migration of a version-1 store.
+constexpr const char* kPropertiesSchema = R"sql(
+CREATE TABLE IF NOT EXISTS step_properties (
+  run_id INTEGER NOT NULL,
+  step INTEGER NOT NULL,
+  name TEXT NOT NULL,
+  type TEXT NOT NULL,
+  value,
+  PRIMARY KEY (run_id, step, name),
+  FOREIGN KEY (run_id, step) REFERENCES steps(run_id, step)
+) WITHOUT ROWID;
+CREATE TABLE IF NOT EXISTS run_properties (
+  run_id INTEGER NOT NULL REFERENCES runs(id),
+  name TEXT NOT NULL,
+  type TEXT NOT NULL,
+  value,
+  PRIMARY KEY (run_id, name)
 ) WITHOUT ROWID;
 )sql";
 
@@ -211,12 +238,32 @@ void CheckOrCreateSchema(sqlite3* db, const std::string& path, bool may_create) 
     q.Step();
     return q.ColumnInt(0);
   };
-  auto check_version = [&] {
+  auto version = [&] {
     Statement q(db, path, "SELECT value FROM meta WHERE key='schema_version'");
-    std::string version = q.Step() ? q.ColumnText(0) : "";
-    if (version != std::to_string(kSchemaVersion)) {
-      throw StoreError("results store '" + path + "': schema version '" + version +
-                       "', this build reads version " + std::to_string(kSchemaVersion));
+    return q.Step() ? q.ColumnText(0) : std::string();
+  };
+  auto check_version = [&] {
+    const std::string v = version();
+    if (v == "1" && may_create) {
+      // Version 1 lacks the estimate kind and the open properties; its runs
+      // keep their keys (typed parameters), so a rerun of their spec, now
+      // keyed on effective parameters, runs them again.
+      InTransaction(db, path, [&] {
+        if (version() != "1") return;  // another process migrated it meanwhile
+        Exec(db, path, "ALTER TABLE steps ADD COLUMN estimate TEXT");
+        Exec(db, path, kPropertiesSchema);
+        Exec(db, path, "UPDATE meta SET value = '2' WHERE key = 'schema_version'");
+        Statement conventions(db, path, "UPDATE meta SET value = ? WHERE key = 'conventions'");
+        conventions.Text(1, kConventions);
+        conventions.Run();
+      });
+      return;
+    }
+    if (version() != std::to_string(kSchemaVersion)) {
+      throw StoreError("results store '" + path + "': schema version '" + v +
+                       "', this build reads version " + std::to_string(kSchemaVersion) +
+                       (v == "1" ? " (a version-1 store is migrated when opened for writing)"
+                                 : " and migrates version 1"));
     }
   };
   // Reading the catalogue is also what reports "file is not a database".
@@ -232,6 +279,7 @@ void CheckOrCreateSchema(sqlite3* db, const std::string& path, bool may_create) 
     if (has_meta()) return;  // another process created it meanwhile
     if (table_count() > 0) throw not_a_store();
     Exec(db, path, kSchema);
+    Exec(db, path, kPropertiesSchema);
     Statement insert(db, path, "INSERT INTO meta(key, value) VALUES (?, ?)");
     const std::pair<const char*, std::string> rows[] = {
         {"schema_version", std::to_string(kSchemaVersion)},
@@ -318,6 +366,30 @@ std::vector<Corridor> CorridorsFromJson(const std::string& text, const std::stri
   return corridors;
 }
 
+// Binds a property's name, type and value to columns i, i + 1, i + 2.
+void BindProperty(Statement& q, int i, const Property& p) {
+  q.Text(i, p.name);
+  q.Text(i + 1, TypeName(p));
+  std::visit(
+      [&](const auto& v) {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, std::int64_t>) q.Int(i + 2, v);
+        else if constexpr (std::is_same_v<T, double>) q.Double(i + 2, v);
+        else q.Text(i + 2, v);
+      },
+      p.value);
+}
+
+// A property from columns name, type, value at i, i + 1, i + 2.
+Property ReadProperty(const Statement& q, int i) {
+  Property p{q.ColumnText(i), std::int64_t{0}};
+  const std::string type = q.ColumnText(i + 1);
+  if (type == "int") p.value = q.ColumnInt(i + 2);
+  else if (type == "real") p.value = q.ColumnDouble(i + 2);
+  else p.value = q.ColumnText(i + 2);
+  return p;
+}
+
 // Writes one run with its steps, replacing a run with the same key. Runs
 // inside the caller's transaction.
 void WriteRun(sqlite3* db, const std::string& path, const RunRecord& run) {
@@ -328,6 +400,8 @@ void WriteRun(sqlite3* db, const std::string& path, const RunRecord& run) {
     if (find.Step()) {
       const std::int64_t old_id = find.ColumnInt(0);
       for (const char* sql : {"DELETE FROM step_values WHERE run_id = ?",
+                              "DELETE FROM step_properties WHERE run_id = ?",
+                              "DELETE FROM run_properties WHERE run_id = ?",
                               "DELETE FROM steps WHERE run_id = ?", "DELETE FROM runs WHERE id = ?"}) {
         Statement del(db, path, sql);
         del.Int(1, old_id);
@@ -370,10 +444,24 @@ void WriteRun(sqlite3* db, const std::string& path, const RunRecord& run) {
   insert.Text(++i, p.date);
   insert.Run();
   const std::int64_t run_id = sqlite3_last_insert_rowid(db);
+  {
+    Statement run_property(db, path,
+                           "INSERT OR REPLACE INTO run_properties (run_id, name, type, value) "
+                           "VALUES (?,?,?,?)");
+    for (const Property& p : run.properties) {
+      run_property.Int(1, run_id);
+      BindProperty(run_property, 2, p);
+      run_property.Run();
+      run_property.Reset();
+    }
+  }
 
   Statement step_insert(db, path,
                         "INSERT INTO steps (run_id, step, status, contained, area, centre_error, "
-                        "solve_time_s) VALUES (?,?,?,?,?,?,?)");
+                        "solve_time_s, estimate) VALUES (?,?,?,?,?,?,?,?)");
+  Statement property_insert(db, path,
+                            "INSERT OR REPLACE INTO step_properties (run_id, step, name, type, value) "
+                            "VALUES (?,?,?,?,?)");
   Statement value_insert(db, path,
                          "INSERT INTO step_values (run_id, step, var, pos, lo, hi, truth) "
                          "VALUES (?,?,?,?,?,?,?)");
@@ -389,8 +477,16 @@ void WriteRun(sqlite3* db, const std::string& path, const RunRecord& run) {
     step_insert.Double(5, s.area);
     step_insert.Double(6, s.centre_error);
     step_insert.Double(7, s.solve_time_s);
+    step_insert.Text(8, s.estimate);
     step_insert.Run();
     step_insert.Reset();
+    for (const Property& p : s.properties) {
+      property_insert.Int(1, run_id);
+      property_insert.Int(2, s.step);
+      BindProperty(property_insert, 3, p);
+      property_insert.Run();
+      property_insert.Reset();
+    }
     for (std::size_t pos = 0; pos < s.vars.size(); ++pos) {
       const VariableRecord& v = s.vars[pos];
       value_insert.Int(1, run_id);
@@ -457,8 +553,8 @@ std::vector<RunRecord> ReadRuns(sqlite3* db, const std::string& path, bool with_
 
   {
     Statement q(db, path,
-                "SELECT run_id, step, status, contained, area, centre_error, solve_time_s "
-                "FROM steps ORDER BY run_id, step");
+                "SELECT run_id, step, status, contained, area, centre_error, solve_time_s, "
+                "estimate FROM steps ORDER BY run_id, step");
     RunRecord* run = nullptr;
     std::int64_t run_id = 0;
     while (q.Step()) {
@@ -476,6 +572,7 @@ std::vector<RunRecord> ReadRuns(sqlite3* db, const std::string& path, bool with_
       s.area = q.ColumnDouble(4);
       s.centre_error = q.ColumnDouble(5);
       s.solve_time_s = q.ColumnDouble(6);
+      s.estimate = q.IsNull(7) ? "box" : q.ColumnText(7);  // version 1 stored boxes only
       run->steps.push_back(std::move(s));
     }
   }
@@ -508,6 +605,27 @@ std::vector<RunRecord> ReadRuns(sqlite3* db, const std::string& path, bool with_
       v.hi = q.ColumnDouble(4);
       v.truth = q.ColumnDouble(5);
       step->vars.push_back(std::move(v));
+    }
+  }
+  {
+    Statement q(db, path, "SELECT run_id, name, type, value FROM run_properties ORDER BY run_id, name");
+    while (q.Step()) {
+      auto it = index_of.find(q.ColumnInt(0));
+      if (it != index_of.end()) runs[it->second].properties.push_back(ReadProperty(q, 1));
+    }
+  }
+  {
+    Statement q(db, path,
+                "SELECT run_id, step, name, type, value FROM step_properties "
+                "ORDER BY run_id, step, name");
+    while (q.Step()) {
+      auto it = index_of.find(q.ColumnInt(0));
+      if (it == index_of.end()) continue;
+      std::vector<StepRecord>& steps = runs[it->second].steps;
+      const std::int64_t number = q.ColumnInt(1);
+      auto s = std::lower_bound(steps.begin(), steps.end(), number,
+                                [](const StepRecord& a, std::int64_t n) { return a.step < n; });
+      if (s != steps.end() && s->step == number) s->properties.push_back(ReadProperty(q, 2));
     }
   }
   return runs;

@@ -4,16 +4,24 @@
 // one transaction when it finishes, so a sweep that dies loses only the runs
 // in flight; reading a spec again skips the runs whose key is stored.
 //
-// Schema (version 1, recorded in table meta with the conventions below):
+// Schema (version 2, recorded in table meta with the conventions below; a
+// version-1 store is migrated when opened):
 //   meta(key, value)                      schema_version, conventions
 //   runs(id, key UNIQUE, spec_file, algorithm, algorithm_params JSON,
 //        problem, problem_params JSON, seed, timeout_s, status, reason,
 //        wall_time_s, steps, <RunMetrics fields>, corridors JSON,
 //        <Provenance fields>)             one row per run, id = insertion order
-//   steps(run_id, step, status, contained, area, centre_error, solve_time_s)
+//   steps(run_id, step, status, contained, area, centre_error, solve_time_s,
+//         estimate)                      estimate: box|paving|accumulator|particles
 //   step_values(run_id, step, pos, var, lo, hi, truth)
 //                                         pos: the variable's place in the step;
 //                                         keyed by (run_id, step, pos), var unique
+//   step_properties(run_id, step, name, type, value)
+//   run_properties(run_id, name, type, value)
+//                                         what an estimator reports beyond the
+//                                         columns; type int|real|text, value of
+//                                         that SQL type; one value per name (the
+//                                         last reported wins); loaded sorted by name
 // Values: a NaN double is stored as NULL; +-inf as SQL REAL infinities (so
 // empty boxes keep lo = +inf, hi = -inf); contained -1 (unknown) as NULL, so
 // SQL aggregates skip unknown truths; seed as INTEGER, the uint64 read

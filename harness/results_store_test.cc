@@ -240,7 +240,7 @@ TEST(ResultsStoreTest, FileIsSelfDescribingWithTypedColumns) {
     ResultsStore store(path);
     store.Insert(MakeRun(2, 10));
   }
-  EXPECT_EQ(RawQuery(path, "SELECT value FROM meta WHERE key='schema_version'"), "1");
+  EXPECT_EQ(RawQuery(path, "SELECT value FROM meta WHERE key='schema_version'"), "2");
   EXPECT_EQ(RawQuery(path, "PRAGMA journal_mode"), "wal");
   EXPECT_EQ(RawQuery(path, "SELECT typeof(seed) || typeof(timeout_s) || typeof(wall_time_s) FROM runs"),
             "integerrealreal");

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/estimate.h"
 #include "core/params.h"
 
 namespace icp {
@@ -23,12 +24,16 @@ struct VariableRecord {
 
 struct StepRecord {
   int step = 0;
-  std::string status;          // the contractor's: contracted|fixpoint|empty|stopped
+  std::string status;          // the estimator's: contracted|fixpoint|empty|stopped
+  std::string estimate;        // its kind: box|paving|accumulator|particles
   std::vector<VariableRecord> vars;
   int contained = -1;          // truth inside the box: 1 yes, 0 no, -1 unknown
   double area = 0;             // x-y area, m^2; NaN without a planar position
   double centre_error = 0;     // distance box centre - truth, m; NaN if unknown
-  double solve_time_s = 0;     // wall time of the contraction alone
+  double solve_time_s = 0;     // wall time of the estimator's step alone
+  // What the estimator and its estimate report beyond these (work counters,
+  // message, box count, effective sample size...).
+  Properties properties;
 };
 
 // The interval error corridor of one variable over a run (paper 000 §5:
@@ -63,7 +68,10 @@ struct RunSpec {
   std::uint64_t seed = 0;
   double timeout_s = 0;  // 0: none. Not part of the key.
   // A canonical text of everything but the timeout, e.g.
-  // "hc4{ratio=0.01}|car-track{w=20}|seed=3". Params are in key order; a
+  // "hc4{carry=first,max_revise_calls=1000000,ratio=0.001}|car-track{...}|seed=3".
+  // The harness keys runs on effective parameters (every declared one,
+  // defaults resolved, canonical spelling: ResolveParams), so equal
+  // computations share a key and a changed default is a new run. Params are in key order; a
   // backslash precedes any of \ { } = , | inside a name, key or value, so
   // two different specs never share a key.
   std::string Key() const;
@@ -90,6 +98,7 @@ struct RunRecord {
   double wall_time_s = 0;
   std::vector<StepRecord> steps;
   RunMetrics metrics;
+  Properties properties;   // the estimator's totals over the run
   Provenance provenance;
 };
 

@@ -14,6 +14,8 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <set>
+#include <type_traits>
+#include <variant>
 
 #include "algorithms/registry.h"
 #include "harness/metrics.h"
@@ -32,90 +34,50 @@ double Seconds(Clock::duration d) { return std::chrono::duration<double>(d).coun
 
 // --- One run -------------------------------------------------------------
 
-// Checks that a contracted box is a box of the CSP inside its initial box.
-std::string InvalidBoxReason(const Box& initial, const Box& result) {
-  if (result.size() != initial.size())
-    return "the box has " + std::to_string(result.size()) + " components, the CSP " +
-           std::to_string(initial.size());
-  if (result.IsEmpty()) return "";
-  for (std::size_t i = 0; i < result.size(); ++i) {
-    if (std::isnan(result[i].lo()) || std::isnan(result[i].hi()))
-      return "component " + std::to_string(i) + " has a NaN bound";
-    if (!result[i].IsSubsetOf(initial[i]))
-      return "component " + std::to_string(i) + " grew beyond its initial domain";
-  }
-  return "";
-}
-
-StepRecord RecordStep(const Step& step, const Box& box, const ContractSummary& summary,
-                      double solve_time_s) {
-  StepRecord r;
-  r.step = step.index;
-  r.status = std::string(ToString(summary.status));
-  r.solve_time_s = solve_time_s;
-  std::vector<ReportedVariable> reported = step.reported;
-  if (reported.empty())
-    for (int i = 0; i < step.csp.num_variables(); ++i) reported.push_back({step.csp.names()[i], i});
-  const bool known = !step.truth.empty();
-  const bool empty = box.IsEmpty();
-  bool contained = true;
-  for (const ReportedVariable& v : reported) {
-    VariableRecord vr;
-    vr.name = v.name;
-    vr.lo = empty ? kInf : box[v.index].lo();
-    vr.hi = empty ? -kInf : box[v.index].hi();
-    vr.truth = known ? step.truth[v.index] : kNaN;
-    if (known && !(vr.lo <= vr.truth && vr.truth <= vr.hi)) contained = false;
-    r.vars.push_back(vr);
-  }
-  r.contained = known ? (contained ? 1 : 0) : -1;
-  r.area = kNaN;
-  r.centre_error = kNaN;
-  if (step.x >= 0 && step.y >= 0 && !empty) {
-    const VariableRecord& x = r.vars[step.x];
-    const VariableRecord& y = r.vars[step.y];
-    r.area = ExactRounding().mul_up(x.hi - x.lo, y.hi - y.lo);
-    if (known) r.centre_error = std::hypot((x.lo + x.hi) / 2 - x.truth, (y.lo + y.hi) / 2 - y.truth);
-  }
-  return r;
-}
-
 }  // namespace
 
 RunRecord ExecuteRun(const RunSpec& spec) {
   RunRecord record;
   record.spec = spec;
   const auto start = Clock::now();
+  int step_index = 0;
+  std::unique_ptr<Estimator> estimator;
   try {
     const AlgorithmInfo& algorithm = FindAlgorithm(spec.algorithm);
     std::unique_ptr<Problem> problem = FindProblem(spec.problem).make(spec.problem_params, spec.seed);
+    estimator = algorithm.make(spec.algorithm_params, spec.seed);
     StopCondition stop = spec.timeout_s > 0
                              ? StopCondition::After(std::chrono::duration<double>(spec.timeout_s))
                              : StopCondition();
     Step step;
-    Box previous;
-    bool has_previous = false;
-    while (problem->Next(has_previous ? &previous : nullptr, &step)) {
-      std::unique_ptr<Contractor> contractor = algorithm.make(spec.algorithm_params, step.csp);
-      Box box = step.csp.domains();
+    while (problem->Next(&step)) {
+      step_index = step.views.step;
+      if (!step.views.Offers(algorithm.needs))
+        throw std::invalid_argument("step " + std::to_string(step_index) + " offers no " +
+                                    std::string(ToString(algorithm.needs)) + " view");
       const auto t0 = Clock::now();
-      ContractSummary summary = contractor->Contract(box, stop);
+      StepResult result = estimator->Step(step.views, stop);
       const double solve_time = Seconds(Clock::now() - t0);
-      if (std::string why = InvalidBoxReason(step.csp.domains(), box); !why.empty()) {
-        record.status = RunStatus::kFailed;
-        record.reason = "invalid result at step " + std::to_string(step.index) + ": " + why;
-        break;
-      }
-      record.steps.push_back(RecordStep(step, box, summary, solve_time));
-      if (summary.status == ContractStatus::kStopped && stop.ShouldStop()) {
+      if (!result.estimate) throw InvalidResult("no estimate");
+      if (std::string why = InvalidEstimateReason(step.views, *result.estimate); !why.empty())
+        throw InvalidResult(why);
+      StepRecord r = MeasureStep(step, *result.estimate);
+      r.status = std::string(ToString(result.summary.status));
+      r.solve_time_s = solve_time;
+      r.properties = std::move(result.properties);
+      for (Property& p : result.estimate->Extras()) r.properties.push_back(std::move(p));
+      if (!result.summary.message.empty()) r.properties.push_back({"message", result.summary.message});
+      record.steps.push_back(std::move(r));
+      if (result.summary.status == ContractStatus::kStopped && stop.ShouldStop()) {
         record.status = RunStatus::kTimeout;
         record.reason = "time limit of " + FormatDouble(spec.timeout_s) + " s reached at step " +
-                        std::to_string(step.index);
+                        std::to_string(step_index);
         break;
       }
-      previous = box;
-      has_previous = true;
     }
+  } catch (const InvalidResult& e) {
+    record.status = RunStatus::kFailed;
+    record.reason = "invalid result at step " + std::to_string(step_index) + ": " + e.what();
   } catch (const std::exception& e) {
     record.status = RunStatus::kFailed;
     record.reason = std::string("exception: ") + e.what();
@@ -123,6 +85,7 @@ RunRecord ExecuteRun(const RunSpec& spec) {
     record.status = RunStatus::kFailed;
     record.reason = "exception of unknown type";
   }
+  if (estimator) record.properties = estimator->RunProperties();
   record.wall_time_s = Seconds(Clock::now() - start);
   record.metrics = ComputeMetrics(record.steps, spec.seed);
   return record;
@@ -159,17 +122,43 @@ double D(const nlohmann::json& j) {
   return kNaN;
 }
 
+nlohmann::json PropertiesToJson(const Properties& properties) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const Property& p : properties) {
+    nlohmann::json value;
+    std::visit([&](const auto& v) {
+      if constexpr (std::is_same_v<std::decay_t<decltype(v)>, double>) value = D(v); else value = v;
+    }, p.value);
+    out.push_back({p.name, TypeName(p), value});
+  }
+  return out;
+}
+
+Properties PropertiesFromJson(const nlohmann::json& j) {
+  Properties out;
+  for (const auto& p : j) {
+    const std::string type = p.at(1).get<std::string>();
+    Property prop{p.at(0).get<std::string>(), std::int64_t{0}};
+    if (type == "int") prop.value = p.at(2).get<std::int64_t>();
+    else if (type == "real") prop.value = D(p.at(2));
+    else prop.value = p.at(2).get<std::string>();
+    out.push_back(std::move(prop));
+  }
+  return out;
+}
+
 std::string Serialize(const RunRecord& r) {
   nlohmann::json steps = nlohmann::json::array();
   for (const StepRecord& s : r.steps) {
     nlohmann::json vars = nlohmann::json::array();
     for (const VariableRecord& v : s.vars) vars.push_back({v.name, D(v.lo), D(v.hi), D(v.truth)});
     steps.push_back({s.step, s.status, vars, s.contained, D(s.area), D(s.centre_error),
-                     D(s.solve_time_s)});
+                     D(s.solve_time_s), s.estimate, PropertiesToJson(s.properties)});
   }
   nlohmann::json out = {{"status", ToString(r.status)}, {"reason", r.reason},
-                        {"wall_time_s", D(r.wall_time_s)}, {"steps", steps}};
-  return out.dump();
+                        {"wall_time_s", D(r.wall_time_s)}, {"steps", steps},
+                        {"properties", PropertiesToJson(r.properties)}};
+  return out.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 RunRecord Deserialize(const std::string& text, const RunSpec& spec) {
@@ -188,8 +177,11 @@ RunRecord Deserialize(const std::string& text, const RunSpec& spec) {
     sr.area = D(s.at(4));
     sr.centre_error = D(s.at(5));
     sr.solve_time_s = D(s.at(6));
+    sr.estimate = s.at(7).get<std::string>();
+    sr.properties = PropertiesFromJson(s.at(8));
     r.steps.push_back(std::move(sr));
   }
+  r.properties = PropertiesFromJson(j.at("properties"));
   r.metrics = ComputeMetrics(r.steps, spec.seed);
   return r;
 }

@@ -40,7 +40,11 @@ SolveResult Solve(const SolveOptions& options) {
   SolveResult result;
   result.algorithm = info.name;
   result.csp = ParseMinibexFile(options.file);
-  std::unique_ptr<Contractor> contractor = info.make(ParseKeyValues(options.params), result.csp);
+  if (info.contractor == nullptr)
+    throw std::invalid_argument("solve: '" + info.name + "' is not a CSP contractor (it runs through `icpbench run`)");
+  const ParamMap params = ParseKeyValues(options.params);
+  info.resolve(info.name, params);  // every key checked, `carry` included
+  std::unique_ptr<Contractor> contractor = info.contractor(ContractorParams(params), result.csp);
   std::vector<double> times;
   for (int r = 0; r < options.repeat; ++r) {
     Box box = result.csp.domains();

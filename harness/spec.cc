@@ -131,17 +131,21 @@ class Reader {
     return {name, grid};
   }
 
-  // Validates each grid point; ParamError becomes a SpecError at the node.
-  template <class Validate>
-  void ValidateGrid(const YAML::Node& node, const std::string& where, const std::string& name,
-                    const std::vector<ParamMap>& grid, Validate validate) const {
+  // Resolves each grid point to its effective parameters (ParamResolver);
+  // ParamError becomes a SpecError at the node.
+  template <class Resolve>
+  std::vector<ParamMap> ResolveGrid(const YAML::Node& node, const std::string& where,
+                                    const std::string& name, const std::vector<ParamMap>& grid,
+                                    Resolve resolve) const {
+    std::vector<ParamMap> out;
     for (const ParamMap& m : grid) {
       try {
-        validate(name, m);
+        out.push_back(resolve(name, m));
       } catch (const std::invalid_argument& e) {
         Fail(node.IsMap() && node["params"] ? node["params"] : node, where, e.what());
       }
     }
+    return out;
   }
 
   void Experiment(const YAML::Node& node, const std::string& where, const std::string& name,
@@ -156,19 +160,20 @@ class Reader {
     struct Entry {
       std::string name;
       std::vector<ParamMap> grid;
+      YAML::Node node;
+      std::string at;
     };
     std::vector<Entry> algs, probs;
+    std::set<std::string> legacy_carry;
     for (std::size_t i = 0; i < algorithms.size(); ++i) {
       const std::string at = Join(where, "algorithms[" + std::to_string(i) + "]");
       auto [alg, grid] = Plugin(algorithms[i], at);
-      const AlgorithmInfo* info = nullptr;
       try {
-        info = &FindAlgorithm(alg);
+        FindAlgorithm(alg);
       } catch (const std::invalid_argument& e) {
         Fail(algorithms[i], at, e.what());
       }
-      ValidateGrid(algorithms[i], at, alg, grid, info->validate);
-      algs.push_back({alg, grid});
+      algs.push_back({alg, grid, algorithms[i], at});
     }
     for (std::size_t i = 0; i < problems.size(); ++i) {
       const std::string at = Join(where, "problems[" + std::to_string(i) + "]");
@@ -179,8 +184,29 @@ class Reader {
       } catch (const std::invalid_argument& e) {
         Fail(problems[i], at, e.what());
       }
-      ValidateGrid(problems[i], at, prob, grid, info->validate);
-      probs.push_back({prob, grid});
+      // car-track's `carry` moved to the algorithms (issue 8): a spec that
+      // still gives it there means it for every algorithm of the experiment.
+      for (ParamMap& m : grid)
+        if (prob == "car-track" && m.count("carry")) {
+          legacy_carry.insert(m["carry"]);
+          m.erase("carry");
+        }
+      probs.push_back({prob, ResolveGrid(problems[i], at, prob, grid, info->resolve), problems[i], at});
+    }
+    if (legacy_carry.size() > 1)
+      Fail(problems, Join(where, "problems"),
+           "car-track.carry moved to the algorithms; give one value per experiment, or write "
+           "{name: hc4, params: {carry: [...]}}");
+    for (Entry& a : algs) {
+      const AlgorithmInfo& info = FindAlgorithm(a.name);
+      if (!legacy_carry.empty()) {
+        bool declared = false;
+        for (const ParamInfo& p : info.params(a.name)) declared |= p.name == "carry";
+        if (declared)
+          for (ParamMap& m : a.grid)
+            if (!m.count("carry")) m["carry"] = *legacy_carry.begin();
+      }
+      a.grid = ResolveGrid(a.node, a.at, a.name, a.grid, info.resolve);
     }
     for (const Entry& p : probs) {
       const ProblemInfo& pinfo = FindProblem(p.name);
@@ -188,9 +214,9 @@ class Reader {
         const AlgorithmInfo& ainfo = FindAlgorithm(a.name);
         std::string skip;
         bool offered = false;
-        for (View v : pinfo.views) offered |= v == ainfo.view;
+        for (View v : pinfo.offers) offered |= v == ainfo.needs;
         if (!offered)
-          skip = a.name + " needs the " + std::string(ToString(ainfo.view)) + " view, which " +
+          skip = a.name + " needs the " + std::string(ToString(ainfo.needs)) + " view, which " +
                  p.name + " does not offer";
         for (const ParamMap& pp : p.grid)
           for (const ParamMap& ap : a.grid)

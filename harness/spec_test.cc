@@ -34,10 +34,52 @@ problems:
   for (const PlannedRun& r : spec.runs) {
     if (r.spec.algorithm != "bc4") continue;
     ++bc4;
-    EXPECT_EQ(r.spec.algorithm_params.at("epsilon"), "1e-8");
+    EXPECT_EQ(r.spec.algorithm_params.at("epsilon"), "1e-08");  // canonical spelling
     EXPECT_TRUE(r.skip_reason.empty());
   }
   EXPECT_EQ(bc4, 12);
+}
+
+TEST(SpecTest, RunsAreKeyedOnEffectiveParameters) {
+  // The same computation spelled three ways is one run; its key names every
+  // parameter with its default, so a changed default makes a new key.
+  Spec spec = ParseSpec(R"(
+algorithms:
+  - hc4
+  - {name: hc4, params: {ratio: 0.001}}
+  - {name: hc4, params: {ratio: 1e-3, carry: first, max_revise_calls: 1000000}}
+  - {name: hc4, params: {ratio: 0.01}}
+problems:
+  - chain
+  - {name: chain, params: {w: 20, gps_error: 2.50}}
+)", "spec.yaml");
+  ASSERT_EQ(spec.runs.size(), 2u);
+  const RunSpec& a = spec.runs[0].spec;
+  EXPECT_EQ(a.algorithm_params,
+            (ParamMap{{"carry", "first"}, {"max_revise_calls", "1000000"}, {"ratio", "0.001"}}));
+  EXPECT_EQ(a.problem_params.at("w"), "20");
+  EXPECT_EQ(a.problem_params.at("heading_known"), "false");
+  EXPECT_NE(a.Key().find("ratio=0.001"), std::string::npos) << a.Key();
+  EXPECT_NE(a.Key(), spec.runs[1].spec.Key());
+  EXPECT_EQ(spec.runs[1].spec.algorithm_params.at("ratio"), "0.01");
+}
+
+TEST(SpecTest, CarTracksLegacyCarryMovesToTheAlgorithms) {
+  Spec spec = ParseSpec(R"(
+algorithms: [hc4, bc4]
+problems:
+  - {name: car-track, params: {steps: 5, carry: all}}
+)", "spec.yaml");
+  ASSERT_EQ(spec.runs.size(), 2u);
+  for (const PlannedRun& r : spec.runs) {
+    EXPECT_EQ(r.spec.algorithm_params.at("carry"), "all");
+    EXPECT_EQ(r.spec.problem_params.count("carry"), 0u);
+  }
+  EXPECT_NE(ErrorOf(R"(
+algorithms: [hc4]
+problems:
+  - {name: car-track, params: {carry: [first, all]}}
+)").find("car-track.carry moved to the algorithms"), std::string::npos);
 }
 
 TEST(SpecTest, ExperimentsOverrideSeedsAndTimeoutAndDuplicatesAreRemoved) {

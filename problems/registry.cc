@@ -8,17 +8,21 @@
 
 namespace icp {
 
-const std::vector<ProblemInfo>& Problems() {
-  static const std::vector<ProblemInfo> kProblems = {
+namespace {
+std::vector<ProblemInfo>& Table() {
+  static std::vector<ProblemInfo> table = {
       {"car-track", "a simulated lap (or a CSV log) of the car-track CSP, paper 000 eq. 9-14, window w",
-       &MakeCarTrack, &DefaultParams<CarTrackParams>, &ValidateCarTrack, {View::kCsp}},
+       &MakeCarTrack, &DefaultParams<CarTrackParams>, &ResolveCarTrack, {View::kCsp}},
       {"chain", "car-track-shaped window CSP (paper 000 eq. 14) with a simulated truth",
-       &MakeChain, &DefaultParams<ChainParams>, &ValidateParams<ChainParams>, {View::kCsp}},
+       &MakeChain, &DefaultParams<ChainParams>, &ResolveParams<ChainParams>, {View::kCsp}},
       {"minibex-file", "one CSP read from a Minibex file (IBEX benchmark syntax)",
-       &MakeMinibexFile, &DefaultParams<MinibexFileParams>, &ValidateParams<MinibexFileParams>, {View::kCsp}},
+       &MakeMinibexFile, &DefaultParams<MinibexFileParams>, &ResolveMinibexFile, {View::kCsp}},
   };
-  return kProblems;
+  return table;
 }
+}  // namespace
+
+const std::vector<ProblemInfo>& Problems() { return Table(); }
 
 const ProblemInfo& FindProblem(const std::string& name) {
   std::string known;
@@ -27,6 +31,13 @@ const ProblemInfo& FindProblem(const std::string& name) {
     known += (known.empty() ? "" : ", ") + p.name;
   }
   throw std::invalid_argument("unknown problem '" + name + "' (known: " + known + ")");
+}
+
+void RegisterProblem(ProblemInfo info) {
+  for (const ProblemInfo& p : Problems())
+    if (p.name == info.name)
+      throw std::invalid_argument("problem '" + info.name + "' is already registered");
+  Table().push_back(std::move(info));
 }
 
 }  // namespace icp

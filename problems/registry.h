@@ -1,5 +1,6 @@
 // The problem registry: one explicit table (problems/registry.cc), one line
-// per plugin, read by the CLI, the harness and the docs.
+// per plugin, plus those a --plugin library adds (RegisterProblem); read by
+// the CLI, the harness and the docs.
 #ifndef ICPBENCH_PROBLEMS_REGISTRY_H_
 #define ICPBENCH_PROBLEMS_REGISTRY_H_
 
@@ -20,13 +21,17 @@ struct ProblemInfo {
   std::string description;
   ProblemFactory make;  // throws ParamError on bad parameters
   std::vector<ParamInfo> (*params)(const std::string& owner);
-  void (*validate)(const std::string& owner, const ParamMap& values);  // throws ParamError
-  std::vector<View> views;  // what the problem offers to algorithms
+  // The effective parameters (defaults filled in, canonical spelling: the
+  // run key); throws ParamError, or std::invalid_argument for a bad file.
+  ParamMap (*resolve)(const std::string& owner, const ParamMap& values);
+  std::vector<View> offers;  // the views of its steps
 };
 
 const std::vector<ProblemInfo>& Problems();
 // Throws std::invalid_argument listing the known names if there is none.
 const ProblemInfo& FindProblem(const std::string& name);
+// Adds a plugin's problem; throws std::invalid_argument if the name is taken.
+void RegisterProblem(ProblemInfo info);
 
 }  // namespace icp
 

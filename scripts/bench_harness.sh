@@ -21,6 +21,6 @@ tn=$(run "$jobs" "$work/jn")
 echo "harness speedup: 1 job ${t1} ms, ${jobs} jobs ${tn} ms, speedup $((t1 * 100 / tn / 100)).$(printf '%02d' $((t1 * 100 / tn % 100)))x"
 
 echo "µs per CSP at w = 20 (car-track-shaped window, CPU time):"
-./build/algorithms/algorithms_benchmark --benchmark_filter='w:20$' \
+./build/bench/algorithms_benchmark --benchmark_filter='w:20$' \
     --benchmark_repetitions=3 --benchmark_report_aggregates_only=true 2>/dev/null |
   awk '/_median/ {printf "  %-22s %10.1f us\n", $1, $4}'

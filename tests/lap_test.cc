@@ -32,7 +32,7 @@ TEST_P(LapTest, KeepsTheTruthAtEveryStep) {
 std::vector<std::string> IcpAlgorithms() {
   std::vector<std::string> names;
   for (const AlgorithmInfo& a : Algorithms())
-    if (!a.test_only && a.view == View::kCsp) names.push_back(a.name);
+    if (!a.test_only && a.needs == View::kCsp) names.push_back(a.name);
   return names;
 }
 

@@ -22,7 +22,7 @@ const ParamMap kTight = {{"ratio", "1e-6"}};
 
 Box Contract(const std::string& algorithm, const ConstraintSystem& csp, Box box,
              ParamMap params = kTight) {
-  FindAlgorithm(algorithm).make(params, csp)->Contract(box, StopCondition());
+  FindAlgorithm(algorithm).contractor(params, csp)->Contract(box, StopCondition());
   return box;
 }
 
@@ -75,7 +75,7 @@ TEST(OrderingTest, ContractingTwiceChangesNothingBeyondThePrecision) {
     if (info.test_only) continue;
     for (std::uint64_t seed = 1; seed <= 100; ++seed) {
       testing::RandomCsp r = testing::MakeRandomCsp(seed);
-      auto contractor = info.make({}, r.csp);
+      auto contractor = info.contractor({}, r.csp);
       Box once = r.csp.domains();
       contractor->Contract(once, StopCondition());
       Box twice = once;

@@ -17,7 +17,7 @@ TEST_P(SoundnessTest, NeverRemovesTheKnownSolution) {
   for (std::uint64_t seed = 1; seed <= 3000; ++seed) {
     testing::RandomCsp r = testing::MakeRandomCsp(seed);
     ASSERT_FALSE(r.csp.constraints().empty()) << "seed " << seed;
-    auto contractor = info.make({}, r.csp);
+    auto contractor = info.contractor({}, r.csp);
     Box box = r.csp.domains();
     ContractSummary s = contractor->Contract(box, StopCondition());
     ASSERT_NE(s.status, ContractStatus::kEmpty) << "seed " << seed;
@@ -42,7 +42,7 @@ TEST_P(SoundnessTest, EmptiesTheBoxOfInconsistentSystems) {
   systems[2].AddConstraint(y, Relation::kLeq, systems[2].Constant(2));
   for (std::size_t i = 0; i < systems.size(); ++i) {
     Box box = systems[i].domains();
-    ContractSummary s = info.make({}, systems[i])->Contract(box, StopCondition());
+    ContractSummary s = info.contractor({}, systems[i])->Contract(box, StopCondition());
     EXPECT_EQ(s.status, ContractStatus::kEmpty) << "system " << i;
     EXPECT_TRUE(box.IsEmpty()) << "system " << i;
   }

@@ -105,10 +105,10 @@ TEST(BC3Test, KeepsTheTruthOfChainWindowsAndMatchesHC4There) {
     ChainParams p;
     p.w = 8;
     Step step = MakeChainStep(p, seed);
-    Box bc3 = RunBC3(step.csp);
-    ASSERT_TRUE(bc3.Contains(step.truth)) << "seed " << seed;
-    Box hc4 = step.csp.domains();
-    HC4Contractor(std::make_shared<CompiledSystem>(step.csp), HC4Params())
+    Box bc3 = RunBC3(step.views.csp->csp);
+    ASSERT_TRUE(bc3.Contains(step.csp_truth)) << "seed " << seed;
+    Box hc4 = step.views.csp->csp.domains();
+    HC4Contractor(std::make_shared<CompiledSystem>(step.views.csp->csp), HC4Params())
         .Contract(hc4, StopCondition());
     for (std::size_t i = 0; i < hc4.size(); ++i)
       EXPECT_NEAR(bc3[i].Width(), hc4[i].Width(), 0.02 * hc4[i].Width() + 1e-5) << "var " << i;

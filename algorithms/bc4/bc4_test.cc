@@ -58,12 +58,12 @@ TEST(BC4Test, EqualsHC4OnChainWindows) {
     ChainParams p;
     p.w = 12;
     Step step = MakeChainStep(p, seed);
-    Box bc4 = RunBC4(step.csp);
-    Box hc4 = step.csp.domains();
-    HC4Contractor(std::make_shared<CompiledSystem>(step.csp), HC4Params())
+    Box bc4 = RunBC4(step.views.csp->csp);
+    Box hc4 = step.views.csp->csp.domains();
+    HC4Contractor(std::make_shared<CompiledSystem>(step.views.csp->csp), HC4Params())
         .Contract(hc4, StopCondition());
     EXPECT_EQ(bc4, hc4) << "seed " << seed;
-    EXPECT_TRUE(bc4.Contains(step.truth));
+    EXPECT_TRUE(bc4.Contains(step.csp_truth));
   }
 }
 

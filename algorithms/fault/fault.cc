@@ -1,6 +1,5 @@
 #include "algorithms/fault/fault.h"
 
-#include <atomic>
 #include <csignal>
 #include <cstdlib>
 #include <limits>
@@ -8,49 +7,48 @@
 #include <thread>
 
 #include "algorithms/hc4/hc4.h"
+#include "algorithms/window/window_estimator.h"
 
 namespace icp {
 
 void Describe(FaultParams& p, ParamSet& set) {
   set.Add("mode", &p.mode, "the fault to inject",
           {"none", "segfault", "abort", "hang", "throw", "garbage"});
-  set.Add("after_calls", &p.after_calls, "good contractions before the fault",
-          Range::AtLeast(0));
+  set.Add("after_calls", &p.after_calls, "good steps before the fault", Range::AtLeast(0));
 }
 
 namespace {
-// Counts contractions across the steps of a run (a process runs one run).
-std::atomic<int> calls_in_process{0};
-
-class FaultContractor : public Contractor {
+class FaultEstimator : public Estimator {
  public:
-  FaultContractor(const ConstraintSystem& csp, FaultParams params)
-      : params_(std::move(params)),
-        hc4_(std::make_shared<CompiledSystem>(csp), HC4Params()) {}
-  std::string_view Name() const override { return "fault"; }
-  ContractSummary Contract(Box& box, const StopCondition& stop) override {
-    if (calls_in_process++ < params_.after_calls || params_.mode == "none")
-      return hc4_.Contract(box, stop);
+  explicit FaultEstimator(FaultParams params)
+      : params_(std::move(params)), hc4_(&MakeHC4, {}, Carry::kFirst) {}
+
+  StepResult Step(const Views& views, const StopCondition& stop) override {
+    if (steps_++ < params_.after_calls || params_.mode == "none") return hc4_.Step(views, stop);
     if (params_.mode == "segfault") std::raise(SIGSEGV);
     if (params_.mode == "abort") std::abort();
     if (params_.mode == "throw") throw std::runtime_error("injected fault");
     if (params_.mode == "hang") {
       for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
     }
-    // garbage: a box that is not inside the initial one.
+    // garbage: a box reaching outside the step's domains.
+    StepResult result = hc4_.Step(views, stop);
+    Box box = result.estimate->Hull();
     for (std::size_t i = 0; i < box.size(); ++i)
       box[i] = Interval(box[i].lo() - 1, std::numeric_limits<double>::infinity());
-    return {};
+    result.estimate = std::make_unique<BoxEstimate>(box);
+    return result;
   }
 
  private:
   FaultParams params_;
-  HC4Contractor hc4_;
+  WindowEstimator hc4_;
+  int steps_ = 0;
 };
 }  // namespace
 
-std::unique_ptr<Contractor> MakeFault(const ParamMap& params, const ConstraintSystem& csp) {
-  return std::make_unique<FaultContractor>(csp, ParseParams<FaultParams>("fault", params));
+std::unique_ptr<Estimator> MakeFault(const ParamMap& params, std::uint64_t) {
+  return std::make_unique<FaultEstimator>(ParseParams<FaultParams>("fault", params));
 }
 
 }  // namespace icp

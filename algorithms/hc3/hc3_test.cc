@@ -95,11 +95,11 @@ TEST(HC3Test, KeepsTheTruthOfChainWindows) {
     ChainParams p;
     p.w = 10;
     Step step = MakeChainStep(p, seed);
-    Box hc3 = step.csp.domains();
-    ASSERT_NE(RunHC3(step.csp, hc3).status, ContractStatus::kEmpty);
-    EXPECT_TRUE(hc3.Contains(step.truth)) << "seed " << seed;
-    Box hc4 = step.csp.domains();
-    HC4Contractor(std::make_shared<CompiledSystem>(step.csp), HC4Params())
+    Box hc3 = step.views.csp->csp.domains();
+    ASSERT_NE(RunHC3(step.views.csp->csp, hc3).status, ContractStatus::kEmpty);
+    EXPECT_TRUE(hc3.Contains(step.csp_truth)) << "seed " << seed;
+    Box hc4 = step.views.csp->csp.domains();
+    HC4Contractor(std::make_shared<CompiledSystem>(step.views.csp->csp), HC4Params())
         .Contract(hc4, StopCondition());
     for (std::size_t i = 0; i < hc4.size(); ++i)
       EXPECT_LE(hc4[i].Width(), hc3[i].Width() * 1.01 + 1e-9) << "seed " << seed << " var " << i;

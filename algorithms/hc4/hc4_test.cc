@@ -99,11 +99,11 @@ TEST(HC4Test, KeepsTheTruthOfChainWindowsAndContractsThem) {
     ChainParams p;
     p.w = 20;
     Step step = MakeChainStep(p, seed);
-    Box box = step.csp.domains();
-    ContractSummary s = RunHC4(step.csp, box);
+    Box box = step.views.csp->csp.domains();
+    ContractSummary s = RunHC4(step.views.csp->csp, box);
     ASSERT_NE(s.status, ContractStatus::kEmpty) << "seed " << seed;
-    EXPECT_TRUE(box.Contains(step.truth)) << "seed " << seed;
-    EXPECT_TRUE(box.IsSubsetOf(step.csp.domains()));
+    EXPECT_TRUE(box.Contains(step.csp_truth)) << "seed " << seed;
+    EXPECT_TRUE(box.IsSubsetOf(step.views.csp->csp.domains()));
     // Dead reckoning from the start narrows the headings to far less than 2 pi.
     EXPECT_LT(box[3 * p.w + 2].Width(), 7.0);
   }
@@ -114,10 +114,10 @@ TEST(HC4Test, RegistryBuildsItAndRejectsBadParameters) {
   Expr x = csp.AddVariable("x", {0, 1});
   csp.AddConstraint(x, Relation::kEq, csp.Constant(0.5));
   const AlgorithmInfo& info = FindAlgorithm("hc4");
-  EXPECT_THROW(info.make({{"ratio", "-1"}}, csp), ParamError);
-  EXPECT_THROW(info.make({{"ratio", "abc"}}, csp), ParamError);
-  EXPECT_THROW(info.make({{"speed", "1"}}, csp), ParamError);
-  auto hc4 = info.make({{"ratio", "0.1"}}, csp);
+  EXPECT_THROW(info.contractor({{"ratio", "-1"}}, csp), ParamError);
+  EXPECT_THROW(info.contractor({{"ratio", "abc"}}, csp), ParamError);
+  EXPECT_THROW(info.contractor({{"speed", "1"}}, csp), ParamError);
+  auto hc4 = info.contractor({{"ratio", "0.1"}}, csp);
   Box box = csp.domains();
   hc4->Contract(box, StopCondition());
   EXPECT_EQ(box[0], Interval(0.5));

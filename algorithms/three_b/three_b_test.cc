@@ -12,7 +12,7 @@ namespace {
 
 Box RunAlgorithm(const std::string& name, const ConstraintSystem& csp, const ParamMap& params = {}) {
   Box box = csp.domains();
-  FindAlgorithm(name).make(params, csp)->Contract(box, StopCondition());
+  FindAlgorithm(name).contractor(params, csp)->Contract(box, StopCondition());
   return box;
 }
 
@@ -57,9 +57,9 @@ TEST(ThreeBTest, InnerParametersAreNestedAndValidated) {
   Expr x = csp.AddVariable("x", {0, 1});
   csp.AddConstraint(x, Relation::kEq, csp.Constant(0.5));
   const AlgorithmInfo& info = FindAlgorithm("3b-bc4");
-  EXPECT_NO_THROW(info.make({{"slices", "20"}, {"inner.epsilon", "1e-9"}}, csp));
-  EXPECT_THROW(info.make({{"inner.epsilon", "2"}}, csp), ParamError);
-  EXPECT_THROW(info.make({{"slices", "0"}}, csp), ParamError);
+  EXPECT_NO_THROW(info.contractor({{"slices", "20"}, {"inner.epsilon", "1e-9"}}, csp));
+  EXPECT_THROW(info.contractor({{"inner.epsilon", "2"}}, csp), ParamError);
+  EXPECT_THROW(info.contractor({{"slices", "0"}}, csp), ParamError);
   bool listed = false;
   for (const ParamInfo& p : info.params(info.name)) listed |= p.name == "inner.max_bisections";
   EXPECT_TRUE(listed);
@@ -72,9 +72,9 @@ TEST(ThreeBTest, TighterThanBC4OnChainWindowsAndSound) {
     ChainParams p;
     p.w = 6;
     Step step = MakeChainStep(p, seed);
-    Box three_b = RunAlgorithm("3b-bc4", step.csp);
-    Box bc4 = RunAlgorithm("bc4", step.csp);
-    ASSERT_TRUE(three_b.Contains(step.truth)) << "seed " << seed;
+    Box three_b = RunAlgorithm("3b-bc4", step.views.csp->csp);
+    Box bc4 = RunAlgorithm("bc4", step.views.csp->csp);
+    ASSERT_TRUE(three_b.Contains(step.csp_truth)) << "seed " << seed;
     EXPECT_TRUE(three_b.IsSubsetOf(bc4)) << "seed " << seed;
   }
 }

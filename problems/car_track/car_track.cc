@@ -1,5 +1,7 @@
 #include "problems/car_track/car_track.h"
 
+#include "problems/car_track/window.h"
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -42,9 +44,6 @@ void Describe(CarTrackParams& p, ParamSet& set) {
   set.Add("heading_known", &p.heading_known,
           "th[0] is the true heading ± 0.1 rad (else [-pi, pi])");
   set.Add("log", &p.log, "CSV log replacing the simulator (empty: simulate)");
-  set.Add("carry", &p.carry,
-          "window states starting from the previous result: the first (paper) or all",
-          {"first", "all"});
 }
 
 void Validate(const CarTrackParams& p, const std::string& owner) {
@@ -203,57 +202,35 @@ CarTrackProblem::CarTrackProblem(const CarTrackParams& params, std::vector<CarTr
   }
 }
 
-bool CarTrackProblem::Next(const Box* previous_result, Step* step) {
+bool CarTrackProblem::Next(Step* step) {
   if (k_ >= num_steps_) return false;
-  const int k = k_;
+  const int k = k_++;
   const int oldest = std::max(0, k - params_.w);
-  bool carry = k > 0 && previous_result != nullptr && !previous_result->IsEmpty();
-  if (carry && static_cast<int>(previous_result->size()) != previous_size_)
-    throw std::invalid_argument("car-track step " + std::to_string(k) + ": previous_result has " +
-                                std::to_string(previous_result->size()) +
-                                " variables, the previous CSP " + std::to_string(previous_size_));
-
-  *step = Step();
-  step->index = k;
-  ConstraintSystem& csp = step->csp;
+  std::vector<CarWindowState> states;
   bool truth_known = true;
   for (int j = oldest; j <= k; ++j) {
     const CarTrackMeasurement& m = measurements_[j];
-    Interval x = m.x, y = m.y, th = j == 0 ? heading0_ : Interval();
-    if (carry && j < k && (j == oldest || params_.carry == "all")) {
-      const int base = 3 * (j - previous_oldest_);
-      x = Intersect(x, (*previous_result)[base]);
-      y = Intersect(y, (*previous_result)[base + 1]);
-      th = Intersect(th, (*previous_result)[base + 2]);
-    }
-    const std::string index = "[" + std::to_string(j) + "]";
-    csp.AddVariable("x" + index, x);
-    csp.AddVariable("y" + index, y);
-    csp.AddVariable("th" + index, th);
+    // The oldest heading is unknown unless it is the drive's first.
+    const Interval th = j == 0 ? heading0_ : j == oldest ? Interval(-Pi().hi(), Pi().hi()) : Interval();
+    states.push_back({m.x, m.y, th, m.ds, m.dth});
+    truth_known = truth_known && records_[j].has_truth;
+  }
+  *step = Step();
+  step->views.step = k;
+  step->views.space = CarStateSpace();
+  step->views.csp = BuildCarWindow(oldest, states);
+  const CarTrackRecord& newest = records_[k];
+  if (newest.has_truth) step->truth = {newest.truth_x, newest.truth_y, newest.truth_theta};
+  if (!truth_known) return true;
+  // The window's frame: its oldest heading in [-pi, pi] (from step 0, the
+  // drive's own frame).
+  const double two_pi = 2 * kPi;
+  const double shift =
+      oldest == 0 ? 0 : std::ceil((records_[oldest].truth_theta - kPi) / two_pi) * two_pi;
+  for (int j = oldest; j <= k; ++j) {
     const CarTrackRecord& r = records_[j];
-    truth_known = truth_known && r.has_truth;
-    step->truth.insert(step->truth.end(), {r.truth_x, r.truth_y, r.truth_theta});
+    step->csp_truth.insert(step->csp_truth.end(), {r.truth_x, r.truth_y, r.truth_theta - shift});
   }
-  if (!truth_known) step->truth.clear();
-  for (int j = oldest + 1; j <= k; ++j) {  // eq. 14
-    const int b = 3 * (j - 1 - oldest);
-    Expr xp = csp.Var(b), yp = csp.Var(b + 1), thp = csp.Var(b + 2);
-    Expr xj = csp.Var(b + 3), yj = csp.Var(b + 4), thj = csp.Var(b + 5);
-    Expr ds = csp.Constant(measurements_[j].ds);
-    Expr dth = csp.Constant(measurements_[j].dth);
-    Expr mid_heading = thp + dth / 2.0;
-    csp.AddConstraint(xj, Relation::kEq, xp + ds * Cos(mid_heading));
-    csp.AddConstraint(yj, Relation::kEq, yp + ds * Sin(mid_heading));
-    csp.AddConstraint(thj, Relation::kEq, thp + dth);
-  }
-  const int last = 3 * (k - oldest);
-  step->reported = {{"x", last}, {"y", last + 1}, {"theta", last + 2}};
-  step->x = 0;
-  step->y = 1;
-
-  previous_oldest_ = oldest;
-  previous_size_ = csp.num_variables();
-  ++k_;
   return true;
 }
 
@@ -479,13 +456,14 @@ void WriteCarTrackLog(const std::vector<CarTrackRecord>& records, std::ostream& 
   }
 }
 
-void ValidateCarTrack(const std::string& owner, const ParamMap& values) {
+ParamMap ResolveCarTrack(const std::string& owner, const ParamMap& values) {
   CarTrackParams p = ParseParams<CarTrackParams>(owner, values);
   Validate(p, owner);
   if (!p.log.empty()) {
     const CarTrackProblem checked(p, ReadCarTrackLog(p.log));  // heading_known needs a truth
     static_cast<void>(checked);
   }
+  return ResolveParams<CarTrackParams>(owner, values);
 }
 
 std::unique_ptr<Problem> MakeCarTrack(const ParamMap& params, std::uint64_t seed) {

@@ -10,15 +10,17 @@
 // named with absolute step numbers, x[j], y[j], th[j], and stored in that
 // order from the window's oldest state to its newest (index 3 (j - oldest)).
 //
-// Initial domains: x[j], y[j] are the GPS box of step j ([-oo, +oo] without
-// a fix); th[0] is [-pi, pi] (or the true heading ± 0.1 rad with
-// heading_known); th[j], j > 0, is [-oo, +oo]. The paper initialises every
-// th_k to ]-pi, pi], which is unsound once the unwrapped heading leaves that
-// range after a turn: here the th constraints carry the heading instead. The
-// states that were already in the previous window start from the previous
-// step's contracted box (previous_result), intersected with those domains;
-// without one (first step, an algorithm that passes none, or an empty box:
-// the track was lost) they start from the measurement domains alone.
+// Initial domains (from the measurements alone; an estimator carries its
+// own results from step to step, see the algorithms' `carry`): x[j], y[j]
+// are the GPS box of step j ([-oo, +oo] without a fix); th[0] is [-pi, pi]
+// (or the true heading ± 0.1 rad with heading_known); the window's oldest
+// heading th[oldest], oldest > 0, is unknown, [-pi, pi]; the others are
+// [-oo, +oo]. The paper initialises every th_k to ]-pi, pi], which is
+// unsound once the unwrapped heading leaves that range after a turn: here
+// the th constraints carry the heading from the oldest one instead. The
+// truth of the newest state is the drive's unwrapped heading; the CSP's
+// frame puts the oldest heading in [-pi, pi] (Step::csp_truth is shifted by
+// the multiple of 2 pi that does so).
 //
 // Sound: noise is bounded and every measurement interval holds the truth
 // strictly inside, and the simulated truth follows eq. 12 exactly with the
@@ -82,20 +84,16 @@ struct CarTrackParams {
   // Path of a CSV log (ReadCarTrackLog) that replaces the simulator; empty
   // to simulate.
   std::string log;
-  // Which states of the window start from the previous step's contracted box:
-  // "first" (paper 000 §4.3: the window's first state; the others start from
-  // their measurements, so a longer window carries more GPS fixes) or "all"
-  // (every state the windows share: a filter that forgets nothing).
-  std::string carry = "first";
 };
 void Describe(CarTrackParams& p, ParamSet& set);
 // Checks every range and what ranges alone cannot (radius_error below
 // wheel_radius); throws ParamError naming owner.field.
 void Validate(const CarTrackParams& p, const std::string& owner = "car-track");
-// The registry's validator: parses values, validates them and, when a log is
-// given, reads it (so a bad log fails before the first run). Throws
-// ParamError, or std::invalid_argument for a bad log.
-void ValidateCarTrack(const std::string& owner, const ParamMap& values);
+// The registry's resolver: parses values, validates them and, when a log is
+// given, reads it (so a bad log fails before the first run); returns the
+// effective parameters. Throws ParamError, or std::invalid_argument for a
+// bad log.
+ParamMap ResolveCarTrack(const std::string& owner, const ParamMap& values);
 
 // One 5 Hz sample of the sensors, a row of the CSV log.
 struct CarTrackRecord {
@@ -153,9 +151,7 @@ class CarTrackProblem : public Problem {
   CarTrackProblem(const CarTrackParams& params, std::vector<CarTrackRecord> records);
   std::string_view Name() const override { return "car-track"; }
   int NumSteps() const override { return num_steps_; }
-  // Throws std::invalid_argument if previous_result is neither null, empty
-  // nor the size of the previous step's CSP.
-  bool Next(const Box* previous_result, Step* step) override;
+  bool Next(Step* step) override;
 
  private:
   CarTrackParams params_;
@@ -163,9 +159,7 @@ class CarTrackProblem : public Problem {
   std::vector<CarTrackMeasurement> measurements_;
   Interval heading0_;
   int num_steps_;
-  int k_ = 0;                // the next step
-  int previous_oldest_ = 0;  // oldest state of the previous step's window
-  int previous_size_ = 0;    // variables of the previous step's CSP
+  int k_ = 0;  // the next step
 };
 
 // Simulates (seed) or reads params.log; throws ParamError on bad parameters

@@ -23,28 +23,19 @@ std::unique_ptr<Problem> Make(const ParamMap& params, std::uint64_t seed) {
   return FindProblem("car-track").make(params, seed);
 }
 
-// Runs HC4 on every step, feeding each contracted box back as the next
-// step's previous_result; calls visit(step, contracted box) after each.
+// Runs HC4 (carry=first) on every step; calls visit(step, the newest
+// state's box) after each.
 void RunHC4(Problem& problem, const std::function<void(const Step&, const Box&)>& visit) {
-  const AlgorithmInfo& hc4 = FindAlgorithm("hc4");
+  auto hc4 = FindAlgorithm("hc4").make({}, 1);
   Step step;
-  Box result;
-  bool first = true;
-  while (problem.Next(first ? nullptr : &result, &step)) {
-    first = false;
-    result = step.csp.domains();
-    hc4.make({}, step.csp)->Contract(result, StopCondition());
-    visit(step, result);
-  }
+  while (problem.Next(&step)) visit(step, hc4->Step(step.views, StopCondition()).estimate->Hull());
 }
 
-double NewestArea(const Step& step, const Box& box) {
-  return box[step.reported[step.x].index].Width() * box[step.reported[step.y].index].Width();
-}
+const ConstraintSystem& Csp(const Step& step) { return step.views.csp->csp; }
 
-double NewestHeadingWidth(const Step& step, const Box& box) {
-  return box[step.reported[2].index].Width();
-}
+double NewestArea(const Step&, const Box& box) { return box[0].Width() * box[1].Width(); }
+
+double NewestHeadingWidth(const Step&, const Box& box) { return box[2].Width(); }
 
 // Message of the std::invalid_argument thrown by f, or "" if none.
 std::string ErrorOf(const std::function<void()>& f) {
@@ -121,18 +112,22 @@ TEST(CarTrackTest, TruthInsideEveryInitialBoxAndSatisfiesEveryConstraint) {
     auto problem = Make({{"w", "5"}, {"steps", seed == 1 ? "2000" : "300"}}, seed);
     Step step;
     std::vector<Interval> slots;
-    while (problem->Next(nullptr, &step)) {
-      ASSERT_EQ(step.truth.size(), static_cast<std::size_t>(step.csp.num_variables()));
-      ASSERT_TRUE(step.csp.domains().Contains(step.truth))
-          << "seed " << seed << " step " << step.index;
+    while (problem->Next(&step)) {
+      ASSERT_EQ(step.csp_truth.size(), static_cast<std::size_t>(Csp(step).num_variables()));
+      ASSERT_TRUE(Csp(step).domains().Contains(step.csp_truth))
+          << "seed " << seed << " step " << step.views.step;
       Box point;
-      for (double t : step.truth) point.push_back(Interval(t));
-      CompiledSystem sys(step.csp);
+      for (double t : step.csp_truth) point.push_back(Interval(t));
+      CompiledSystem sys(Csp(step));
       for (int c = 0; c < sys.num_constraints(); ++c) {
         const Interval value = sys.tape(c).Forward(point, slots);
         ASSERT_FALSE(Intersect(value, sys.tape(c).range()).IsEmpty())
-            << "seed " << seed << " step " << step.index << ": " << step.csp.ConstraintToString(c);
+            << "seed " << seed << " step " << step.views.step << ": " << Csp(step).ConstraintToString(c);
       }
+      // The newest state's truth is the drive's: the CSP's frame may be 2 pi apart.
+      const std::size_t last = step.csp_truth.size() - 3;
+      EXPECT_EQ(step.truth[0], step.csp_truth[last]);
+      EXPECT_NEAR(std::remainder(step.truth[2] - step.csp_truth[last + 2], 2 * kPi), 0, 1e-9);
     }
   }
 }
@@ -143,25 +138,30 @@ TEST(CarTrackTest, WindowGrowsToWStepsThenSlides) {
   EXPECT_EQ(problem->NumSteps(), 10);
   Step step;
   int k = 0;
-  while (problem->Next(nullptr, &step)) {
+  while (problem->Next(&step)) {
     const int n = std::min(k, w);
-    EXPECT_EQ(step.index, k);
-    EXPECT_EQ(step.csp.constraints().size(), 3u * n) << "step " << k;
-    ASSERT_EQ(step.csp.num_variables(), 3 * (n + 1));
-    // Absolute step numbers, oldest first; the newest state is reported.
+    EXPECT_EQ(step.views.step, k);
+    EXPECT_EQ(Csp(step).constraints().size(), 3u * n) << "step " << k;
+    ASSERT_EQ(Csp(step).num_variables(), 3 * (n + 1));
+    // Absolute step numbers, oldest first, tagged with their state; the
+    // newest state is estimated.
     const int oldest = k - n;
-    EXPECT_EQ(step.csp.names()[0], "x[" + std::to_string(oldest) + "]");
-    EXPECT_EQ(step.csp.names()[3 * n + 2], "th[" + std::to_string(k) + "]");
-    ASSERT_EQ(step.reported.size(), 3u);
-    EXPECT_EQ(step.reported[0].name, "x");
-    EXPECT_EQ(step.reported[0].index, 3 * n);
-    EXPECT_EQ(step.reported[2].index, 3 * n + 2);
-    EXPECT_EQ(step.x, 0);
-    EXPECT_EQ(step.y, 1);
+    EXPECT_EQ(Csp(step).names()[0], "x[" + std::to_string(oldest) + "]");
+    EXPECT_EQ(Csp(step).names()[3 * n + 2], "th[" + std::to_string(k) + "]");
+    EXPECT_EQ(step.views.csp->states[0], (StateRef{oldest, 0}));
+    EXPECT_EQ(step.views.csp->states[3 * n + 2], (StateRef{k, 2}));
+    EXPECT_EQ(step.views.csp->newest, k);
+    EXPECT_EQ(step.views.space.names, (std::vector<std::string>{"x", "y", "theta"}));
+    EXPECT_EQ(step.views.space.x, 0);
+    EXPECT_EQ(step.views.space.y, 1);
+    EXPECT_EQ(step.views.space.Period(2), 2 * kPi);
+    // The oldest heading is unknown, [-pi, pi], once the window slides.
+    if (oldest > 0) EXPECT_NEAR(Csp(step).domains()[2].Width(), 2 * kPi, 1e-9);
+    EXPECT_FALSE(n > 0 && Csp(step).domains()[5].IsBounded());
     ++k;
   }
   EXPECT_EQ(k, 10);
-  EXPECT_FALSE(problem->Next(nullptr, &step));
+  EXPECT_FALSE(problem->Next(&step));
 }
 
 TEST(CarTrackTest, HC4KeepsTheTruthOverALapWithTheResultFedBack) {
@@ -169,10 +169,10 @@ TEST(CarTrackTest, HC4KeepsTheTruthOverALapWithTheResultFedBack) {
   double area_sum = 0;
   int steps = 0;
   RunHC4(*problem, [&](const Step& step, const Box& box) {
-    ASSERT_TRUE(step.csp.domains().Contains(step.truth)) << "step " << step.index;
-    ASSERT_FALSE(box.IsEmpty()) << "step " << step.index;
-    ASSERT_TRUE(box.Contains(step.truth)) << "step " << step.index;
-    if (step.index >= 100) {
+    ASSERT_TRUE(Csp(step).domains().Contains(step.csp_truth)) << "step " << step.views.step;
+    ASSERT_FALSE(box.IsEmpty()) << "step " << step.views.step;
+    ASSERT_TRUE(box.Contains(step.truth)) << "step " << step.views.step;
+    if (step.views.step >= 100) {
       area_sum += NewestArea(step, box);
       ++steps;
     }
@@ -182,27 +182,15 @@ TEST(CarTrackTest, HC4KeepsTheTruthOverALapWithTheResultFedBack) {
   EXPECT_LT(area_sum / steps, 20);
 }
 
-TEST(CarTrackTest, PreviousResultNarrowsTheCarriedStates) {
-  auto problem = Make({{"w", "3"}, {"steps", "3"}}, 5);
-  Step step;
-  ASSERT_TRUE(problem->Next(nullptr, &step));
-  Box result = step.csp.domains();
-  result[0] = Interval(step.truth[0] - 0.01, step.truth[0] + 0.01);
-  result[2] = Interval(step.truth[2] - 0.01, step.truth[2] + 0.01);
-  ASSERT_TRUE(problem->Next(&result, &step));
-  EXPECT_EQ(step.csp.domains()[0], result[0]);
-  EXPECT_EQ(step.csp.domains()[2], result[2]);
-  EXPECT_GT(step.csp.domains()[3].Width(), 1);  // the new state: its GPS box
-  // A box of the wrong size is a caller's bug; an empty one means the track
-  // was lost: the carried states fall back to their measurements.
-  Box wrong(4);
-  EXPECT_NE(ErrorOf([&] { problem->Next(&wrong, &step); }).find("previous_result has 4"),
-            std::string::npos);
-  Box lost(6);
-  lost.SetEmpty();
-  ASSERT_TRUE(problem->Next(&lost, &step));
-  EXPECT_FALSE(step.csp.domains().IsEmpty());
-  EXPECT_TRUE(step.csp.domains().Contains(step.truth));
+void ExpectSameSteps(Problem& a, Problem& b);
+
+TEST(CarTrackTest, StepsDependOnTheMeasurementsAlone) {
+  // Problems never see an estimator's result: two passes give the same CSPs.
+  auto a = Make({{"w", "3"}, {"steps", "20"}}, 5);
+  auto b = Make({{"w", "3"}, {"steps", "20"}}, 5);
+  RunHC4(*a, [](const Step&, const Box&) {});
+  auto c = Make({{"w", "3"}, {"steps", "20"}}, 5);
+  ExpectSameSteps(*b, *c);
 }
 
 TEST(CarTrackTest, GpsOutageGrowsTheBoxAndKeepsTheTruth) {
@@ -210,11 +198,12 @@ TEST(CarTrackTest, GpsOutageGrowsTheBoxAndKeepsTheTruth) {
   std::vector<double> area(400);
   bool outage_state_unbounded = true;
   RunHC4(*Make(params, 2), [&](const Step& step, const Box& box) {
-    ASSERT_TRUE(box.Contains(step.truth)) << "step " << step.index;
-    area[step.index] = NewestArea(step, box);
-    if (step.index >= 200 && step.index < 300)
+    ASSERT_TRUE(box.Contains(step.truth)) << "step " << step.views.step;
+    area[step.views.step] = NewestArea(step, box);
+    const int newest_x = Csp(step).num_variables() - 3;
+    if (step.views.step >= 200 && step.views.step < 300)
       outage_state_unbounded =
-          outage_state_unbounded && !step.csp.domains()[step.reported[0].index].IsBounded();
+          outage_state_unbounded && !Csp(step).domains()[newest_x].IsBounded();
   });
   EXPECT_TRUE(outage_state_unbounded);
   EXPECT_GT(area[299], 4 * area[199]);  // dead reckoning drifts
@@ -223,8 +212,8 @@ TEST(CarTrackTest, GpsOutageGrowsTheBoxAndKeepsTheTruth) {
   // With a fix every 5th step the box stays bounded, and smaller than at the
   // end of the outage.
   RunHC4(*Make({{"steps", "400"}, {"gps_period", "5"}}, 2), [&](const Step& step, const Box& box) {
-    ASSERT_TRUE(box.Contains(step.truth)) << "step " << step.index;
-    ASSERT_LT(NewestArea(step, box), area[299]) << "step " << step.index;
+    ASSERT_TRUE(box.Contains(step.truth)) << "step " << step.views.step;
+    ASSERT_LT(NewestArea(step, box), area[299]) << "step " << step.views.step;
   });
 }
 
@@ -235,9 +224,9 @@ TEST(CarTrackTest, UnknownStartHeadingIsNarrowedByHC4) {
     double width = 0;
     RunHC4(*Make({{"steps", "200"}, {"gps_error", gps_error}}, 4),
            [&](const Step& step, const Box& box) {
-             ASSERT_TRUE(box.Contains(step.truth)) << "step " << step.index;
-             if (step.index == 0) {
-               EXPECT_NEAR(step.csp.domains()[2].Width(), 2 * kPi, 1e-9);
+             ASSERT_TRUE(box.Contains(step.truth)) << "step " << step.views.step;
+             if (step.views.step == 0) {
+               EXPECT_NEAR(Csp(step).domains()[2].Width(), 2 * kPi, 1e-9);
              }
              width = NewestHeadingWidth(step, box);
            });
@@ -246,9 +235,9 @@ TEST(CarTrackTest, UnknownStartHeadingIsNarrowedByHC4) {
   // Known start heading: ± 0.1 rad from the start.
   auto problem = Make({{"heading_known", "true"}}, 4);
   Step step;
-  ASSERT_TRUE(problem->Next(nullptr, &step));
-  EXPECT_NEAR(step.csp.domains()[2].Width(), 0.2, 1e-9);
-  EXPECT_TRUE(step.csp.domains().Contains(step.truth));
+  ASSERT_TRUE(problem->Next(&step));
+  EXPECT_NEAR(Csp(step).domains()[2].Width(), 0.2, 1e-9);
+  EXPECT_TRUE(Csp(step).domains().Contains(step.csp_truth));
 }
 
 TEST(CarTrackTest, SameSeedSameDriveOtherSeedOtherDrive) {
@@ -264,15 +253,16 @@ TEST(CarTrackTest, SameSeedSameDriveOtherSeedOtherDrive) {
 
 void ExpectSameSteps(Problem& a, Problem& b) {
   Step sa, sb;
-  while (a.Next(nullptr, &sa)) {
-    ASSERT_TRUE(b.Next(nullptr, &sb));
-    ASSERT_EQ(sa.csp.domains(), sb.csp.domains()) << "step " << sa.index;
-    ASSERT_EQ(sa.csp.constraints().size(), sb.csp.constraints().size());
-    for (std::size_t c = 0; c < sa.csp.constraints().size(); ++c)
-      ASSERT_EQ(sa.csp.ConstraintToString(c), sb.csp.ConstraintToString(c));
+  while (a.Next(&sa)) {
+    ASSERT_TRUE(b.Next(&sb));
+    ASSERT_EQ(Csp(sa).domains(), Csp(sb).domains()) << "step " << sa.views.step;
+    ASSERT_EQ(Csp(sa).constraints().size(), Csp(sb).constraints().size());
+    for (std::size_t c = 0; c < Csp(sa).constraints().size(); ++c)
+      ASSERT_EQ(Csp(sa).ConstraintToString(c), Csp(sb).ConstraintToString(c));
     ASSERT_EQ(sa.truth, sb.truth);
+    ASSERT_EQ(sa.csp_truth, sb.csp_truth);
   }
-  EXPECT_FALSE(b.Next(nullptr, &sb));
+  EXPECT_FALSE(b.Next(&sb));
 }
 
 TEST(CarTrackTest, CsvRoundTripGivesTheSameCsps) {
@@ -309,7 +299,7 @@ TEST(CarTrackTest, ShippedLogIsTheSimulatorsDriveAndKeepsTheTruth) {
   ExpectSameSteps(from_sim, *from_log);
   RunHC4(*Make({{"log", path}, {"w", "10"}}, 0), [&](const Step& step, const Box& box) {
     ASSERT_EQ(step.truth.size(), box.size());
-    ASSERT_TRUE(box.Contains(step.truth)) << "step " << step.index;
+    ASSERT_TRUE(box.Contains(step.truth)) << "step " << step.views.step;
   });
   // steps caps the rows used.
   EXPECT_EQ(Make({{"log", path}, {"steps", "20"}}, 0)->NumSteps(), 20);
@@ -341,9 +331,13 @@ TEST(CarTrackTest, LogWithoutTruthOrFixesAndWithWrappedHeading) {
   p.w = 1;
   CarTrackProblem problem(p, r);
   Step step;
-  std::vector<std::size_t> truth_sizes;
-  while (problem.Next(nullptr, &step)) truth_sizes.push_back(step.truth.size());
-  EXPECT_EQ(truth_sizes, (std::vector<std::size_t>{3, 6, 0, 0}));
+  std::vector<std::size_t> truth_sizes, csp_truth_sizes;
+  while (problem.Next(&step)) {
+    truth_sizes.push_back(step.truth.size());
+    csp_truth_sizes.push_back(step.csp_truth.size());
+  }
+  EXPECT_EQ(truth_sizes, (std::vector<std::size_t>{3, 3, 0, 3}));
+  EXPECT_EQ(csp_truth_sizes, (std::vector<std::size_t>{3, 6, 0, 0}));
   // Truth columns are optional.
   EXPECT_FALSE(ReadLogText("t,odo_left_ticks,odo_right_ticks,gyro_dtheta,gps_x,gps_y,gps_ex,"
                            "gps_ey\n0,0,0,0,,,,\n")[0]
@@ -395,14 +389,19 @@ TEST(CarTrackTest, RegistryRejectsBadParameters) {
   EXPECT_NE(radius.find("car-track.radius_error = 0.3: must be below wheel_radius"),
             std::string::npos)
       << radius;
-  EXPECT_THROW(info.validate("car-track", {{"radius_error", "1"}}), ParamError);
-  EXPECT_NO_THROW(info.validate("car-track", {{"w", "3"}, {"gps_error", "1"}}));
+  EXPECT_THROW(info.resolve("car-track", {{"radius_error", "1"}}), ParamError);
+  EXPECT_NO_THROW(info.resolve("car-track", {{"w", "3"}, {"gps_error", "1"}}));
   const std::string missing = ErrorOf([&] { info.make({{"log", "/nonexistent/log.csv"}}, 1); });
   EXPECT_NE(missing.find("/nonexistent/log.csv: cannot open"), std::string::npos) << missing;
-  EXPECT_THROW(info.validate("car-track", {{"log", "/nonexistent/log.csv"}}),
+  EXPECT_THROW(info.resolve("car-track", {{"log", "/nonexistent/log.csv"}}),
                std::invalid_argument);
   EXPECT_EQ(info.make({{"steps", "30"}}, 1)->NumSteps(), 30);
-  EXPECT_EQ(info.views, std::vector<View>{View::kCsp});
+  EXPECT_EQ(info.offers, std::vector<View>{View::kCsp});
+  // The run key holds every effective parameter, in canonical spelling.
+  const ParamMap resolved = info.resolve("car-track", {{"gps_error", "2.50"}, {"w", "020"}});
+  EXPECT_EQ(resolved.at("w"), "20");
+  EXPECT_EQ(resolved.at("gps_error"), "2.5");
+  EXPECT_EQ(resolved.size(), info.params("car-track").size());
   // heading_known needs the truth of the first row.
   CarTrackParams p;
   p.heading_known = true;

@@ -1,5 +1,7 @@
 #include "problems/chain/chain.h"
 
+#include "problems/car_track/window.h"
+
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -34,17 +36,12 @@ Step MakeChainStep(const ChainParams& p, std::uint64_t seed) {
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   const double pi = std::numbers::pi;
   Step step;
-  ConstraintSystem& csp = step.csp;
+  std::vector<CarWindowState> states;
   double x = 0, y = 0, th = pi * unit(rng) * 0.999;
-  auto add_state = [&](int k, double xt, double yt, double tht, const Interval& th_domain) {
-    const std::string i = "[" + std::to_string(k) + "]";
-    csp.AddVariable("x" + i, Measure(xt, p.gps_error, rng));
-    csp.AddVariable("y" + i, Measure(yt, p.gps_error, rng));
-    csp.AddVariable("th" + i, th_domain);
-    step.truth.insert(step.truth.end(), {xt, yt, tht});
-  };
-  add_state(0, x, y, th,
-            p.heading_known ? Interval(th - 0.1, th + 0.1) : Interval(-Pi().hi(), Pi().hi()));
+  const Interval th0 =
+      p.heading_known ? Interval(th - 0.1, th + 0.1) : Interval(-Pi().hi(), Pi().hi());
+  states.push_back({Measure(x, p.gps_error, rng), Measure(y, p.gps_error, rng), th0, 0, 0});
+  step.csp_truth = {x, y, th};
   for (int k = 1; k <= p.w; ++k) {
     const double ds = p.step_length * (1 + 0.2 * unit(rng));
     const double dth = p.max_turn * unit(rng);
@@ -52,21 +49,17 @@ Step MakeChainStep(const ChainParams& p, std::uint64_t seed) {
     x += ds * std::cos(heading);
     y += ds * std::sin(heading);
     th += dth;
-    add_state(k, x, y, th, Interval());
-    Expr ds_m = csp.Constant(Measure(ds, p.odometry_error, rng));
-    Expr dth_m = csp.Constant(Measure(dth, p.gyro_error, rng));
-    const int b = 3 * (k - 1);  // previous state's first variable
-    Expr xp = csp.Var(b), yp = csp.Var(b + 1), thp = csp.Var(b + 2);
-    Expr xk = csp.Var(b + 3), yk = csp.Var(b + 4), thk = csp.Var(b + 5);
-    Expr mid_heading = thp + dth_m / 2.0;
-    csp.AddConstraint(xk, Relation::kEq, xp + ds_m * Cos(mid_heading));
-    csp.AddConstraint(yk, Relation::kEq, yp + ds_m * Sin(mid_heading));
-    csp.AddConstraint(thk, Relation::kEq, thp + dth_m);
+    CarWindowState s;
+    s.x = Measure(x, p.gps_error, rng);
+    s.y = Measure(y, p.gps_error, rng);
+    s.ds = Measure(ds, p.odometry_error, rng);
+    s.dth = Measure(dth, p.gyro_error, rng);
+    states.push_back(s);
+    step.csp_truth.insert(step.csp_truth.end(), {x, y, th});
   }
-  const int last = 3 * p.w;
-  step.reported = {{"x", last}, {"y", last + 1}, {"theta", last + 2}};
-  step.x = 0;
-  step.y = 1;
+  step.views.space = CarStateSpace();
+  step.views.csp = BuildCarWindow(0, states);
+  step.truth = {x, y, th};
   return step;
 }
 
@@ -76,7 +69,7 @@ class ChainProblem : public Problem {
   ChainProblem(const ChainParams& params, std::uint64_t seed) : params_(params), seed_(seed) {}
   std::string_view Name() const override { return "chain"; }
   int NumSteps() const override { return 1; }
-  bool Next(const Box*, Step* step) override {
+  bool Next(Step* step) override {
     if (done_) return false;
     done_ = true;
     *step = MakeChainStep(params_, seed_);

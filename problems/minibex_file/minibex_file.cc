@@ -14,12 +14,15 @@ class MinibexFileProblem : public Problem {
   explicit MinibexFileProblem(ConstraintSystem csp) : csp_(std::move(csp)) {}
   std::string_view Name() const override { return "minibex-file"; }
   int NumSteps() const override { return 1; }
-  bool Next(const Box*, Step* step) override {
+  bool Next(Step* step) override {
     if (done_) return false;
     done_ = true;
-    step->index = 0;
-    step->csp = csp_;
-    step->truth.clear();
+    *step = Step();
+    step->views.space.names = csp_.names();
+    CspView view;
+    view.csp = csp_;
+    for (int i = 0; i < csp_.num_variables(); ++i) view.states.push_back({0, i});
+    step->views.csp = std::move(view);
     return true;
   }
 
@@ -29,10 +32,21 @@ class MinibexFileProblem : public Problem {
 };
 }  // namespace
 
+namespace {
+MinibexFileParams Parse(const std::string& owner, const ParamMap& params) {
+  auto p = ParseParams<MinibexFileParams>(owner, params);
+  if (p.file.empty()) throw ParamError(owner + ".file = \"\": a file path is required");
+  return p;
+}
+}  // namespace
+
+ParamMap ResolveMinibexFile(const std::string& owner, const ParamMap& values) {
+  ParseMinibexFile(Parse(owner, values).file);
+  return ResolveParams<MinibexFileParams>(owner, values);
+}
+
 std::unique_ptr<Problem> MakeMinibexFile(const ParamMap& params, std::uint64_t) {
-  auto p = ParseParams<MinibexFileParams>("minibex-file", params);
-  if (p.file.empty()) throw ParamError("minibex-file.file = \"\": a file path is required");
-  return std::make_unique<MinibexFileProblem>(ParseMinibexFile(p.file));
+  return std::make_unique<MinibexFileProblem>(ParseMinibexFile(Parse("minibex-file", params).file));
 }
 
 }  // namespace icp

@@ -16,6 +16,10 @@ struct MinibexFileParams {
 };
 void Describe(MinibexFileParams& p, ParamSet& set);
 
+// The registry's resolver: the effective parameters, once the file is read
+// and parsed (so a bad file fails before the first run).
+ParamMap ResolveMinibexFile(const std::string& owner, const ParamMap& values);
+
 std::unique_ptr<Problem> MakeMinibexFile(const ParamMap& params, std::uint64_t seed);
 
 }  // namespace icp

@@ -1,0 +1,50 @@
+// The Estimator interface: the unit the harness compares (DESIGN.md). An
+// estimator is made once per run with its parameters and seed, is handed the
+// views of one step at a time, and returns an Estimate; it keeps whatever it
+// needs between steps (a sliding window's last result, a particle cloud).
+// Every CSP contractor becomes one through WindowEstimator
+// (algorithms/window/window_estimator.h).
+#ifndef ICPBENCH_ALGORITHMS_ESTIMATOR_H_
+#define ICPBENCH_ALGORITHMS_ESTIMATOR_H_
+
+#include <memory>
+#include <stdexcept>
+
+#include "core/contractor.h"
+#include "core/estimate.h"
+#include "core/view.h"
+
+namespace icp {
+
+struct StepResult {
+  std::unique_ptr<Estimate> estimate;
+  // status: kStopped when the stop condition cut the step short; message:
+  // anything worth keeping ("" for nothing). Work counters are reported as
+  // properties.
+  ContractSummary summary;
+  Properties properties;
+};
+
+// Thrown by an estimator that finds its own result broken (a contractor that
+// grew its box): the run is recorded as failed with this message.
+class InvalidResult : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class Estimator {
+ public:
+  virtual ~Estimator() = default;
+  // The estimate of one step, from the view the estimator needs (present:
+  // the harness pairs estimators with problems by view).
+  virtual StepResult Step(const Views& views, const StopCondition& stop) = 0;
+  // Totals over the steps so far, stored with the run.
+  virtual Properties RunProperties() const { return {}; }
+};
+
+// Work counters as properties ("revise_calls", "newton_steps", ...).
+Properties WorkProperties(const WorkCounters& work);
+
+}  // namespace icp
+
+#endif  // ICPBENCH_ALGORITHMS_ESTIMATOR_H_

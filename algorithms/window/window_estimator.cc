@@ -1,0 +1,114 @@
+#include "algorithms/window/window_estimator.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace icp {
+
+void DescribeCarry(std::string* carry, ParamSet& set) {
+  set.Add("carry", carry,
+          "window states starting from the previous result: none, the oldest (first, paper "
+          "000) or all shared ones",
+          {"none", "first", "all"});
+}
+
+ParamMap ContractorParams(const ParamMap& params) {
+  ParamMap out = params;
+  out.erase("carry");
+  return out;
+}
+
+Carry ParseCarry(const std::string& text) {
+  if (text == "none") return Carry::kNone;
+  if (text == "all") return Carry::kAll;
+  if (text == "first") return Carry::kFirst;
+  throw ParamError("carry = " + text + ": must be one of none|first|all");
+}
+
+Properties WorkProperties(const WorkCounters& work) {
+  return {{"revise_calls", work.revise_calls},
+          {"newton_steps", work.newton_steps},
+          {"bisections", work.bisections},
+          {"inner_calls", work.inner_calls}};
+}
+
+Interval CarryInto(const Interval& fresh, const Interval& carried, double period) {
+  if (period <= 0) return Intersect(fresh, carried);
+  // fresh + period Z covers the line: nothing to remove, and carried's frame
+  // is kept.
+  if (fresh.Width() >= period || carried.IsEmpty()) return carried;
+  if (fresh.IsEmpty()) return fresh;
+  if (!(carried.Width() < kInf)) return carried;
+  // The hull of carried's intersections with the shifts of fresh it meets;
+  // each shift is enclosed (a multiple of a rounded period is not exact).
+  Interval out = Interval::Empty();
+  const double first = std::floor((carried.lo() - fresh.hi()) / period) - 1;
+  const double last = std::ceil((carried.hi() - fresh.lo()) / period) + 1;
+  if (last - first > 1000) return carried;
+  for (double m = first; m <= last; ++m)
+    out = Hull(out, Intersect(carried, fresh + Interval(m) * Interval(period)));
+  return out;
+}
+
+WindowEstimator::WindowEstimator(ContractorFactory make_contractor, ParamMap contractor_params,
+                                 Carry carry)
+    : make_contractor_(make_contractor),
+      contractor_params_(std::move(contractor_params)),
+      carry_(carry) {}
+
+Box WindowEstimator::InitialBox(const CspView& view, const StateSpace& space) const {
+  Box box = view.csp.domains();
+  if (carry_ == Carry::kNone || previous_box_.size() == 0) return box;
+  int oldest = view.newest;
+  for (const StateRef& s : view.states) oldest = std::min(oldest, s.time);
+  for (std::size_t i = 0; i < view.states.size(); ++i) {
+    const StateRef& s = view.states[i];
+    if (s.time >= view.newest || (carry_ == Carry::kFirst && s.time != oldest)) continue;
+    const auto it = std::lower_bound(previous_states_.begin(), previous_states_.end(), s);
+    if (it == previous_states_.end() || !(*it == s)) continue;
+    box[i] = CarryInto(box[i], previous_box_[it - previous_states_.begin()],
+                       space.Period(s.component));
+  }
+  return box;
+}
+
+StepResult WindowEstimator::Step(const Views& views, const StopCondition& stop) {
+  const CspView& view = *views.csp;
+  Box box = InitialBox(view, views.space);
+  const Box initial = box;
+  std::unique_ptr<Contractor> contractor = make_contractor_(contractor_params_, view.csp);
+  StepResult result;
+  result.summary = contractor->Contract(box, stop);
+  for (std::size_t i = 0; i < box.size() && !box.IsEmpty(); ++i) {
+    if (std::isnan(box[i].lo()) || std::isnan(box[i].hi()))
+      throw InvalidResult(view.csp.names()[i] + " has a NaN bound");
+    if (!box[i].IsSubsetOf(initial[i]))
+      throw InvalidResult(view.csp.names()[i] + " grew beyond its initial domain");
+  }
+  if (box.size() != initial.size())
+    throw InvalidResult("the box has " + std::to_string(box.size()) + " components, the CSP " +
+                        std::to_string(initial.size()));
+  total_work_ += result.summary.work;
+  result.properties = WorkProperties(result.summary.work);
+
+  Box newest(static_cast<std::size_t>(views.space.size()));
+  std::vector<bool> found(newest.size(), false);
+  for (std::size_t i = 0; i < view.states.size(); ++i) {
+    const StateRef& s = view.states[i];
+    if (s.time != view.newest) continue;
+    newest[s.component] = box[i];
+    found[s.component] = true;
+  }
+  if (std::find(found.begin(), found.end(), false) != found.end())
+    throw std::invalid_argument("the CSP view lacks a variable for some component of the newest state");
+  if (box.IsEmpty()) newest.SetEmpty();
+  result.estimate = std::make_unique<BoxEstimate>(std::move(newest));
+
+  previous_states_ = view.states;
+  if (!std::is_sorted(previous_states_.begin(), previous_states_.end()))
+    throw std::invalid_argument("the CSP view's states are not in (time, component) order");
+  previous_box_ = box.IsEmpty() ? Box() : std::move(box);
+  return result;
+}
+
+}  // namespace icp

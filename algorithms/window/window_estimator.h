@@ -1,0 +1,82 @@
+// The adapter that turns any CSP contractor into an estimator (DESIGN.md
+// "Estimator over contractor"): at each step it contracts the CSP view's
+// window and returns the newest state's box. It owns the sliding-window
+// memory: with `carry`, states that the previous window also held start from
+// the previous result (matched by StateRef, never by position):
+//   none   every window starts from its measurements alone;
+//   first  the window's oldest state starts from the previous result (paper
+//          000 §4.3), the others from their measurements;
+//   all    every state the two windows share (a filter that forgets nothing).
+// An empty previous result (the track was lost) carries nothing.
+//
+// Sound when the contractor is: a carried interval holds every solution of
+// the previous window, so intersecting it keeps every solution of this one.
+#ifndef ICPBENCH_ALGORITHMS_WINDOW_WINDOW_ESTIMATOR_H_
+#define ICPBENCH_ALGORITHMS_WINDOW_WINDOW_ESTIMATOR_H_
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "algorithms/estimator.h"
+#include "core/constraint_system.h"
+#include "core/params.h"
+
+namespace icp {
+
+using ContractorFactory = std::unique_ptr<Contractor> (*)(const ParamMap&, const ConstraintSystem&);
+
+enum class Carry { kNone, kFirst, kAll };
+
+// The parameters of a windowed contractor: the contractor's own, at the top
+// level, and `carry`.
+template <class ContractorParams>
+struct WindowParams {
+  ContractorParams contractor;
+  std::string carry = "first";
+};
+void DescribeCarry(std::string* carry, ParamSet& set);
+template <class ContractorParams>
+void Describe(WindowParams<ContractorParams>& p, ParamSet& set) {
+  Describe(p.contractor, set);
+  DescribeCarry(&p.carry, set);
+}
+
+// The domain of a state that starts from `carried` (the previous result)
+// instead of `fresh` (its measurements): their intersection, taken modulo
+// `period` for a periodic component (a heading), in carried's frame.
+Interval CarryInto(const Interval& fresh, const Interval& carried, double period);
+
+class WindowEstimator : public Estimator {
+ public:
+  // contractor_params: the contractor's own parameters (carry removed).
+  WindowEstimator(ContractorFactory make_contractor, ParamMap contractor_params, Carry carry);
+  StepResult Step(const Views& views, const StopCondition& stop) override;
+  Properties RunProperties() const override { return WorkProperties(total_work_); }
+
+ private:
+  // The initial box: the view's domains with the carried states.
+  Box InitialBox(const CspView& view, const StateSpace& space) const;
+
+  ContractorFactory make_contractor_;
+  ParamMap contractor_params_;
+  Carry carry_;
+  std::vector<StateRef> previous_states_;  // sorted, as windows are
+  Box previous_box_;                        // empty: nothing to carry
+  WorkCounters total_work_;
+};
+
+// A CSP algorithm's parameters without `carry`: the contractor's own.
+ParamMap ContractorParams(const ParamMap& params);
+Carry ParseCarry(const std::string& text);  // "none" | "first" | "all"
+
+// The registry's entry points for a contractor with parameters P made by F.
+template <class P, ContractorFactory F>
+std::unique_ptr<Estimator> MakeWindowEstimator(const ParamMap& params, std::uint64_t /*seed*/) {
+  const WindowParams<P> parsed = ParseParams<WindowParams<P>>("window", params);
+  return std::make_unique<WindowEstimator>(F, ContractorParams(params), ParseCarry(parsed.carry));
+}
+
+}  // namespace icp
+
+#endif  // ICPBENCH_ALGORITHMS_WINDOW_WINDOW_ESTIMATOR_H_

@@ -1,0 +1,71 @@
+#include "algorithms/window/window_estimator.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "algorithms/hc4/hc4.h"
+
+namespace icp {
+namespace {
+
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+TEST(CarryIntoTest, PlainComponentsIntersect) {
+  EXPECT_EQ(CarryInto(Interval(0, 2), Interval(1, 3), 0), Interval(1, 2));
+  EXPECT_TRUE(CarryInto(Interval(0, 1), Interval(2, 3), 0).IsEmpty());
+}
+
+TEST(CarryIntoTest, AFullTurnKeepsTheCarriedFrame) {
+  // An unknown heading [-pi, pi] removes nothing from a heading carried in
+  // another turn of the drive.
+  const Interval unknown(-Pi().hi(), Pi().hi());
+  EXPECT_EQ(CarryInto(unknown, Interval(7.4, 7.6), kTwoPi), Interval(7.4, 7.6));
+}
+
+TEST(CarryIntoTest, ANarrowPeriodicDomainIsIntersectedModuloThePeriod) {
+  // fresh [0.1, 0.2] + 2 pi meets carried [6.2, 6.5] in about [6.383, 6.484].
+  const Interval out = CarryInto(Interval(0.1, 0.2), Interval(6.2, 6.5), kTwoPi);
+  EXPECT_LE(out.lo(), 0.1 + kTwoPi);
+  EXPECT_GE(out.hi(), 0.2 + kTwoPi);
+  EXPECT_GT(out.lo(), 6.3);
+  EXPECT_LT(out.hi(), 6.49);
+  EXPECT_TRUE(CarryInto(Interval(0.1, 0.2), Interval(1, 2), kTwoPi).IsEmpty());
+}
+
+// A two-state window x[t] = x[t-1] + 1, each x in [-10, 10]: carrying the
+// previous result narrows the next window by identity of the states.
+Views TwoStateWindow(int t) {
+  Views views;
+  views.step = t;
+  views.space.names = {"x"};
+  CspView v;
+  Expr a = v.csp.AddVariable("x[" + std::to_string(t - 1) + "]", Interval(-10, 10));
+  Expr b = v.csp.AddVariable("x[" + std::to_string(t) + "]", Interval(-10, 10));
+  v.csp.AddConstraint(b, Relation::kEq, a + v.csp.Constant(1));
+  v.states = {{t - 1, 0}, {t, 0}};
+  v.newest = t;
+  views.csp = std::move(v);
+  return views;
+}
+
+TEST(WindowEstimatorTest, CarriesStatesByIdentity) {
+  WindowEstimator none(&MakeHC4, {}, Carry::kNone);
+  WindowEstimator first(&MakeHC4, {}, Carry::kFirst);
+  for (int t = 1; t <= 3; ++t) {
+    const Views views = TwoStateWindow(t);
+    const Box a = none.Step(views, StopCondition()).estimate->Hull();
+    const Box b = first.Step(views, StopCondition()).estimate->Hull();
+    EXPECT_EQ(a[0], Interval(-9, 10)) << t;
+    // x[t-1] starts from the previous window's x[t-1] = [-11 + t, 10].
+    EXPECT_EQ(b[0], Interval(-10 + t, 10)) << t;
+  }
+}
+
+TEST(WindowEstimatorTest, ContractorParamsLeaveCarryOut) {
+  EXPECT_EQ(ContractorParams({{"carry", "all"}, {"ratio", "0.1"}}), (ParamMap{{"ratio", "0.1"}}));
+  EXPECT_THROW(ParseCarry("some"), ParamError);
+}
+
+}  // namespace
+}  // namespace icp
