@@ -23,6 +23,10 @@ struct StepResult {
   // properties.
   ContractSummary summary;
   Properties properties;
+  // Seconds of the solving proper, when the estimator times it itself to
+  // leave out setup (WindowEstimator: compiling the step's CSP); negative:
+  // the harness times the whole Step.
+  double solve_time_s = -1;
 };
 
 // Thrown by an estimator that finds its own result broken (a contractor that

@@ -68,8 +68,15 @@ RunRecord MakeRun(int i, int num_steps, const std::string& algorithm = "hc4",
     s.area = empty ? kNaN : 1.0 / (k + 3);
     s.centre_error = unknown || empty ? kNaN : 0.01 * k;
     s.solve_time_s = 1e-4 * (k % 13) + 1e-6 * i;
+    s.estimate = k % 3 == 1 ? "paving" : "box";
+    // Sorted by name: the store loads them so.
+    s.properties = {{"boxes", std::int64_t{k}},
+                    {"message", std::string(k % 2 ? "stopped: ratio" : "")},
+                    {"q", k % 4 == 1 ? kNaN : 0.25 * k}};
     r.steps.push_back(s);
   }
+  r.properties = {{"bisections", std::int64_t{-3}}, {"revise_calls", std::int64_t{1} << 40},
+                  {"spread", kInf}};
   if (with_metrics) r.metrics = ComputeMetrics(r.steps, 3);
   r.metrics.corridors.push_back({"inf-test", kNaN, kInf, -kInf, 1.5});
   r.provenance = {"0123abc-dirty", "host1 / AMD EPYC", "GNU 12.2.0", "Release -O3", "2024-05-01T12:00:00Z"};
@@ -81,6 +88,18 @@ RunRecord MakeRun(int i, int num_steps, const std::string& algorithm = "hc4",
 ::testing::AssertionResult Same(const char* what, double a, double b) {
   if ((std::isnan(a) && std::isnan(b)) || a == b) return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << what << ": " << a << " != " << b;
+}
+
+void ExpectSameProperties(const Properties& a, const Properties& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].name, b[i].name);
+    EXPECT_EQ(a[i].value.index(), b[i].value.index()) << a[i].name;
+    if (a[i].value.index() == 1 && b[i].value.index() == 1)
+      EXPECT_TRUE(Same(a[i].name.c_str(), std::get<double>(a[i].value), std::get<double>(b[i].value)));
+    else
+      EXPECT_EQ(a[i].value, b[i].value) << a[i].name;
+  }
 }
 
 void ExpectSameRun(const RunRecord& a, const RunRecord& b, bool with_steps) {
@@ -124,6 +143,7 @@ void ExpectSameRun(const RunRecord& a, const RunRecord& b, bool with_steps) {
     EXPECT_TRUE(b.steps.empty());
     return;
   }
+  ExpectSameProperties(a.properties, b.properties);
   ASSERT_EQ(a.steps.size(), b.steps.size());
   for (std::size_t k = 0; k < a.steps.size(); ++k) {
     const StepRecord& s = a.steps[k];
@@ -135,6 +155,8 @@ void ExpectSameRun(const RunRecord& a, const RunRecord& b, bool with_steps) {
     EXPECT_TRUE(Same("area", s.area, t.area));
     EXPECT_TRUE(Same("centre_error", s.centre_error, t.centre_error));
     EXPECT_TRUE(Same("solve_time_s", s.solve_time_s, t.solve_time_s));
+    EXPECT_EQ(s.estimate, t.estimate);
+    ExpectSameProperties(s.properties, t.properties);
     ASSERT_EQ(s.vars.size(), t.vars.size());
     for (std::size_t v = 0; v < s.vars.size(); ++v) {
       EXPECT_EQ(s.vars[v].name, t.vars[v].name);
@@ -254,6 +276,58 @@ TEST(ResultsStoreTest, FileIsSelfDescribingWithTypedColumns) {
             "null");
   EXPECT_EQ(RawQuery(path, "SELECT typeof(contained) FROM steps WHERE step = 4"), "null");
   EXPECT_EQ(RawQuery(path, "SELECT count(*) FROM step_values"), "30");
+  // Open properties keep their SQL type.
+  EXPECT_EQ(RawQuery(path, "SELECT typeof(value) || type FROM step_properties WHERE step = 2 AND name = 'boxes'"),
+            "integerint");
+  EXPECT_EQ(RawQuery(path, "SELECT typeof(value) || type FROM step_properties WHERE step = 2 AND name = 'q'"),
+            "realreal");
+  EXPECT_EQ(RawQuery(path, "SELECT value FROM run_properties WHERE name = 'revise_calls'"),
+            "1099511627776");
+  EXPECT_EQ(RawQuery(path, "SELECT estimate FROM steps WHERE step = 1"), "paving");
+}
+
+// A store written by schema version 1 (no estimate kind, no properties) is
+// migrated when opened: its runs load, new runs with properties go in.
+TEST(ResultsStoreTest, MigratesAVersionOneStore) {
+  const std::string path = FreshPath("v1");
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
+  const char* v1 = R"sql(
+CREATE TABLE meta (key TEXT PRIMARY KEY, value TEXT);
+INSERT INTO meta VALUES ('schema_version', '1'), ('conventions', 'old'), ('writer', 'icpbench');
+CREATE TABLE runs (id INTEGER PRIMARY KEY, key TEXT UNIQUE NOT NULL, spec_file TEXT,
+  algorithm TEXT, algorithm_params TEXT, problem TEXT, problem_params TEXT, seed INTEGER,
+  timeout_s REAL, status TEXT, reason TEXT, wall_time_s REAL, steps INTEGER, mean_area REAL,
+  consistency_rate REAL, centre_rmse REAL, time_mean_s REAL, time_median_s REAL,
+  time_p90_s REAL, time_mean_ci_lo_s REAL, time_mean_ci_hi_s REAL, corridors TEXT,
+  git_revision TEXT, machine TEXT, compiler TEXT, flags TEXT, date TEXT);
+CREATE TABLE steps (run_id INTEGER NOT NULL REFERENCES runs(id), step INTEGER NOT NULL,
+  status TEXT, contained INTEGER, area REAL, centre_error REAL, solve_time_s REAL,
+  PRIMARY KEY (run_id, step)) WITHOUT ROWID;
+CREATE TABLE step_values (run_id INTEGER NOT NULL, step INTEGER NOT NULL, pos INTEGER NOT NULL,
+  var TEXT NOT NULL, lo REAL, hi REAL, truth REAL, PRIMARY KEY (run_id, step, pos),
+  UNIQUE (run_id, step, var), FOREIGN KEY (run_id, step) REFERENCES steps(run_id, step))
+  WITHOUT ROWID;
+INSERT INTO runs (id, key, algorithm, algorithm_params, problem, problem_params, seed, status,
+  steps) VALUES (1, 'hc4{}|chain{}|seed=1', 'hc4', '{}', 'chain', '{}', 1, 'ok', 1);
+INSERT INTO steps VALUES (1, 0, 'contracted', 1, 2.5, 0.1, 1e-5);
+INSERT INTO step_values VALUES (1, 0, 0, 'x', -1, 1, 0);
+)sql";
+  ASSERT_EQ(sqlite3_exec(db, v1, nullptr, nullptr, nullptr), SQLITE_OK) << sqlite3_errmsg(db);
+  sqlite3_close(db);
+  {
+    ResultsStore store(path);
+    const std::vector<RunRecord> runs = store.LoadRuns(true);
+    ASSERT_EQ(runs.size(), 1u);
+    ASSERT_EQ(runs[0].steps.size(), 1u);
+    EXPECT_EQ(runs[0].steps[0].estimate, "box");
+    EXPECT_TRUE(runs[0].steps[0].properties.empty());
+    EXPECT_EQ(runs[0].steps[0].vars[0].hi, 1);
+    store.Insert(MakeRun(1, 5));
+    ASSERT_EQ(store.LoadRuns(true).size(), 2u);
+    ExpectSameRun(MakeRun(1, 5), store.LoadRuns(true)[1], true);
+  }
+  EXPECT_EQ(RawQuery(path, "SELECT value FROM meta WHERE key='schema_version'"), "2");
 }
 
 TEST(ResultsStoreTest, SameKeyReplacesTheRun) {

@@ -21,7 +21,17 @@ void Describe(TestParticlesParams& p, ParamSet& set) {
 
 namespace {
 
-using Convert = std::function<std::unique_ptr<Estimate>(const Box& box, const StateSpace& space)>;
+// box: HC4's newest-state box; domains: the newest state's initial domains.
+using Convert = std::function<std::unique_ptr<Estimate>(const Box& box, const Box& domains,
+                                                         const StateSpace& space)>;
+
+Box NewestDomains(const Views& views) {
+  const CspView& view = *views.csp;
+  Box domains(static_cast<std::size_t>(views.space.size()));
+  for (std::size_t i = 0; i < view.states.size(); ++i)
+    if (view.states[i].time == view.newest) domains[view.states[i].component] = view.csp.domains()[i];
+  return domains;
+}
 
 // HC4 over the window, then the box converted to another kind of estimate.
 class ConvertingEstimator : public Estimator {
@@ -36,7 +46,7 @@ class ConvertingEstimator : public Estimator {
         throw std::invalid_argument("test estimators need a planar position (x, y)");
       if (!(box[views.space.x].Width() < kInf) || !(box[views.space.y].Width() < kInf))
         throw std::runtime_error("unbounded x-y box at step " + std::to_string(views.step));
-      result.estimate = convert_(box, views.space);
+      result.estimate = convert_(box, NewestDomains(views), views.space);
     }
     return result;
   }
@@ -63,7 +73,7 @@ std::vector<Interval> Split(const Interval& x, int n) {
 
 std::unique_ptr<Estimator> MakeTestPaving(const ParamMap& params, std::uint64_t) {
   const auto p = ParseParams<TestPavingParams>("test-paving", params);
-  return std::make_unique<ConvertingEstimator>([p](const Box& box, const StateSpace& space) {
+  return std::make_unique<ConvertingEstimator>([p](const Box& box, const Box&, const StateSpace& space) {
     std::vector<Box> boundary;
     for (const Interval& x : Split(box[space.x], p.splits))
       for (const Interval& y : Split(box[space.y], p.splits)) {
@@ -78,10 +88,11 @@ std::unique_ptr<Estimator> MakeTestPaving(const ParamMap& params, std::uint64_t)
 
 std::unique_ptr<Estimator> MakeTestAccumulator(const ParamMap& params, std::uint64_t) {
   const auto p = ParseParams<TestAccumulatorParams>("test-accumulator", params);
-  return std::make_unique<ConvertingEstimator>([p](const Box& box, const StateSpace& space) {
+  return std::make_unique<ConvertingEstimator>([p](const Box& box, const Box& domains,
+                                                               const StateSpace& space) {
     Box search = box;
     for (int c : {space.x, space.y})
-      search[c] = box[c] + Interval(-0.5, 0.5) * Interval(box[c].Width());
+      search[c] = Intersect(box[c] + Interval(-0.5, 0.5) * Interval(box[c].Width()), domains[c]);
     cv::Mat counts(p.cells, p.cells, CV_32S, cv::Scalar(1));
     const std::vector<Interval> xs = Split(search[space.x], p.cells);
     const std::vector<Interval> ys = Split(search[space.y], p.cells);
@@ -96,7 +107,7 @@ std::unique_ptr<Estimator> MakeTestAccumulator(const ParamMap& params, std::uint
 std::unique_ptr<Estimator> MakeTestParticles(const ParamMap& params, std::uint64_t seed) {
   const auto p = ParseParams<TestParticlesParams>("test-particles", params);
   auto rng = std::make_shared<std::mt19937_64>(seed);
-  return std::make_unique<ConvertingEstimator>([p, rng](const Box& box, const StateSpace&) {
+  return std::make_unique<ConvertingEstimator>([p, rng](const Box& box, const Box&, const StateSpace&) {
     cv::Mat particles(p.particles, static_cast<int>(box.size()), CV_64F);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (int i = 0; i < p.particles; ++i)

@@ -6,8 +6,8 @@
 //   test-paving       the box split into `splits` x `splits` boundary boxes
 //                     over x and y (so it encloses what the box encloses);
 //   test-accumulator  a `cells` x `cells` grid over the box widened by half
-//                     its width on each side: cells meeting the box count 2,
-//                     the others 1, threshold 2;
+//                     its width on each side (within the step's domains):
+//                     cells meeting the box count 2, the others 1, threshold 2;
 //   test-particles    `particles` points drawn uniformly in the box (seeded),
 //                     equal weights.
 #ifndef ICPBENCH_ALGORITHMS_TEST_ESTIMATORS_TEST_ESTIMATORS_H_

@@ -1,6 +1,7 @@
 #include "algorithms/window/window_estimator.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace icp {
@@ -78,7 +79,10 @@ StepResult WindowEstimator::Step(const Views& views, const StopCondition& stop) 
   const Box initial = box;
   std::unique_ptr<Contractor> contractor = make_contractor_(contractor_params_, view.csp);
   StepResult result;
+  const auto start = std::chrono::steady_clock::now();
   result.summary = contractor->Contract(box, stop);
+  result.solve_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (std::size_t i = 0; i < box.size() && !box.IsEmpty(); ++i) {
     if (std::isnan(box[i].lo()) || std::isnan(box[i].hi()))
       throw InvalidResult(view.csp.names()[i] + " has a NaN bound");
