@@ -2,8 +2,9 @@
 
 #include <cmath>
 #include <numbers>
-#include <random>
 #include <string>
+
+#include "core/random.h"
 
 namespace icp {
 
@@ -22,20 +23,19 @@ void Describe(ChainParams& p, ParamSet& set) {
 namespace {
 // A measurement interval of half-width e around a noisy reading of truth;
 // the noise stays below 0.9 e so the truth is strictly inside.
-Interval Measure(double truth, double e, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> noise(-0.9 * e, 0.9 * e);
-  double reading = truth + noise(rng);
+Interval Measure(double truth, double e, RandomEngine& rng) {
+  double reading = truth + UniformReal(rng, -0.9 * e, 0.9 * e);
   return Interval(reading - e, reading + e);
 }
 }  // namespace
 
 Step MakeChainStep(const ChainParams& p, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  RandomEngine rng(seed);
+  auto unit = [&] { return UniformReal(rng, -1, 1); };
   const double pi = std::numbers::pi;
   Step step;
   ConstraintSystem& csp = step.csp;
-  double x = 0, y = 0, th = pi * unit(rng) * 0.999;
+  double x = 0, y = 0, th = pi * unit() * 0.999;
   auto add_state = [&](int k, double xt, double yt, double tht, const Interval& th_domain) {
     const std::string i = "[" + std::to_string(k) + "]";
     csp.AddVariable("x" + i, Measure(xt, p.gps_error, rng));
@@ -46,8 +46,8 @@ Step MakeChainStep(const ChainParams& p, std::uint64_t seed) {
   add_state(0, x, y, th,
             p.heading_known ? Interval(th - 0.1, th + 0.1) : Interval(-Pi().hi(), Pi().hi()));
   for (int k = 1; k <= p.w; ++k) {
-    const double ds = p.step_length * (1 + 0.2 * unit(rng));
-    const double dth = p.max_turn * unit(rng);
+    const double ds = p.step_length * (1 + 0.2 * unit());
+    const double dth = p.max_turn * unit();
     const double heading = th + dth / 2;
     x += ds * std::cos(heading);
     y += ds * std::sin(heading);
