@@ -26,12 +26,12 @@
 #include <functional>
 #include <limits>
 #include <numbers>
-#include <random>
 #include <string>
 #include <vector>
 
 #include "core/interval.h"
 #include "core/projections.h"
+#include "core/random.h"
 
 namespace icp {
 namespace {
@@ -124,11 +124,9 @@ class Sampler {
     mpfr_div_2ui(half_pi_.v, half_pi_.v, 1, MPFR_RNDN);
   }
 
-  double Unit() { return std::uniform_real_distribution<double>(0, 1)(g_); }
-  int Int(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(g_); }
-  int64_t Int64(int64_t lo, int64_t hi) {
-    return std::uniform_int_distribution<int64_t>(lo, hi)(g_);
-  }
+  double Unit() { return UniformReal(g_, 0, 1); }
+  int Int(int lo, int hi) { return static_cast<int>(UniformInt(g_, lo, hi)); }
+  int64_t Int64(int64_t lo, int64_t hi) { return UniformInt(g_, lo, hi); }
   bool Coin(double p) { return Unit() < p; }
   double Sign() { return Coin(0.5) ? 1.0 : -1.0; }
 
@@ -158,8 +156,7 @@ class Sampler {
     if (r < 48) return Scaled(960, 1023);
     if (r < 56) return Scaled(-1022, -960);
     if (r < 62) {  // subnormal
-      double d = std::bit_cast<double>(
-          std::uniform_int_distribution<uint64_t>(1, (uint64_t{1} << 52) - 1)(g_));
+      double d = std::bit_cast<double>(Int64(1, (int64_t{1} << 52) - 1));
       return Sign() * d;
     }
     if (r < 67) return Coin(0.5) ? 0.0 : -0.0;
@@ -280,7 +277,7 @@ class Sampler {
   }
 
  private:
-  std::mt19937_64 g_;
+  RandomEngine g_;
   Mp half_pi_;
 };
 

@@ -7,10 +7,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <string>
 #include <vector>
 
+#include "core/random.h"
 #include "core/tape.h"
 
 namespace icp {
@@ -346,7 +346,7 @@ TEST(MinibexParserTest, PrintedConstraintsParseBackToEnclosures) {
   ASSERT_EQ(reparsed.num_variables(), original.num_variables());
   ASSERT_EQ(reparsed.constraints().size(), original.constraints().size()) << printed;
 
-  std::mt19937_64 rng(7);
+  RandomEngine rng(7);
   for (int c = 0; c < static_cast<int>(original.constraints().size()); ++c) {
     const Interval r0 = original.constraints()[c].range, r1 = reparsed.constraints()[c].range;
     EXPECT_TRUE(r0.IsSubsetOf(r1)) << c << ": " << r0 << " " << r1;
@@ -354,8 +354,8 @@ TEST(MinibexParserTest, PrintedConstraintsParseBackToEnclosures) {
     for (int trial = 0; trial < 20; ++trial) {
       Box box;
       for (const Interval& d : original.domains()) {
-        std::uniform_real_distribution<double> u(d.lo(), d.hi());
-        double a = u(rng), b = trial % 4 == 0 ? a : u(rng);
+        const double a = UniformReal(rng, d.lo(), d.hi());
+        const double b = trial % 4 == 0 ? a : UniformReal(rng, d.lo(), d.hi());
         box.push_back(Interval(std::min(a, b), std::max(a, b)));
       }
       const Interval f0 = Eval(original, c, box), f1 = Eval(reparsed, c, box);
@@ -554,10 +554,8 @@ end
   const std::vector<std::string> words = {"for", "end", "oo", "in", "Variables", "Constraints",
                                           "1e308", "1e-400", "99999999999", "sqrt(", "pi", "//",
                                           "/*", "x(", "x[", "0", "-", "^"};
-  std::mt19937 rng(12345);
-  auto pick = [&rng](std::size_t n) {
-    return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng);
-  };
+  RandomEngine rng(12345);
+  auto pick = [&rng](std::size_t n) { return UniformIndex(rng, n); };
   int parsed = 0, rejected = 0;
   for (int trial = 0; trial < 2000; ++trial) {
     std::string text = base;

@@ -14,7 +14,6 @@
 #include <functional>
 #include <memory>
 #include <optional>
-#include <random>
 #include <string_view>
 #include <vector>
 
@@ -22,6 +21,7 @@
 #include "core/constraint_system.h"
 #include "core/contractor.h"
 #include "core/estimate.h"
+#include "core/random.h"
 
 namespace icp {
 
@@ -59,8 +59,6 @@ struct MeasurementSetView {
   // truth is known; empty otherwise. For metrics, never for estimators.
   std::vector<bool> outliers;
 };
-
-using RandomEngine = std::mt19937_64;
 
 struct ProbabilisticView {
   // Draws a state from the prior of the first step.

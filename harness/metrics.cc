@@ -4,8 +4,9 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <random>
 #include <string>
+
+#include "core/random.h"
 
 namespace icp {
 
@@ -39,32 +40,18 @@ double Mean(const std::vector<double>& values) {
   return sum / static_cast<double>(values.size());
 }
 
-// A uniform index in [0, n) from the generator's raw output by rejection, so
-// the draws (unlike std::uniform_int_distribution's) are the same with every
-// standard library.
-std::size_t DrawIndex(std::mt19937_64& rng, std::size_t n) {
-  const std::uint64_t range = n;
-  const std::uint64_t limit = std::numeric_limits<std::uint64_t>::max() -
-                              std::numeric_limits<std::uint64_t>::max() % range;
-  std::uint64_t x;
-  do {
-    x = rng();
-  } while (x >= limit);
-  return static_cast<std::size_t>(x % range);
-}
-
 // Percentile bootstrap: the 2.5% and 97.5% quantiles of the means of
 // kBootstrapResamples resamples drawn with replacement.
 void BootstrapMeanInterval(const std::vector<double>& values, std::uint64_t seed, double* lo,
                            double* hi) {
   *lo = *hi = kNaN;
   if (values.empty()) return;
-  std::mt19937_64 rng(seed);
+  RandomEngine rng(seed);
   std::vector<double> means;
   means.reserve(kBootstrapResamples);
   for (int r = 0; r < kBootstrapResamples; ++r) {
     double sum = 0;
-    for (std::size_t i = 0; i < values.size(); ++i) sum += values[DrawIndex(rng, values.size())];
+    for (std::size_t i = 0; i < values.size(); ++i) sum += values[UniformIndex(rng, values.size())];
     means.push_back(sum / static_cast<double>(values.size()));
   }
   std::sort(means.begin(), means.end());

@@ -5,8 +5,8 @@
 // "BC4 ≈ BC3" is, precisely, BC3 ⊆ BC4: for a variable occurring once BC4
 // uses HC4Revise, whose backward sweep takes the hull of unions (abs, sqr,
 // sin, ...) at inner nodes, while BC3 tests slices on the exact range; so BC3
-// can be tighter (e.g. sqrt(abs((v3+3)*atan(v2))) = c, random seed 17), never
-// looser. On the car-track CSP they coincide (algorithms/bc3/bc3_test.cc).
+// can be tighter (e.g. sqrt(abs(cos((-2.875+v3)^3))) = c, random seed 159),
+// never looser. On the car-track CSP they coincide (algorithms/bc3/bc3_test.cc).
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/random.h"
 #include "core/tape.h"
 
 namespace icp::testing {
@@ -32,15 +33,15 @@ class Generator {
       default: return Min(Random(depth - 1), Random(depth - 1));
     }
   }
-  std::uint64_t Pick(std::uint64_t n) { return rng_() % n; }
-  double Uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
+  std::uint64_t Pick(std::uint64_t n) { return UniformIndex(rng_, n); }
+  double Uniform(double lo, double hi) { return UniformReal(rng_, lo, hi); }
 
  private:
   Expr Leaf() {
     if (Pick(3) == 0) return csp_->Constant(Interval(std::round(Uniform(-3, 3) * 8) / 8));
     return csp_->Var(static_cast<int>(Pick(num_vars_)));
   }
-  std::mt19937_64 rng_;
+  RandomEngine rng_;
   ConstraintSystem* csp_;
   int num_vars_;
   bool discontinuous_;

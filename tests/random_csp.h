@@ -6,7 +6,6 @@
 #define ICPBENCH_TESTS_RANDOM_CSP_H_
 
 #include <cstdint>
-#include <random>
 #include <vector>
 
 #include "core/constraint_system.h"

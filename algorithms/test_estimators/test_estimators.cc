@@ -1,11 +1,11 @@
 #include "algorithms/test_estimators/test_estimators.h"
 
 #include <functional>
-#include <random>
 #include <stdexcept>
 
 #include "algorithms/hc4/hc4.h"
 #include "algorithms/window/window_estimator.h"
+#include "core/random.h"
 
 namespace icp {
 
@@ -106,16 +106,15 @@ std::unique_ptr<Estimator> MakeTestAccumulator(const ParamMap& params, std::uint
 
 std::unique_ptr<Estimator> MakeTestParticles(const ParamMap& params, std::uint64_t seed) {
   const auto p = ParseParams<TestParticlesParams>("test-particles", params);
-  auto rng = std::make_shared<std::mt19937_64>(seed);
+  auto rng = std::make_shared<RandomEngine>(seed);
   return std::make_unique<ConvertingEstimator>([p, rng](const Box& box, const Box&, const StateSpace&) {
     cv::Mat particles(p.particles, static_cast<int>(box.size()), CV_64F);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (int i = 0; i < p.particles; ++i)
       for (int c = 0; c < particles.cols; ++c) {
         const Interval& b = box[c];
         const double lo = std::isfinite(b.lo()) ? b.lo() : -1e6;
         const double hi = std::isfinite(b.hi()) ? b.hi() : 1e6;
-        particles.at<double>(i, c) = std::min(hi, lo + (hi - lo) * unit(*rng));
+        particles.at<double>(i, c) = UniformReal(*rng, lo, hi);
       }
     return std::make_unique<ParticleEstimate>(particles, std::vector<double>(p.particles, 1.0));
   });

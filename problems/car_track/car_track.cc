@@ -9,10 +9,11 @@
 #include <fstream>
 #include <numbers>
 #include <ostream>
-#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
+
+#include "core/random.h"
 
 namespace icp {
 
@@ -105,19 +106,18 @@ Interval Around(double x, double e) { return Interval(x) + Interval(-e, e); }
 }  // namespace
 
 std::vector<CarTrackRecord> SimulateCarTrack(const CarTrackParams& p, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  std::uniform_real_distribution<double> fraction(0.0, 1.0);
+  RandomEngine rng(seed);
+  auto unit = [&] { return UniformReal(rng, -1, 1); };
   // Bounded noise: at most 0.9 of each bound, so the truth stays strictly
   // inside every measurement interval and rounding cannot push it out.
-  auto noise = [&](double bound) { return 0.9 * bound * unit(rng); };
+  auto noise = [&](double bound) { return 0.9 * bound * unit(); };
 
-  const double theta0 = 0.999 * kPi * unit(rng);
-  const double speed_phase = kPi * unit(rng);
+  const double theta0 = 0.999 * kPi * unit();
+  const double speed_phase = kPi * unit();
   const double r_left = p.wheel_radius + noise(p.radius_error);
   const double r_right = p.wheel_radius + noise(p.radius_error);
   // Cumulative wheel rotation in ticks; the encoders read its floor.
-  double rot_left = fraction(rng), rot_right = fraction(rng);
+  double rot_left = UniformReal(rng, 0, 1), rot_right = UniformReal(rng, 0, 1);
 
   std::vector<CarTrackRecord> records;
   records.reserve(p.steps);

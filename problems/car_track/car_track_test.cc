@@ -251,6 +251,37 @@ TEST(CarTrackTest, SameSeedSameDriveOtherSeedOtherDrive) {
   EXPECT_NE(a.str(), c.str());
 }
 
+// Golden values: the first rows of the default drive for seed 1, as computed
+// by the portable draws (core/random.h). They pin portable seeds (issue 8):
+// they must not move with the standard library. Row 0 depends on the draws
+// alone; rows 1 and 2 also go through std::sin, std::cos and the compiler's
+// contraction of a * b + c, so another libm or FMA setting may move them.
+TEST(CarTrackTest, FirstRowsForSeed1AreFixed) {
+  struct Row {
+    std::int64_t odo_left_ticks, odo_right_ticks;
+    double gyro_dtheta, gps_x, gps_y, truth_x, truth_y, truth_theta;
+  };
+  const Row expected[] = {
+      {0, 0, 0, -0x1.0d8c60778f16cp-3, -0x1.ea43299f02423p+0, 0, 0, -0x1.2628cfc29922ep+1},
+      {142, 143, -0x1.8370c9899c12bp-10, -0x1.86410bb599998p+0, -0x1.62ecbb9c82892p-1,
+       -0x1.c6f8e092a6cd6p+0, -0x1.ff24354363f5ap+0, -0x1.2628cfc29922ep+1},
+      {283, 285, -0x1.d847424e9caebp-11, -0x1.1f59d7fd88779p+2, -0x1.504d42ccb9c4fp+1,
+       -0x1.c6d0e1ffaabafp+1, -0x1.fef746abba70cp+1, -0x1.2628cfc29922ep+1},
+  };
+  const std::vector<CarTrackRecord> r = SimulateCarTrack(CarTrackParams(), 1);
+  for (int k = 0; k < 3; ++k) {
+    SCOPED_TRACE("row " + std::to_string(k));
+    EXPECT_EQ(r[k].odo_left_ticks, expected[k].odo_left_ticks);
+    EXPECT_EQ(r[k].odo_right_ticks, expected[k].odo_right_ticks);
+    EXPECT_EQ(r[k].gyro_dtheta, expected[k].gyro_dtheta);
+    EXPECT_EQ(r[k].gps_x, expected[k].gps_x);
+    EXPECT_EQ(r[k].gps_y, expected[k].gps_y);
+    EXPECT_EQ(r[k].truth_x, expected[k].truth_x);
+    EXPECT_EQ(r[k].truth_y, expected[k].truth_y);
+    EXPECT_EQ(r[k].truth_theta, expected[k].truth_theta);
+  }
+}
+
 void ExpectSameSteps(Problem& a, Problem& b) {
   Step sa, sb;
   while (a.Next(&sa)) {

@@ -1,11 +1,11 @@
 #include "problems/chain/chain.h"
 
-#include "problems/car_track/window.h"
-
 #include <cmath>
 #include <numbers>
-#include <random>
 #include <string>
+
+#include "core/random.h"
+#include "problems/car_track/window.h"
 
 namespace icp {
 
@@ -24,27 +24,26 @@ void Describe(ChainParams& p, ParamSet& set) {
 namespace {
 // A measurement interval of half-width e around a noisy reading of truth;
 // the noise stays below 0.9 e so the truth is strictly inside.
-Interval Measure(double truth, double e, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> noise(-0.9 * e, 0.9 * e);
-  double reading = truth + noise(rng);
+Interval Measure(double truth, double e, RandomEngine& rng) {
+  double reading = truth + UniformReal(rng, -0.9 * e, 0.9 * e);
   return Interval(reading - e, reading + e);
 }
 }  // namespace
 
 Step MakeChainStep(const ChainParams& p, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  RandomEngine rng(seed);
+  auto unit = [&] { return UniformReal(rng, -1, 1); };
   const double pi = std::numbers::pi;
   Step step;
   std::vector<CarWindowState> states;
-  double x = 0, y = 0, th = pi * unit(rng) * 0.999;
+  double x = 0, y = 0, th = pi * unit() * 0.999;
   const Interval th0 =
       p.heading_known ? Interval(th - 0.1, th + 0.1) : Interval(-Pi().hi(), Pi().hi());
   states.push_back({Measure(x, p.gps_error, rng), Measure(y, p.gps_error, rng), th0, 0, 0});
   step.csp_truth = {x, y, th};
   for (int k = 1; k <= p.w; ++k) {
-    const double ds = p.step_length * (1 + 0.2 * unit(rng));
-    const double dth = p.max_turn * unit(rng);
+    const double ds = p.step_length * (1 + 0.2 * unit());
+    const double dth = p.max_turn * unit();
     const double heading = th + dth / 2;
     x += ds * std::cos(heading);
     y += ds * std::sin(heading);

@@ -41,6 +41,34 @@ TEST(ChainTest, SeedsGiveDifferentDrivesAndTheSameSeedTheSameDrive) {
   EXPECT_NE(MakeChainStep(p, 1).csp_truth, MakeChainStep(p, 2).csp_truth);
 }
 
+// Golden values: the GPS domains of the first states and the start heading
+// for seed 1, as computed by the portable draws (core/random.h). They pin
+// portable seeds (issue 8): they must not move with the standard library.
+// x[0], y[0] and th[0]'s truth depend on the draws alone; the later states
+// also go through std::sin, std::cos and the compiler's contraction of
+// a * b + c, so another libm or FMA setting may move them.
+TEST(ChainTest, FirstDomainsForSeed1AreFixed) {
+  const Step step = MakeChainStep(ChainParams(), 1);
+  EXPECT_EQ(step.csp_truth[2], -0x1.2628cfc29922dp+1);  // th[0]
+  struct Domain {
+    int variable;
+    double lo, hi;
+  };
+  const Domain expected[] = {
+      {0, -0x1.08b6fb65d883ep+2, 0x1.ba4824d13be0cp-1},   // x[0]
+      {1, -0x1.5c19a7b72b79ep+1, 0x1.23e65848d4862p+1},   // y[0]
+      {3, -0x1.13ea2e731046ep+1, 0x1.6c15d18cefb92p+1},   // x[1]
+      {4, -0x1.1324d44a9fd94p+2, 0x1.66d95dab01364p-1},   // y[1]
+      {6, -0x1.71d3bbaa44aedp+2, -0x1.8e9ddd5225768p-1},  // x[2]
+      {7, -0x1.3ee1d2939438ep+2, 0x1.1e2d6c6bc72p-6},     // y[2]
+  };
+  for (const Domain& d : expected) {
+    SCOPED_TRACE(step.views.csp->csp.names()[d.variable]);
+    EXPECT_EQ(step.views.csp->csp.domains()[d.variable].lo(), d.lo);
+    EXPECT_EQ(step.views.csp->csp.domains()[d.variable].hi(), d.hi);
+  }
+}
+
 TEST(ChainTest, RegistryRejectsBadParameters) {
   const ProblemInfo& info = FindProblem("chain");
   EXPECT_THROW(info.make({{"w", "0"}}, 1), ParamError);
