@@ -318,5 +318,36 @@ TEST(ReportTest, ReadsTheStoreOfADirectory) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(ReportTest, SaysWhenRunsComeFromSeveralRevisions) {
+  std::vector<RunRecord> runs = {MakeRun("hc4", {}, {}, 1, {1e-3}), MakeRun("bc4", {}, {}, 1, {1e-3})};
+  runs[0].provenance.git_revision = "aaaa";
+  runs[1].provenance.git_revision = "aaaa";
+  EXPECT_EQ(Report(runs, "md").find("code revisions"), std::string::npos);
+  runs[1].provenance.git_revision = "bbbb";
+  EXPECT_NE(Report(runs, "md").find("mix runs of 2 code revisions"), std::string::npos);
+}
+
+TEST(ReportTest, StoredEffectiveParametersShowAsTheirDifferenceFromTheDefaults) {
+  EXPECT_EQ(NonDefaultParams({{"ratio", "0.001"}, {"carry", "first"}},
+                             {{"ratio", "0.001"}, {"carry", "all"}, {"gone", "1"}}),
+            (ParamMap{{"carry", "all"}, {"gone", "1"}}));
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("icpbench_report_defaults_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  {
+    ResultsStore store(StorePath(dir.string()));
+    store.Insert(MakeRun("hc4", {{"ratio", "0.001"}, {"carry", "first"}, {"max_revise_calls", "1000000"}},
+                         {{"w", "20"}}, 1, {1e-3}));
+    store.Insert(MakeRun("hc4", {{"ratio", "0.1"}, {"carry", "first"}, {"max_revise_calls", "1000000"}},
+                         {{"w", "20"}}, 1, {1e-3}));
+  }
+  const std::vector<RunRecord> runs = LoadRunsFromDirectory(dir.string());
+  ASSERT_EQ(runs.size(), 2u);
+  EXPECT_TRUE(runs[0].spec.algorithm_params.empty());
+  EXPECT_EQ(runs[1].spec.algorithm_params, (ParamMap{{"ratio", "0.1"}}));
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace icp
