@@ -1,7 +1,5 @@
 #include "harness/report.h"
 
-#include "algorithms/registry.h"
-#include "problems/registry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,6 +16,7 @@
 
 #include "harness/metrics.h"
 #include "harness/results_store.h"
+#include "harness/spec.h"
 
 namespace icp {
 
@@ -397,24 +396,6 @@ std::string Overview(const std::vector<RunRecord>& runs) {
   return out.str();
 }
 
-// The current defaults of a plugin's parameters ({} for an unknown plugin).
-template <class Info>
-ParamMap Defaults(const Info& info) {
-  ParamMap out;
-  for (const ParamInfo& p : info.params(info.name)) out[p.name] = p.default_value;
-  return out;
-}
-ParamMap AlgorithmDefaults(const std::string& name) {
-  for (const AlgorithmInfo& a : Algorithms())
-    if (a.name == name) return Defaults(a);
-  return {};
-}
-ParamMap ProblemDefaults(const std::string& name) {
-  for (const ProblemInfo& p : Problems())
-    if (p.name == name) return Defaults(p);
-  return {};
-}
-
 }  // namespace
 
 std::string FormatNumber(double v) {
@@ -633,20 +614,8 @@ std::vector<RunRecord> LoadRunsFromDirectory(const std::string& dir) {
     throw std::runtime_error("no results store in '" + dir + "' (expected " + path + ")");
   }
   std::vector<RunRecord> runs = ResultsStore(path).LoadRuns(/*with_steps=*/true);
-  for (RunRecord& r : runs) {
-    r.spec.algorithm_params = NonDefaultParams(AlgorithmDefaults(r.spec.algorithm), r.spec.algorithm_params);
-    r.spec.problem_params = NonDefaultParams(ProblemDefaults(r.spec.problem), r.spec.problem_params);
-  }
+  for (RunRecord& r : runs) r.spec = WithoutDefaults(r.spec);
   return runs;
-}
-
-ParamMap NonDefaultParams(const ParamMap& defaults, const ParamMap& params) {
-  ParamMap out;
-  for (const auto& [key, value] : params) {
-    const auto it = defaults.find(key);
-    if (it == defaults.end() || it->second != value) out[key] = value;
-  }
-  return out;
 }
 
 std::string ReportDirectory(const std::string& dir, const std::string& format) {

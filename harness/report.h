@@ -50,7 +50,7 @@ std::string ReportDirectory(const std::string& dir, const std::string& format);
 // Loads every run of the store in dir with its steps; the shared entry of
 // ReportDirectory and the plots. The store keeps effective parameters; the
 // runs come back with only those that differ from the current defaults
-// (NonDefaultParams), which is what the tables show. Throws as
+// (WithoutDefaults, harness/spec.h), which is what the tables show. Throws as
 // ReportDirectory.
 std::vector<RunRecord> LoadRunsFromDirectory(const std::string& dir);
 
@@ -75,10 +75,6 @@ struct GroupSummary {
   // The ok runs, in store order (pointers into the input vector).
   std::vector<const RunRecord*> ok_runs;
 };
-
-// The entries of params whose value differs from defaults (or that defaults
-// lacks).
-ParamMap NonDefaultParams(const ParamMap& defaults, const ParamMap& params);
 
 // Groups runs by (algorithm, algorithm params, problem, problem params),
 // ordered by problem, problem params, algorithm (paper order: hc3, hc4, bc3,

@@ -13,6 +13,7 @@
 
 #include "harness/metrics.h"
 #include "harness/results_store.h"
+#include "harness/spec.h"
 
 namespace icp {
 namespace {

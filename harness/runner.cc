@@ -223,9 +223,9 @@ class Progress {
            << "/" << total_ << " runs  ok " << s.ok << "  failed " << s.failed + s.timed_out
            << "  ETA " << Eta() << "   " << std::flush;
       if (r.status != RunStatus::kOk && r.status != RunStatus::kSkipped)
-        out_ << "\n  " << ToString(r.status) << ": " << r.spec.Key() << ": " << r.reason << "\n";
+        out_ << "\n  " << ToString(r.status) << ": " << WithoutDefaults(r.spec).Key() << ": " << r.reason << "\n";
     } else {
-      out_ << "[" << done_ << "/" << total_ << "] " << ToString(r.status) << " " << r.spec.Key()
+      out_ << "[" << done_ << "/" << total_ << "] " << ToString(r.status) << " " << WithoutDefaults(r.spec).Key()
            << " (" << FormatSeconds(r.wall_time_s) << ")"
            << (r.reason.empty() ? "" : ": " + r.reason) << "\n" << std::flush;
     }

@@ -276,6 +276,33 @@ Spec ParseSpec(const std::string& text, const std::string& source) {
   return spec;
 }
 
+ParamMap NonDefaultParams(const ParamMap& defaults, const ParamMap& params) {
+  ParamMap out;
+  for (const auto& [key, value] : params) {
+    const auto it = defaults.find(key);
+    if (it == defaults.end() || it->second != value) out[key] = value;
+  }
+  return out;
+}
+
+namespace {
+// The current defaults of a plugin's parameters ({} for one not registered).
+template <class Info>
+ParamMap DefaultsOf(const std::vector<Info>& registry, const std::string& name) {
+  ParamMap out;
+  for (const Info& info : registry)
+    if (info.name == name)
+      for (const ParamInfo& p : info.params(info.name)) out[p.name] = p.default_value;
+  return out;
+}
+}  // namespace
+
+RunSpec WithoutDefaults(RunSpec spec) {
+  spec.algorithm_params = NonDefaultParams(DefaultsOf(Algorithms(), spec.algorithm), spec.algorithm_params);
+  spec.problem_params = NonDefaultParams(DefaultsOf(Problems(), spec.problem), spec.problem_params);
+  return spec;
+}
+
 Spec LoadSpec(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw SpecError(path + ": cannot read the spec file");

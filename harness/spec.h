@@ -51,6 +51,14 @@ Spec LoadSpec(const std::string& path);
 // The same from text (source names it in errors).
 Spec ParseSpec(const std::string& text, const std::string& source);
 
+// The entries of params whose value differs from defaults (or that defaults
+// lacks).
+ParamMap NonDefaultParams(const ParamMap& defaults, const ParamMap& params);
+// The run with only the parameters that differ from the current defaults of
+// its registered plugins: what people read (tables, progress lines), while
+// keys and the store keep the effective parameters.
+RunSpec WithoutDefaults(RunSpec spec);
+
 }  // namespace icp
 
 #endif  // ICPBENCH_HARNESS_SPEC_H_
