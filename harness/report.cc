@@ -229,7 +229,7 @@ TextTable PaperTable(const std::vector<GroupSummary>& groups) {
   for (const PublishedTime& p : PaperTable1()) {
     const GroupSummary* g = FindPaperGroup(groups, p.algorithm);
     const double measured = g ? g->metrics.time_mean_s * 1e3 : kNaN;
-    t.rows.push_back({p.label, FormatNumber(p.ms), FormatNumber(measured), Ratio(measured, p.ms),
+    t.rows.push_back({DisplayOf(p.algorithm).label, FormatNumber(p.ms), FormatNumber(measured), Ratio(measured, p.ms),
                       Ratio(p.ms, measured), Ratio(p.ms, hc4_published),
                       Ratio(measured, hc4_measured), g ? std::to_string(g->metrics.steps) : kDash,
                       g ? ParamsCell(g->problem_params) : kDash});
@@ -447,15 +447,20 @@ std::string CompactParams(const ParamMap& params) {
   return out;
 }
 
-int AlgorithmRank(const std::string& algorithm) {
-  static const std::vector<std::string> kOrder = {"hc3", "hc4", "bc3", "bc4", "3b-bc4", "3b-hc4"};
-  const auto it = std::find(kOrder.begin(), kOrder.end(), algorithm);
-  return it == kOrder.end() ? static_cast<int>(kOrder.size()) : static_cast<int>(it - kOrder.begin());
+Display DisplayOf(const std::string& algorithm) {
+  for (const AlgorithmInfo& a : Algorithms())
+    if (a.name == algorithm) return a.display;
+  return {algorithm, 1000, "#7f7f7f"};
+}
+
+bool AlgorithmLess(const std::string& a, const std::string& b) {
+  const int oa = DisplayOf(a).order, ob = DisplayOf(b).order;
+  return oa != ob ? oa < ob : a < b;
 }
 
 const std::vector<PublishedTime>& PaperTable1() {
   static const std::vector<PublishedTime> kTable = {
-      {"hc4", "HC4", 0.52}, {"bc3", "BC3", 1.02}, {"bc4", "BC4", 0.58}, {"3b-bc4", "3B-BC4", 1400}};
+      {"hc4", 0.52}, {"bc3", 1.02}, {"bc4", 0.58}, {"3b-bc4", 1400}};
   return kTable;
 }
 
@@ -534,9 +539,7 @@ std::vector<GroupSummary> SummariseGroups(const std::vector<RunRecord>& runs) {
   std::sort(groups.begin(), groups.end(), [](const GroupSummary& a, const GroupSummary& b) {
     if (a.problem != b.problem) return a.problem < b.problem;
     if (a.problem_params != b.problem_params) return ParamsLess(a.problem_params, b.problem_params);
-    const int ra = AlgorithmRank(a.algorithm), rb = AlgorithmRank(b.algorithm);
-    if (ra != rb) return ra < rb;
-    if (a.algorithm != b.algorithm) return a.algorithm < b.algorithm;
+    if (a.algorithm != b.algorithm) return AlgorithmLess(a.algorithm, b.algorithm);
     return ParamsLess(a.algorithm_params, b.algorithm_params);
   });
   return groups;
@@ -598,8 +601,7 @@ std::vector<WindowPoint> WindowSweep(const std::vector<RunRecord>& runs) {
     }
   }
   std::stable_sort(points.begin(), points.end(), [](const WindowPoint& a, const WindowPoint& b) {
-    const int ra = AlgorithmRank(a.algorithm), rb = AlgorithmRank(b.algorithm);
-    if (ra != rb) return ra < rb;
+    if (a.algorithm != b.algorithm) return AlgorithmLess(a.algorithm, b.algorithm);
     if (a.label != b.label) return a.label < b.label;
     return a.w < b.w;
   });

@@ -33,6 +33,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/registry.h"
 #include "core/params.h"
 #include "harness/run_record.h"
 
@@ -81,9 +82,8 @@ struct GroupSummary {
 ParamMap NonDefaultParams(const ParamMap& defaults, const ParamMap& params);
 
 // Groups runs by (algorithm, algorithm params, problem, problem params),
-// ordered by problem, problem params, algorithm (paper order: hc3, hc4, bc3,
-// bc4, 3b-bc4, 3b-hc4, then by name) and algorithm params; numeric parameter
-// values compare as numbers.
+// ordered by problem, problem params, algorithm (display order, then name)
+// and algorithm params; numeric parameter values compare as numbers.
 std::vector<GroupSummary> SummariseGroups(const std::vector<RunRecord>& runs);
 
 // Aggregates the given runs as one group (counts, problems, metrics).
@@ -111,8 +111,7 @@ const GroupSummary* FindPaperGroup(const std::vector<GroupSummary>& groups,
 
 // The algorithms of paper 000 Table 1 with their published mean time per CSP.
 struct PublishedTime {
-  const char* algorithm;  // registry key
-  const char* label;      // as in the paper
+  const char* algorithm;  // registry key; shown by its display label
   double ms;
 };
 const std::vector<PublishedTime>& PaperTable1();
@@ -130,11 +129,14 @@ struct WindowPoint {
   bool paper_scenario = false;  // IsPaperScenario of the problem params
 };
 // The points of every configuration with ok runs at two or more w, ordered by
-// algorithm (paper order), label and w.
+// algorithm (display order), label and w.
 std::vector<WindowPoint> WindowSweep(const std::vector<RunRecord>& runs);
 
-// The order of algorithms in tables and figures: the paper's first.
-int AlgorithmRank(const std::string& algorithm);
+// How tables and figures show an algorithm: its registry display data; for
+// one no longer registered (an old store), its name, order 1000 and grey.
+Display DisplayOf(const std::string& algorithm);
+// Display order, then name: the order of algorithms in tables and figures.
+bool AlgorithmLess(const std::string& a, const std::string& b);
 // "k=v,k2=v2" (sorted by key); "" for no params.
 std::string CompactParams(const ParamMap& params);
 // About 4 significant digits without exponent for 1e-3 <= |v| < 1e9

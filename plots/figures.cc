@@ -49,15 +49,7 @@ struct Figure {
 enum class Terminal { kPng, kPdf };
 
 // Colours by algorithm, the same in every figure.
-std::string Colour(const std::string& algorithm) {
-  static const std::map<std::string, std::string> kFixed = {
-      {"hc3", "#7f7f7f"}, {"hc4", "#1f77b4"},    {"bc3", "#ff7f0e"},
-      {"bc4", "#2ca02c"}, {"3b-bc4", "#d62728"}, {"3b-hc4", "#9467bd"}};
-  static const std::vector<std::string> kOthers = {"#8c564b", "#e377c2", "#bcbd22", "#17becf"};
-  const auto it = kFixed.find(algorithm);
-  if (it != kFixed.end()) return it->second;
-  return kOthers[std::hash<std::string>{}(algorithm) % kOthers.size()];
-}
+std::string Colour(const std::string& algorithm) { return DisplayOf(algorithm).colour; }
 
 // A gnuplot single-quoted string.
 std::string Quote(const std::string& text) {
@@ -172,9 +164,7 @@ std::vector<const RunRecord*> PaperRuns(const std::vector<GroupSummary>& groups)
     if (std::find(algorithms.begin(), algorithms.end(), g.algorithm) == algorithms.end())
       algorithms.push_back(g.algorithm);
   }
-  std::stable_sort(algorithms.begin(), algorithms.end(), [](const auto& a, const auto& b) {
-    return AlgorithmRank(a) < AlgorithmRank(b);
-  });
+  std::sort(algorithms.begin(), algorithms.end(), AlgorithmLess);
   std::vector<const RunRecord*> runs;
   for (const std::string& algorithm : algorithms) {
     const GroupSummary* g = FindPaperGroup(groups, algorithm);
