@@ -27,19 +27,6 @@ constexpr const char* kDash = "—";
 constexpr int kMaxProblemLines = 20;  // failure list below table 1
 constexpr int kMaxSeedsListed = 8;
 
-// A table in display form: cells are Unicode text as Markdown shows them
-// ("—" for a missing value); the LaTeX writer escapes them.
-struct TextTable {
-  std::string title;
-  std::vector<std::string> headers;
-  std::vector<bool> numeric;  // right-aligned columns
-  std::vector<std::vector<std::string>> rows;
-  std::vector<std::string> notes;  // paragraphs after the table
-  std::vector<std::string> items;  // a bullet list after the notes
-  bool omit_if_empty = false;      // no rows: the notes only, no header
-  bool wide = false;               // LaTeX: scaled to the line width
-};
-
 bool ParseNumber(const std::string& text, double* value) {
   if (text.empty()) return false;
   char* end = nullptr;
@@ -138,10 +125,6 @@ std::string OneLine(std::string text) {
   return text;
 }
 
-std::string ParamsCell(const ParamMap& params) {
-  return params.empty() ? "default" : CompactParams(params);
-}
-
 std::string RunsCell(const GroupSummary& g) {
   if (g.failed == 0 && g.timeout == 0 && g.skipped == 0) return std::to_string(g.ok);
   std::string out = std::to_string(g.ok) + " ok";
@@ -163,12 +146,7 @@ std::string MeanWithInterval(double mean, double lo, double hi, double scale) {
   return out;
 }
 
-std::string Ratio(double a, double b) {
-  if (std::isnan(a) || std::isnan(b) || b == 0) return kDash;
-  return FormatNumber(a / b);
-}
-
-// Table 1: runs per configuration.
+// The runs-per-configuration table and its failure list.
 TextTable GroupTable(const std::vector<GroupSummary>& groups) {
   TextTable t;
   t.title = "Runs per configuration (aggregated over seeds)";
@@ -193,11 +171,8 @@ TextTable GroupTable(const std::vector<GroupSummary>& groups) {
         continue;
       }
       ++listed;
-      std::string who = g.algorithm;
-      if (!g.algorithm_params.empty()) who += " {" + CompactParams(g.algorithm_params) + "}";
-      who += " on " + g.problem;
-      if (!g.problem_params.empty()) who += " {" + CompactParams(g.problem_params) + "}";
-      t.items.push_back(who + ": " + p);
+      t.items.push_back(WithParams(g.algorithm, g.algorithm_params) + " on " +
+                        WithParams(g.problem, g.problem_params) + ": " + p);
     }
   }
   if (unlisted > 0) t.items.push_back("… and " + std::to_string(unlisted) + " more");
@@ -211,48 +186,6 @@ TextTable GroupTable(const std::vector<GroupSummary>& groups) {
         "p90 and CI are shown only for a single run.");
   }
   if (!t.items.empty()) t.notes.push_back("Runs that did not finish ok:");
-  return t;
-}
-
-// Table 2: paper 000 Table 1, published vs measured.
-TextTable PaperTable(const std::vector<GroupSummary>& groups) {
-  TextTable t;
-  t.title = "Paper 000 Table 1: time per CSP, published vs measured (car-track, w = 20)";
-  t.headers = {"algorithm",      "published (ms)",  "measured (ms)",
-               "measured / published", "speed-up (published / measured)",
-               "published / HC4", "measured / HC4", "CSPs", "problem params"};
-  t.numeric = {false, true, true, true, true, true, true, true, false};
-  const GroupSummary* hc4 = FindPaperGroup(groups, "hc4");
-  const double hc4_published = PaperTable1().front().ms;
-  const double hc4_measured = hc4 ? hc4->metrics.time_mean_s * 1e3 : kNaN;
-  for (const PublishedTime& p : PaperTable1()) {
-    const GroupSummary* g = FindPaperGroup(groups, p.algorithm);
-    const double measured = g ? g->metrics.time_mean_s * 1e3 : kNaN;
-    t.rows.push_back({p.label, FormatNumber(p.ms), FormatNumber(measured), Ratio(measured, p.ms),
-                      Ratio(p.ms, measured), Ratio(p.ms, hc4_published),
-                      Ratio(measured, hc4_measured), g ? std::to_string(g->metrics.steps) : kDash,
-                      g ? ParamsCell(g->problem_params) : kDash});
-  }
-  t.notes.push_back(
-      "Measured: mean solve time per CSP over the ok runs of car-track with w = 20 and default "
-      "algorithm parameters; when several configurations match, the paper's scenario (no "
-      "problem parameter but w and steps) first, then the one with the most CSPs. "
-      "Published: paper 000 Table 1 (one lap, 2000 CSPs, w = 20). — : no such runs in the store.");
-  return t;
-}
-
-// Table 3: the window sweep.
-TextTable SweepTable(const std::vector<WindowPoint>& points) {
-  TextTable t;
-  t.title = "Window sweep on car-track (paper 000 Fig. 2)";
-  t.headers = {"configuration", "w", "runs", "CSPs", "mean area (m²)", "mean time (ms)"};
-  t.numeric = {false, true, true, true, true, true};
-  for (const WindowPoint& p : points) {
-    t.rows.push_back({p.label, FormatNumber(p.w), std::to_string(p.runs), std::to_string(p.steps),
-                      FormatNumber(p.mean_area), FormatNumber(p.mean_time_s * 1e3)});
-  }
-  t.omit_if_empty = true;
-  if (points.empty()) t.notes.push_back("No car-track configuration was run at several w.");
   return t;
 }
 
@@ -422,38 +355,44 @@ std::string FormatNumber(double v) {
   return out;
 }
 
+std::string WithParams(const std::string& name, const ParamMap& params) {
+  return params.empty() ? name : name + " {" + CompactParams(params) + "}";
+}
+
+std::string ParamsCell(const ParamMap& params) {
+  return params.empty() ? "default" : CompactParams(params);
+}
+
+std::string FormatRatio(double a, double b) {
+  if (std::isnan(a) || std::isnan(b) || b == 0) return kDash;
+  return FormatNumber(a / b);
+}
+
+std::string ExperimentOf(const RunRecord& run) {
+  const std::size_t hash = run.spec_file.rfind('#');
+  return hash == std::string::npos ? "" : run.spec_file.substr(hash + 1);
+}
+
+bool HasExperiment(const GroupSummary& group, const std::string& experiment) {
+  return std::any_of(group.runs.begin(), group.runs.end(),
+                     [&](const RunRecord* r) { return ExperimentOf(*r) == experiment; });
+}
+
 std::string CompactParams(const ParamMap& params) {
   std::string out;
   for (const auto& [k, v] : params) out += (out.empty() ? "" : ",") + k + "=" + v;
   return out;
 }
 
-int AlgorithmRank(const std::string& algorithm) {
-  static const std::vector<std::string> kOrder = {"hc3", "hc4", "bc3", "bc4", "3b-bc4", "3b-hc4"};
-  const auto it = std::find(kOrder.begin(), kOrder.end(), algorithm);
-  return it == kOrder.end() ? static_cast<int>(kOrder.size()) : static_cast<int>(it - kOrder.begin());
+Display DisplayOf(const std::string& algorithm) {
+  for (const AlgorithmInfo& a : Algorithms())
+    if (a.name == algorithm) return a.display;
+  return {algorithm, 1000, "#7f7f7f"};
 }
 
-const std::vector<PublishedTime>& PaperTable1() {
-  static const std::vector<PublishedTime> kTable = {
-      {"hc4", "HC4", 0.52}, {"bc3", "BC3", 1.02}, {"bc4", "BC4", 0.58}, {"3b-bc4", "3B-BC4", 1400}};
-  return kTable;
-}
-
-double CarTrackWindow(const RunSpec& spec) {
-  const auto it = spec.problem_params.find("w");
-  if (it == spec.problem_params.end()) return 20;
-  double w;
-  return ParseNumber(it->second, &w) ? w : kNaN;
-}
-
-bool IsPaperSetting(const RunSpec& spec) {
-  return spec.problem == "car-track" && spec.algorithm_params.empty() && CarTrackWindow(spec) == 20;
-}
-
-bool IsPaperScenario(const ParamMap& problem_params) {
-  return std::all_of(problem_params.begin(), problem_params.end(),
-                     [](const auto& kv) { return kv.first == "w" || kv.first == "steps"; });
+bool AlgorithmLess(const std::string& a, const std::string& b) {
+  const int oa = DisplayOf(a).order, ob = DisplayOf(b).order;
+  return oa != ob ? oa < ob : a < b;
 }
 
 GroupSummary Summarise(const std::vector<const RunRecord*>& runs) {
@@ -466,6 +405,7 @@ GroupSummary Summarise(const std::vector<const RunRecord*>& runs) {
   }
   std::map<std::pair<RunStatus, std::string>, std::vector<std::uint64_t>> problems;
   bool all_have_steps = true;
+  g.runs = runs;
   for (const RunRecord* r : runs) {
     switch (r->status) {
       case RunStatus::kOk:
@@ -515,87 +455,63 @@ std::vector<GroupSummary> SummariseGroups(const std::vector<RunRecord>& runs) {
   std::sort(groups.begin(), groups.end(), [](const GroupSummary& a, const GroupSummary& b) {
     if (a.problem != b.problem) return a.problem < b.problem;
     if (a.problem_params != b.problem_params) return ParamsLess(a.problem_params, b.problem_params);
-    const int ra = AlgorithmRank(a.algorithm), rb = AlgorithmRank(b.algorithm);
-    if (ra != rb) return ra < rb;
-    if (a.algorithm != b.algorithm) return a.algorithm < b.algorithm;
+    if (a.algorithm != b.algorithm) return AlgorithmLess(a.algorithm, b.algorithm);
     return ParamsLess(a.algorithm_params, b.algorithm_params);
   });
   return groups;
 }
 
-const GroupSummary* FindPaperGroup(const std::vector<GroupSummary>& groups,
-                                   const std::string& algorithm) {
-  const GroupSummary* best = nullptr;
-  for (const GroupSummary& g : groups) {
-    if (g.algorithm != algorithm || g.ok == 0) continue;
-    RunSpec spec;
-    spec.algorithm = g.algorithm;
-    spec.algorithm_params = g.algorithm_params;
-    spec.problem = g.problem;
-    spec.problem_params = g.problem_params;
-    if (!IsPaperSetting(spec)) continue;
-    if (!best) {
-      best = &g;
-      continue;
-    }
-    const bool scenario = IsPaperScenario(g.problem_params);
-    const bool best_scenario = IsPaperScenario(best->problem_params);
-    if (scenario != best_scenario ? scenario : g.metrics.steps > best->metrics.steps) best = &g;
-  }
-  return best;
-}
-
-std::vector<WindowPoint> WindowSweep(const std::vector<RunRecord>& runs) {
-  // configuration (algorithm, its params, problem params but w) -> w -> runs
+std::vector<SweepPoint> ParamSweep(const std::vector<RunRecord>& runs, const std::string& problem,
+                                   const std::string& param) {
+  const ParamMap defaults = ProblemDefaults(problem);
+  const auto default_value = defaults.find(param);
+  // configuration (algorithm, its params, problem params but param) -> value -> runs
   using Config = std::tuple<std::string, ParamMap, ParamMap>;
   std::map<Config, std::map<double, std::vector<const RunRecord*>>> configs;
   for (const RunRecord& r : runs) {
-    if (r.spec.problem != "car-track" || r.status != RunStatus::kOk) continue;
-    const double w = CarTrackWindow(r.spec);
-    if (std::isnan(w)) continue;
+    if (r.spec.problem != problem || r.status != RunStatus::kOk) continue;
+    const auto given = r.spec.problem_params.find(param);
+    const std::string* text = given != r.spec.problem_params.end() ? &given->second
+                              : default_value != defaults.end()    ? &default_value->second
+                                                                   : nullptr;
+    double value;
+    if (!text || !ParseNumber(*text, &value)) continue;
     ParamMap others = r.spec.problem_params;
-    others.erase("w");
-    configs[{r.spec.algorithm, r.spec.algorithm_params, others}][w].push_back(&r);
+    others.erase(param);
+    configs[{r.spec.algorithm, r.spec.algorithm_params, others}][value].push_back(&r);
   }
-  std::vector<WindowPoint> points;
-  for (const auto& [config, by_w] : configs) {
-    if (by_w.size() < 2) continue;
+  std::vector<SweepPoint> points;
+  for (const auto& [config, by_value] : configs) {
+    if (by_value.size() < 2) continue;
     const auto& [algorithm, algorithm_params, others] = config;
-    std::string label = algorithm;
-    if (!algorithm_params.empty()) label += " {" + CompactParams(algorithm_params) + "}";
+    std::string label = WithParams(algorithm, algorithm_params);
     if (!others.empty()) label += " [" + CompactParams(others) + "]";
-    for (const auto& [w, members] : by_w) {
+    for (const auto& [value, members] : by_value) {
       const GroupSummary g = Summarise(members);
-      WindowPoint p;
-      p.label = label;
-      p.algorithm = algorithm;
-      p.w = w;
-      p.runs = g.ok;
-      p.steps = g.metrics.steps;
-      p.mean_area = g.metrics.mean_area;
-      p.mean_time_s = g.metrics.time_mean_s;
-      p.paper_scenario = IsPaperScenario(others);
-      points.push_back(p);
+      points.push_back({label, algorithm, value, g.ok, g.metrics.steps, g.metrics.mean_area,
+                        g.metrics.time_mean_s, members});
     }
   }
-  std::stable_sort(points.begin(), points.end(), [](const WindowPoint& a, const WindowPoint& b) {
-    const int ra = AlgorithmRank(a.algorithm), rb = AlgorithmRank(b.algorithm);
-    if (ra != rb) return ra < rb;
+  std::stable_sort(points.begin(), points.end(), [](const SweepPoint& a, const SweepPoint& b) {
+    if (a.algorithm != b.algorithm) return AlgorithmLess(a.algorithm, b.algorithm);
     if (a.label != b.label) return a.label < b.label;
-    return a.w < b.w;
+    return a.value < b.value;
   });
   return points;
 }
 
-std::string Report(const std::vector<RunRecord>& runs, const std::string& format) {
+std::string Report(const std::vector<RunRecord>& runs, const std::string& format,
+                   const TableMaker& more) {
   if (format != "md" && format != "tex" && format != "csv") {
     throw std::invalid_argument("report format '" + format + "': must be one of md|tex|csv");
   }
   const std::vector<GroupSummary> groups = SummariseGroups(runs);
   if (format == "csv") return GroupCsv(groups);
 
-  const std::vector<TextTable> tables = {GroupTable(groups), PaperTable(groups),
-                                         SweepTable(WindowSweep(runs))};
+  std::vector<TextTable> tables = {GroupTable(groups)};
+  if (more) {
+    for (TextTable& t : more(runs)) tables.push_back(std::move(t));
+  }
   std::ostringstream out;
   if (format == "md") {
     out << "# icpbench report\n\n" << Overview(runs) << "\n\n";
@@ -618,11 +534,12 @@ std::vector<RunRecord> LoadRunsFromDirectory(const std::string& dir) {
   return runs;
 }
 
-std::string ReportDirectory(const std::string& dir, const std::string& format) {
+std::string ReportDirectory(const std::string& dir, const std::string& format,
+                            const TableMaker& more) {
   if (format != "md" && format != "tex" && format != "csv") {
     throw std::invalid_argument("report format '" + format + "': must be one of md|tex|csv");
   }
-  return Report(LoadRunsFromDirectory(dir), format);
+  return Report(LoadRunsFromDirectory(dir), format, more);
 }
 
 }  // namespace icp

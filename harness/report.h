@@ -1,16 +1,15 @@
-// Tables from the results store (`icpbench report DIR [--format md|tex|csv]`):
+// Tables from the results store (`icpbench report DIR [--format md|tex|csv]`).
+// The generic report is an overview line and one table:
 //
-//  1. Runs per configuration: one row per (algorithm, algorithm params,
-//     problem, problem params), aggregated over seeds: run counts by status,
-//     CSPs, mean area, consistency rate (paper 004 eq. 31), centre RMSE and
-//     the solve time per CSP (median, p90, mean with a bootstrap 95 %
-//     interval). Below it (md, tex) a short list of the failed, timed-out and
-//     skipped runs with their reasons.
-//  2. Paper 000 Table 1, published vs measured: the mean milliseconds per CSP
-//     of HC4, BC3, BC4 and 3B-BC4 on car-track at w = 20 with default
-//     algorithm parameters, beside the published ones, with the ratios to HC4.
-//  3. Window sweep (paper 000 Fig. 2 as text): mean area and mean time per
-//     CSP against w, for each car-track configuration run at several w.
+//   Runs per configuration: one row per (algorithm, algorithm params,
+//   problem, problem params), aggregated over seeds: run counts by status,
+//   CSPs, mean area, consistency rate (paper 004 eq. 31), centre RMSE and the
+//   solve time per CSP (median, p90, mean with a bootstrap 95 % interval).
+//   Below it (md, tex) a short list of the failed, timed-out and skipped
+//   runs with their reasons.
+//
+// A caller's tables follow (TableMaker: experiments/ adds a paper's), built
+// with the helpers below so they read the same.
 //
 // Aggregation: a group's metrics are ComputeMetrics over the pooled steps of
 // its ok runs (every CSP weighs the same, whichever seed it came from). When
@@ -21,31 +20,50 @@
 //
 // Parameters show as "k=v,k2=v2" ("default" in md/tex, an empty field in CSV
 // when none were given). Numbers have about 4 significant digits
-// (FormatNumber), a missing one (NaN) shows as "—". Times are µs per CSP in
-// table 1, ms in tables 2 and 3 (the paper's unit).
+// (FormatNumber), a missing one (NaN) shows as "—". Times are µs per CSP.
 //
-// CSV holds table 1 only, one header row then one row per group, RFC 4180
-// quoting, 6 significant digits, NaN as an empty field; tables 2 and 3
-// follow from its columns.
+// CSV holds the runs-per-configuration table only, one header row then one
+// row per group, RFC 4180 quoting, 6 significant digits, NaN as an empty
+// field.
 #ifndef ICPBENCH_HARNESS_REPORT_H_
 #define ICPBENCH_HARNESS_REPORT_H_
 
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "algorithms/registry.h"
 #include "core/params.h"
 #include "harness/run_record.h"
 
 namespace icp {
 
+// A table in display form: cells are Unicode text as Markdown shows them
+// ("—" for a missing value); the LaTeX writer escapes them.
+struct TextTable {
+  std::string title;
+  std::vector<std::string> headers;
+  std::vector<bool> numeric;  // right-aligned columns
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::string> notes;  // paragraphs after the table
+  std::vector<std::string> items;  // a bullet list after the notes
+  bool omit_if_empty = false;      // no rows: the notes only, no header
+  bool wide = false;               // LaTeX: scaled to the line width
+};
+
+// Tables a caller adds after the generic one (md and tex only).
+using TableMaker = std::function<std::vector<TextTable>(const std::vector<RunRecord>&)>;
+
 // The report in format "md", "tex" or "csv"; throws std::invalid_argument for
 // any other. No runs give the tables' headers with no rows.
-std::string Report(const std::vector<RunRecord>& runs, const std::string& format);
+std::string Report(const std::vector<RunRecord>& runs, const std::string& format,
+                   const TableMaker& more = nullptr);
 
 // Report() over the runs (with their steps) of the results store in dir.
 // Throws std::runtime_error when dir holds no store, StoreError when it
 // cannot be read.
-std::string ReportDirectory(const std::string& dir, const std::string& format);
+std::string ReportDirectory(const std::string& dir, const std::string& format,
+                            const TableMaker& more = nullptr);
 
 // Loads every run of the store in dir with its steps; the shared entry of
 // ReportDirectory and the plots. The store keeps effective parameters; the
@@ -72,67 +90,60 @@ struct GroupSummary {
   RunMetrics metrics;
   // Time statistics come from pooled steps (false: from stored run metrics).
   bool pooled = true;
-  // The ok runs, in store order (pointers into the input vector).
+  // Every run and the ok runs, in store order (pointers into the input
+  // vector).
+  std::vector<const RunRecord*> runs;
   std::vector<const RunRecord*> ok_runs;
 };
 
+// The experiment of the spec that planned a run: what follows the last '#'
+// of its spec_file ("specs/default.yaml#table1" -> "table1"); "" when none.
+// A run that two experiments of one spec plan is stored once, under the
+// first.
+std::string ExperimentOf(const RunRecord& run);
+// True when some run of the group (any status) is of that experiment.
+bool HasExperiment(const GroupSummary& group, const std::string& experiment);
+
 // Groups runs by (algorithm, algorithm params, problem, problem params),
-// ordered by problem, problem params, algorithm (paper order: hc3, hc4, bc3,
-// bc4, 3b-bc4, 3b-hc4, then by name) and algorithm params; numeric parameter
-// values compare as numbers.
+// ordered by problem, problem params, algorithm (display order, then name)
+// and algorithm params; numeric parameter values compare as numbers.
 std::vector<GroupSummary> SummariseGroups(const std::vector<RunRecord>& runs);
 
 // Aggregates the given runs as one group (counts, problems, metrics).
 GroupSummary Summarise(const std::vector<const RunRecord*>& runs);
 
-// The window w of a car-track run: its "w" parameter, 20 when absent, NaN
-// when not a number.
-double CarTrackWindow(const RunSpec& spec);
-
-// True for the paper 000 setting of Table 1 and Figs 3-4: problem car-track
-// with w = 20 (or absent) and algorithm params empty (the defaults). Other
-// problem parameters are not constrained.
-bool IsPaperSetting(const RunSpec& spec);
-
-// True when the problem params set nothing but w and steps: the paper's
-// scenario (the simulated lap, possibly shortened), not a variant such as a
-// GPS outage.
-bool IsPaperScenario(const ParamMap& problem_params);
-
-// The group that paper 000 Table 1 compares for algorithm: among the groups
-// in the paper setting with ok runs, those in the paper scenario first, then
-// the one with the most CSPs in ok runs; nullptr when none.
-const GroupSummary* FindPaperGroup(const std::vector<GroupSummary>& groups,
-                                   const std::string& algorithm);
-
-// The algorithms of paper 000 Table 1 with their published mean time per CSP.
-struct PublishedTime {
-  const char* algorithm;  // registry key
-  const char* label;      // as in the paper
-  double ms;
-};
-const std::vector<PublishedTime>& PaperTable1();
-
-// One point of the window sweep: a car-track configuration (algorithm, its
-// params, the problem params other than w) at one w, over its ok runs.
-struct WindowPoint {
+// One point of a sweep over one problem parameter: a configuration
+// (algorithm, its params, the problem params other than the swept one) at one
+// value, over its ok runs.
+struct SweepPoint {
   std::string label;  // "hc4", or "hc4 {ratio=0.1} [gps_period=5]"
   std::string algorithm;
-  double w = 0;
+  double value = 0;
   int runs = 0;
   int steps = 0;
   double mean_area = 0;    // m^2
   double mean_time_s = 0;  // per CSP
-  bool paper_scenario = false;  // IsPaperScenario of the problem params
+  std::vector<const RunRecord*> ok_runs;  // pointers into the input vector
 };
-// The points of every configuration with ok runs at two or more w, ordered by
-// algorithm (paper order), label and w.
-std::vector<WindowPoint> WindowSweep(const std::vector<RunRecord>& runs);
+// The points of every configuration of problem with ok runs at two or more
+// numeric values of param (absent: the problem's current default), ordered
+// by algorithm (display order), label and value.
+std::vector<SweepPoint> ParamSweep(const std::vector<RunRecord>& runs, const std::string& problem,
+                                   const std::string& param);
 
-// The order of algorithms in tables and figures: the paper's first.
-int AlgorithmRank(const std::string& algorithm);
+// How tables and figures show an algorithm: its registry display data; for
+// one no longer registered (an old store), its name, order 1000 and grey.
+Display DisplayOf(const std::string& algorithm);
+// Display order, then name: the order of algorithms in tables and figures.
+bool AlgorithmLess(const std::string& a, const std::string& b);
 // "k=v,k2=v2" (sorted by key); "" for no params.
 std::string CompactParams(const ParamMap& params);
+// "hc4 {ratio=0.1}"; just name for no params.
+std::string WithParams(const std::string& name, const ParamMap& params);
+// CompactParams, or "default" for no params: a table cell.
+std::string ParamsCell(const ParamMap& params);
+// FormatNumber(a / b); "—" when either is NaN or b is 0.
+std::string FormatRatio(double a, double b);
 // About 4 significant digits without exponent for 1e-3 <= |v| < 1e9
 // (trailing zeros dropped: 0.52, 1400, 0.4873; integers from 1e4 on),
 // exponent form otherwise; "—" for NaN, "∞"/"-∞" for infinities.

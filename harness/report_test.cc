@@ -12,58 +12,19 @@
 #include <vector>
 
 #include "harness/metrics.h"
+#include "harness/report_testing.h"
 #include "harness/results_store.h"
 #include "harness/spec.h"
 
 namespace icp {
 namespace {
 
+using testing::InExperiment;
+using testing::Lines;
+using testing::MakeRun;
+using testing::MarkdownRow;
+
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// A run whose steps take the given solve times (seconds); each step's box
-// is [truth - 1, truth + 1] in x and y (area 4 m^2) around a truth on a line.
-RunRecord MakeRun(const std::string& algorithm, ParamMap algorithm_params, ParamMap problem_params,
-                  std::uint64_t seed, const std::vector<double>& times,
-                  RunStatus status = RunStatus::kOk, const std::string& reason = "") {
-  RunRecord r;
-  r.spec.algorithm = algorithm;
-  r.spec.algorithm_params = std::move(algorithm_params);
-  r.spec.problem = "car-track";
-  r.spec.problem_params = std::move(problem_params);
-  r.spec.seed = seed;
-  r.status = status;
-  r.reason = reason;
-  if (status != RunStatus::kOk) return r;
-  for (std::size_t i = 0; i < times.size(); ++i) {
-    StepRecord s;
-    s.step = static_cast<int>(i);
-    s.status = "fixpoint";
-    const double t = static_cast<double>(i);
-    s.vars = {{"x", t - 1, t + 1, t}, {"y", -1, 1, 0}, {"theta", -0.1, 0.1, 0}};
-    s.contained = 1;
-    s.area = 4;
-    s.centre_error = 0;
-    s.solve_time_s = times[i];
-    r.steps.push_back(s);
-  }
-  r.metrics = ComputeMetrics(r.steps);
-  return r;
-}
-
-std::vector<std::string> Lines(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
-
-// The Markdown row whose first cell is first.
-std::string MarkdownRow(const std::string& md, const std::string& first) {
-  for (const std::string& line : Lines(md)) {
-    if (line.rfind("| " + first + " |", 0) == 0) return line;
-  }
-  return "";
-}
 
 // RFC 4180 fields of one line.
 std::vector<std::string> CsvFields(const std::string& line) {
@@ -120,8 +81,9 @@ TEST(ReportTest, EmptyStoreGivesHeadersAndDashes) {
   }
   const std::string md = Report({}, "md");
   EXPECT_NE(md.find("| algorithm | params | problem |"), std::string::npos);
-  EXPECT_EQ(MarkdownRow(md, "HC4"), "| HC4 | 0.52 | — | — | — | 1 | — | — | — |");
   EXPECT_EQ(Lines(Report({}, "csv")).size(), 1u);
+  // No paper's tables unless a caller adds them.
+  EXPECT_EQ(md.find("Paper 000"), std::string::npos);
 }
 
 TEST(ReportTest, GroupsPoolStepsOverSeeds) {
@@ -173,57 +135,63 @@ TEST(ReportTest, FailedOnlyGroupShowsDashes) {
   EXPECT_EQ(MarkdownRow(md, "bc3"),
             "| bc3 | default | car-track | default | 0 ok, 1 failed | 0 | — | — | — | — | — | — |");
   EXPECT_NE(md.find("- bc3 on car-track: failed (seed 1): threw: bad | input"), std::string::npos);
-  // The failed group does not count as measured in the paper table.
-  EXPECT_EQ(MarkdownRow(md, "BC3"), "| BC3 | 1.02 | — | — | — | 1.962 | — | — | — |");
 }
 
-TEST(ReportTest, PublishedVersusMeasured) {
-  const std::vector<RunRecord> runs = {
-      // HC4: 0.4 ms per CSP over 4 CSPs at the default w...
-      MakeRun("hc4", {}, {}, 1, {0.4e-3, 0.4e-3}), MakeRun("hc4", {}, {}, 2, {0.4e-3, 0.4e-3}),
-      // ...beats a shorter group at w = 20 given explicitly (fewer CSPs)...
-      MakeRun("hc4", {}, {{"w", "20"}, {"steps", "1"}}, 1, {9e-3}),
-      // ...and non-default params or another w never match.
-      MakeRun("hc4", {{"ratio", "0.1"}}, {}, 1, {7e-3, 7e-3, 7e-3, 7e-3, 7e-3}),
-      MakeRun("hc4", {}, {{"w", "10"}}, 1, {7e-3, 7e-3, 7e-3, 7e-3, 7e-3}),
-      MakeRun("bc3", {}, {{"w", "20"}}, 1, {0.8e-3}),
-      MakeRun("3b-bc4", {}, {}, 1, {1.2}),
+TEST(ReportTest, CallersTablesFollowInMarkdownAndTexNotCsv) {
+  const std::vector<RunRecord> runs = {MakeRun("hc4", {}, {}, 1, {1e-3})};
+  int calls = 0;
+  const TableMaker more = [&](const std::vector<RunRecord>& seen) {
+    ++calls;
+    EXPECT_EQ(seen.size(), 1u);
+    TextTable t;
+    t.title = "Extra";
+    t.headers = {"name", "value"};
+    t.numeric = {false, true};
+    t.rows = {{"a_b", "1"}};
+    return std::vector<TextTable>{t};
   };
-  const std::string md = Report(runs, "md");
-  EXPECT_EQ(MarkdownRow(md, "HC4"), "| HC4 | 0.52 | 0.4 | 0.7692 | 1.3 | 1 | 1 | 4 | default |") << md;
-  EXPECT_EQ(MarkdownRow(md, "BC3"), "| BC3 | 1.02 | 0.8 | 0.7843 | 1.275 | 1.962 | 2 | 1 | w=20 |");
-  EXPECT_EQ(MarkdownRow(md, "BC4"), "| BC4 | 0.58 | — | — | — | 1.115 | — | — | — |");
-  EXPECT_EQ(MarkdownRow(md, "3B-BC4"),
-            "| 3B-BC4 | 1400 | 1200 | 0.8571 | 1.167 | 2692 | 3000 | 1 | default |");
-
-  // The same group in LaTeX.
-  const std::string tex = Report(runs, "tex");
-  EXPECT_NE(tex.find("HC4 & 0.52 & 0.4 & 0.7692 & 1.3 & 1 & 1 & 4 & default \\\\"),
-            std::string::npos)
-      << tex;
-  EXPECT_NE(tex.find("BC4 & 0.58 & --- & --- & --- & 1.115 & --- & --- & --- \\\\"),
-            std::string::npos);
+  const std::string md = Report(runs, "md", more);
+  EXPECT_GT(md.find("## Extra"), md.find("## Runs per configuration"));
+  EXPECT_EQ(MarkdownRow(md, "a_b"), "| a_b | 1 |");
+  EXPECT_NE(Report(runs, "tex", more).find("a\\_b & 1 \\\\"), std::string::npos);
+  EXPECT_EQ(Report(runs, "csv", more), Report(runs, "csv"));
+  EXPECT_EQ(calls, 2);
 }
 
-TEST(ReportTest, PaperGroupPrefersThePaperScenario) {
-  // A GPS-outage variant at w = 20 has more CSPs but is not the paper's lap.
+TEST(ReportTest, ExperimentIsWhatFollowsTheLastHash) {
+  RunRecord r = MakeRun("hc4", {}, {}, 1, {1e-3});
+  EXPECT_EQ(ExperimentOf(r), "");
+  r.spec_file = "specs/default.yaml";
+  EXPECT_EQ(ExperimentOf(r), "");
+  r.spec_file = "specs/a#b.yaml#table1";
+  EXPECT_EQ(ExperimentOf(r), "table1");
+  // A group is of an experiment when any of its runs is, whatever its status.
   const std::vector<RunRecord> runs = {
-      MakeRun("bc4", {}, {{"w", "20"}, {"outage_length", "50"}}, 1, {9e-3, 9e-3, 9e-3}),
-      MakeRun("bc4", {}, {{"w", "20"}, {"steps", "2"}}, 1, {1e-3, 1e-3})};
+      MakeRun("hc4", {}, {}, 1, {1e-3}),
+      InExperiment(MakeRun("hc4", {}, {}, 2, {}, RunStatus::kFailed, "boom"), "window")};
   const std::vector<GroupSummary> groups = SummariseGroups(runs);
-  const GroupSummary* g = FindPaperGroup(groups, "bc4");
-  ASSERT_NE(g, nullptr);
-  EXPECT_EQ(g->problem_params.count("outage_length"), 0u);
-  EXPECT_EQ(MarkdownRow(Report(runs, "md"), "BC4"),
-            "| BC4 | 0.58 | 1 | 1.724 | 0.58 | 1.115 | — | 2 | steps=2,w=20 |");
-  // Alone, the variant is used, and the table says which it is.
-  EXPECT_EQ(MarkdownRow(Report({runs[0]}, "md"), "BC4"),
-            "| BC4 | 0.58 | 9 | 15.52 | 0.06444 | 1.115 | — | 3 | outage_length=50,w=20 |");
+  ASSERT_EQ(groups.size(), 1u);
+  EXPECT_EQ(groups[0].runs.size(), 2u);
+  EXPECT_TRUE(HasExperiment(groups[0], "window"));
+  EXPECT_FALSE(HasExperiment(groups[0], "table1"));
 }
 
-TEST(ReportTest, PaperGroupNeedsHc4ForMeasuredRatios) {
-  const std::string md = Report({MakeRun("bc4", {}, {}, 1, {1e-3})}, "md");
-  EXPECT_EQ(MarkdownRow(md, "BC4"), "| BC4 | 0.58 | 1 | 1.724 | 0.58 | 1.115 | — | 1 | default |");
+TEST(ReportTest, DisplayDataComeFromTheRegistry) {
+  EXPECT_EQ(DisplayOf("3b-bc4").label, FindAlgorithm("3b-bc4").display.label);
+  EXPECT_EQ(DisplayOf("hc4").colour, FindAlgorithm("hc4").display.colour);
+  // An algorithm no longer registered (an old store) still shows.
+  const Display gone = DisplayOf("gone");
+  EXPECT_EQ(gone.label, "gone");
+  EXPECT_EQ(gone.order, 1000);
+  EXPECT_FALSE(gone.colour.empty());
+  // Groups follow the display order, unknown names last.
+  const std::vector<GroupSummary> groups = SummariseGroups(
+      {MakeRun("gone", {}, {}, 1, {1e-3}), MakeRun("3b-bc4", {}, {}, 1, {1e-3}),
+       MakeRun("hc4", {}, {}, 1, {1e-3})});
+  ASSERT_EQ(groups.size(), 3u);
+  EXPECT_EQ(groups[0].algorithm, "hc4");
+  EXPECT_EQ(groups[1].algorithm, "3b-bc4");
+  EXPECT_EQ(groups[2].algorithm, "gone");
 }
 
 TEST(ReportTest, TexUsesBooktabsAndEscapes) {
@@ -281,7 +249,7 @@ TEST(ReportTest, CsvParsesBackWithOneColumnPerHeader) {
   EXPECT_EQ(hc4[14], "3");  // mean time, us
 }
 
-TEST(ReportTest, WindowSweepOrdersWNumerically) {
+TEST(ReportTest, ParamSweepOrdersValuesNumerically) {
   std::vector<RunRecord> runs;
   for (const char* w : {"20", "5", "10"}) {
     const double ms = std::stod(w) / 10;
@@ -290,19 +258,24 @@ TEST(ReportTest, WindowSweepOrdersWNumerically) {
   }
   runs.push_back(MakeRun("hc4", {}, {}, 2, {3e-3}));  // w = 20 by default: pooled with "20"
   runs.push_back(MakeRun("bc3", {}, {}, 1, {1e-3}));  // one w only: no sweep
-  const std::vector<WindowPoint> points = WindowSweep(runs);
+  const std::vector<SweepPoint> points = ParamSweep(runs, "car-track", "w");
   ASSERT_EQ(points.size(), 6u);
   EXPECT_EQ(points[0].algorithm, "hc4");
-  EXPECT_EQ(points[0].w, 5);
-  EXPECT_EQ(points[1].w, 10);
-  EXPECT_EQ(points[2].w, 20);
+  EXPECT_EQ(points[0].label, "hc4");
+  EXPECT_EQ(points[0].value, 5);
+  EXPECT_EQ(points[1].value, 10);
+  EXPECT_EQ(points[2].value, 20);
   EXPECT_EQ(points[2].runs, 2);
+  EXPECT_EQ(points[2].ok_runs.size(), 2u);
   EXPECT_DOUBLE_EQ(points[2].mean_time_s, 2.5e-3);
   EXPECT_EQ(points[3].algorithm, "bc4");
-  const std::string md = Report(runs, "md");
-  EXPECT_EQ(MarkdownRow(md, "hc4"), "| hc4 | default | car-track | default | 1 | 1 | 4 | 1 | 0 | 3000 | 3000 | 3000 [3000, 3000] |");
-  EXPECT_NE(md.find("| hc4 | 20 | 2 | 2 | 4 | 2.5 |"), std::string::npos) << md;
-  EXPECT_EQ(Report({runs.back()}, "md").find("| configuration |"), std::string::npos);
+  // Other parameters make another configuration, labelled with them.
+  runs.push_back(MakeRun("hc4", {{"ratio", "0.1"}}, {{"steps", "9"}, {"w", "5"}}, 1, {1e-3}));
+  runs.push_back(MakeRun("hc4", {{"ratio", "0.1"}}, {{"steps", "9"}, {"w", "7"}}, 1, {1e-3}));
+  const std::vector<SweepPoint> more = ParamSweep(runs, "car-track", "w");
+  ASSERT_EQ(more.size(), 8u);
+  EXPECT_EQ(more[3].label, "hc4 {ratio=0.1} [steps=9]");
+  EXPECT_TRUE(ParamSweep(runs, "chain", "w").empty());
 }
 
 TEST(ReportTest, ReadsTheStoreOfADirectory) {
@@ -311,11 +284,20 @@ TEST(ReportTest, ReadsTheStoreOfADirectory) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   {
+    // The store keeps effective parameters: every one, defaults resolved.
+    ParamMap problem = ProblemDefaults("car-track");
+    problem["w"] = "5";
     ResultsStore store(StorePath(dir.string()));
-    store.Insert(MakeRun("hc4", {}, {}, 1, {0.5e-3, 0.5e-3}));
+    store.Insert(MakeRun("hc4", AlgorithmDefaults("hc4"), problem, 1, {0.5e-3, 0.5e-3}));
   }
+  // The tables show only what differs from the current defaults.
+  const std::vector<RunRecord> runs = LoadRunsFromDirectory(dir.string());
+  ASSERT_EQ(runs.size(), 1u);
+  EXPECT_TRUE(runs[0].spec.algorithm_params.empty());
+  EXPECT_EQ(runs[0].spec.problem_params, (ParamMap{{"w", "5"}}));
   const std::string md = ReportDirectory(dir.string(), "md");
-  EXPECT_EQ(MarkdownRow(md, "HC4"), "| HC4 | 0.52 | 0.5 | 0.9615 | 1.04 | 1 | 1 | 2 | default |");
+  EXPECT_EQ(MarkdownRow(md, "hc4"),
+            "| hc4 | default | car-track | w=5 | 1 | 2 | 4 | 1 | 0 | 500 | 500 | 500 [500, 500] |");
   std::filesystem::remove_all(dir);
 }
 

@@ -297,9 +297,12 @@ ParamMap DefaultsOf(const std::vector<Info>& registry, const std::string& name) 
 }
 }  // namespace
 
+ParamMap AlgorithmDefaults(const std::string& name) { return DefaultsOf(Algorithms(), name); }
+ParamMap ProblemDefaults(const std::string& name) { return DefaultsOf(Problems(), name); }
+
 RunSpec WithoutDefaults(RunSpec spec) {
-  spec.algorithm_params = NonDefaultParams(DefaultsOf(Algorithms(), spec.algorithm), spec.algorithm_params);
-  spec.problem_params = NonDefaultParams(DefaultsOf(Problems(), spec.problem), spec.problem_params);
+  spec.algorithm_params = NonDefaultParams(AlgorithmDefaults(spec.algorithm), spec.algorithm_params);
+  spec.problem_params = NonDefaultParams(ProblemDefaults(spec.problem), spec.problem_params);
   return spec;
 }
 

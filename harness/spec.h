@@ -54,6 +54,10 @@ Spec ParseSpec(const std::string& text, const std::string& source);
 // The entries of params whose value differs from defaults (or that defaults
 // lacks).
 ParamMap NonDefaultParams(const ParamMap& defaults, const ParamMap& params);
+// The current defaults of a registered plugin's parameters; {} for a name no
+// longer registered.
+ParamMap AlgorithmDefaults(const std::string& name);
+ParamMap ProblemDefaults(const std::string& name);
 // The run with only the parameters that differ from the current defaults of
 // its registered plugins: what people read (tables, progress lines), while
 // keys and the store keep the effective parameters.

@@ -49,15 +49,7 @@ struct Figure {
 enum class Terminal { kPng, kPdf };
 
 // Colours by algorithm, the same in every figure.
-std::string Colour(const std::string& algorithm) {
-  static const std::map<std::string, std::string> kFixed = {
-      {"hc3", "#7f7f7f"}, {"hc4", "#1f77b4"},    {"bc3", "#ff7f0e"},
-      {"bc4", "#2ca02c"}, {"3b-bc4", "#d62728"}, {"3b-hc4", "#9467bd"}};
-  static const std::vector<std::string> kOthers = {"#8c564b", "#e377c2", "#bcbd22", "#17becf"};
-  const auto it = kFixed.find(algorithm);
-  if (it != kFixed.end()) return it->second;
-  return kOthers[std::hash<std::string>{}(algorithm) % kOthers.size()];
-}
+std::string Colour(const std::string& algorithm) { return DisplayOf(algorithm).colour; }
 
 // A gnuplot single-quoted string.
 std::string Quote(const std::string& text) {
@@ -164,30 +156,6 @@ void Render(const Figure& f, const std::string& out_dir, PlotOutput* out) {
   }
 }
 
-// The ok run with the smallest seed of each algorithm's paper group
-// (FindPaperGroup), in algorithm order; runs without steps are left out.
-std::vector<const RunRecord*> PaperRuns(const std::vector<GroupSummary>& groups) {
-  std::vector<std::string> algorithms;
-  for (const GroupSummary& g : groups) {
-    if (std::find(algorithms.begin(), algorithms.end(), g.algorithm) == algorithms.end())
-      algorithms.push_back(g.algorithm);
-  }
-  std::stable_sort(algorithms.begin(), algorithms.end(), [](const auto& a, const auto& b) {
-    return AlgorithmRank(a) < AlgorithmRank(b);
-  });
-  std::vector<const RunRecord*> runs;
-  for (const std::string& algorithm : algorithms) {
-    const GroupSummary* g = FindPaperGroup(groups, algorithm);
-    if (!g) continue;
-    const RunRecord* best = nullptr;
-    for (const RunRecord* r : g->ok_runs) {
-      if (!r->steps.empty() && (!best || r->spec.seed < best->spec.seed)) best = r;
-    }
-    if (best) runs.push_back(best);
-  }
-  return runs;
-}
-
 // The corridor [lo - truth, hi - truth] of variable var over the steps:
 // rows {step, lower, upper}; NaN where the box is empty or the truth unknown.
 std::vector<std::vector<double>> CorridorRows(const RunRecord& run, const std::string& var) {
@@ -219,41 +187,35 @@ std::string CorridorRange(const std::vector<std::vector<double>>& rows) {
   return "set yrange [" + std::to_string(lo - margin) + ":" + std::to_string(hi + margin) + "]\n";
 }
 
+// "hc4 (seed 1)", "hc4 {ratio=0.1} (seed 2, steps=60)".
 std::string RunLabel(const RunRecord& r) {
-  std::string label = r.spec.algorithm + " (seed " + std::to_string(r.spec.seed);
-  ParamMap others = r.spec.problem_params;
-  others.erase("w");
-  if (!others.empty()) label += ", " + CompactParams(others);
+  std::string label = WithParams(r.spec.algorithm, r.spec.algorithm_params) + " (seed " +
+                      std::to_string(r.spec.seed);
+  if (!r.spec.problem_params.empty()) label += ", " + CompactParams(r.spec.problem_params);
   return label + ")";
+}
+
+void Skip(const FigureText& text, PlotOutput* out) {
+  out->messages.push_back(text.name + ": skipped: " + text.skip_reason);
 }
 
 }  // namespace
 
-void PlotWindowFigure(const std::vector<RunRecord>& runs, const std::string& out_dir,
-                      PlotOutput* out) {
-  // The paper's scenario when it was swept, else every sweep.
-  std::vector<WindowPoint> points = WindowSweep(runs);
-  if (std::any_of(points.begin(), points.end(), [](const auto& p) { return p.paper_scenario; })) {
-    std::erase_if(points, [](const WindowPoint& p) { return !p.paper_scenario; });
-  }
-  if (points.empty()) {
-    out->messages.push_back(
-        "fig2_window: skipped: no car-track configuration with ok runs at two or more w");
-    return;
-  }
+void PlotSweepFigure(const FigureText& text, const std::string& x_label,
+                     const std::vector<SweepPoint>& points, const std::string& out_dir,
+                     PlotOutput* out) {
+  if (points.empty()) return Skip(text, out);
   Figure f;
-  f.name = "fig2_window";
-  f.title = "Average localization area and computing time against the window w (car-track)";
+  f.name = text.name;
+  f.title = text.title;
   f.width_in = 10;
   f.height_in = 4.2;
   f.cols = 2;
   Panel area, time;
-  area.setup =
-      "set title 'Mean x-y area'\nset xlabel 'window w (steps)'\nset ylabel 'area (m^2)'\n"
-      "set key top right noenhanced\n";
-  time.setup =
-      "set title 'Mean time per CSP'\nset xlabel 'window w (steps)'\nset ylabel 'time (ms)'\n"
-      "set key top left noenhanced\n";
+  area.setup = "set title 'Mean x-y area'\nset xlabel " + Quote(x_label) +
+               "\nset ylabel 'area (m^2)'\nset key top right noenhanced\n";
+  time.setup = "set title 'Mean time per CSP'\nset xlabel " + Quote(x_label) +
+               "\nset ylabel 'time (ms)'\nset key top left noenhanced\n";
   for (std::size_t i = 0; i < points.size();) {
     const std::string& label = points[i].label;
     const std::string style = "with linespoints lw 2 pt 7 ps 0.7 lc rgb " +
@@ -261,8 +223,8 @@ void PlotWindowFigure(const std::vector<RunRecord>& runs, const std::string& out
     Series a{"using 1:2 " + style, {}, ""};
     Series t{"using 1:2 " + style, {}, ""};
     for (; i < points.size() && points[i].label == label; ++i) {
-      a.rows.push_back({points[i].w, Finite(points[i].mean_area)});
-      t.rows.push_back({points[i].w, Finite(points[i].mean_time_s * 1e3)});
+      a.rows.push_back({points[i].value, Finite(points[i].mean_area)});
+      t.rows.push_back({points[i].value, Finite(points[i].mean_time_s * 1e3)});
     }
     area.series.push_back(std::move(a));
     time.series.push_back(std::move(t));
@@ -271,16 +233,15 @@ void PlotWindowFigure(const std::vector<RunRecord>& runs, const std::string& out
   Render(f, out_dir, out);
 }
 
-void PlotCorridorFigure(const std::vector<RunRecord>& runs, const std::string& out_dir,
-                        PlotOutput* out) {
-  const std::vector<GroupSummary> groups = SummariseGroups(runs);
+void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
+                        const std::string& out_dir, PlotOutput* out) {
   const char* const kVars[2] = {"x", "y"};
   // Corridors of every shown run first: each column shares its y range so
-  // the algorithms compare at a glance.
+  // the runs compare at a glance.
   std::vector<const RunRecord*> shown;
   std::vector<std::vector<std::vector<double>>> corridors[2];
   std::vector<std::vector<double>> all[2];
-  for (const RunRecord* r : PaperRuns(groups)) {
+  for (const RunRecord* r : runs) {
     std::vector<std::vector<double>> rows[2] = {CorridorRows(*r, kVars[0]),
                                                 CorridorRows(*r, kVars[1])};
     const Series probe[2] = {{"", rows[0], ""}, {"", rows[1], ""}};
@@ -291,12 +252,7 @@ void PlotCorridorFigure(const std::vector<RunRecord>& runs, const std::string& o
       corridors[k].push_back(std::move(rows[k]));
     }
   }
-  if (shown.empty()) {
-    out->messages.push_back(
-        "fig3_corridors: skipped: no ok car-track run at w = 20 with default parameters, "
-        "steps and truth");
-    return;
-  }
+  if (shown.empty()) return Skip(text, out);
   // One step axis for all, so a shorter run shows as shorter.
   double last_step = 0;
   for (const RunRecord* r : shown) {
@@ -304,9 +260,8 @@ void PlotCorridorFigure(const std::vector<RunRecord>& runs, const std::string& o
   }
   const std::string x_range = "set xrange [0:" + std::to_string(std::max(1.0, last_step)) + "]\n";
   Figure f;
-  f.name = "fig3_corridors";
-  f.title =
-      "Interval error over the lap (car-track, w = 20): solid lo - truth, dashed hi - truth";
+  f.name = text.name;
+  f.title = text.title + ": solid lo - truth, dashed hi - truth";
   f.width_in = 10;
   f.cols = 2;
   f.rows = static_cast<int>(shown.size());
@@ -333,14 +288,13 @@ void PlotCorridorFigure(const std::vector<RunRecord>& runs, const std::string& o
   Render(f, out_dir, out);
 }
 
-void PlotAreaFigure(const std::vector<RunRecord>& runs, const std::string& out_dir,
-                    PlotOutput* out) {
-  const std::vector<GroupSummary> groups = SummariseGroups(runs);
+void PlotAreaFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
+                    const std::string& out_dir, PlotOutput* out) {
   Panel panel;
-  panel.setup =
-      "set title 'Size of the localization area (car-track, w = 20)'\nset xlabel 'step'\n"
-      "set ylabel 'x-y area (m^2)'\nset logscale y\nset key top right noenhanced\n";
-  for (const RunRecord* r : PaperRuns(groups)) {
+  panel.setup = "set title " + Quote(text.title) +
+                " noenhanced\nset xlabel 'step'\nset ylabel 'x-y area (m^2)'\nset logscale y\n"
+                "set key top right noenhanced\n";
+  for (const RunRecord* r : runs) {
     Series s{"using 1:2 with lines lw 1.5 lc rgb " + Quote(Colour(r->spec.algorithm)) +
                  " title " + Quote(RunLabel(*r)),
              {}, ""};
@@ -349,51 +303,20 @@ void PlotAreaFigure(const std::vector<RunRecord>& runs, const std::string& out_d
     }
     if (HasPoint(s)) panel.series.push_back(std::move(s));
   }
-  if (panel.series.empty()) {
-    out->messages.push_back(
-        "fig4_area: skipped: no ok car-track run at w = 20 with default parameters and areas");
-    return;
-  }
+  if (panel.series.empty()) return Skip(text, out);
   Figure f;
-  f.name = "fig4_area";
+  f.name = text.name;
   f.width_in = 9;
   f.height_in = 4.5;
   f.panels = {panel};
   Render(f, out_dir, out);
 }
 
-void PlotTimingFigure(const std::vector<RunRecord>& runs, const std::string& out_dir,
-                      PlotOutput* out) {
-  const std::vector<GroupSummary> groups = SummariseGroups(runs);
-  // The paper groups; else the default-param groups of the problem
-  // configuration with the most ok runs.
-  std::vector<const GroupSummary*> chosen;
-  std::string setting = "car-track, w = 20";
-  for (const GroupSummary& g : groups) {
-    if (FindPaperGroup(groups, g.algorithm) == &g) chosen.push_back(&g);
-  }
-  if (chosen.empty()) {
-    std::map<std::pair<std::string, ParamMap>, int> ok_runs;
-    for (const GroupSummary& g : groups) {
-      if (g.algorithm_params.empty()) ok_runs[{g.problem, g.problem_params}] += g.ok;
-    }
-    const auto best = std::max_element(ok_runs.begin(), ok_runs.end(), [](const auto& a, const auto& b) {
-      return a.second < b.second;
-    });
-    if (best != ok_runs.end() && best->second > 0) {
-      setting = best->first.first;
-      if (!best->first.second.empty()) setting += ", " + CompactParams(best->first.second);
-      for (const GroupSummary& g : groups) {
-        if (g.algorithm_params.empty() && g.ok > 0 && g.problem == best->first.first &&
-            g.problem_params == best->first.second) {
-          chosen.push_back(&g);
-        }
-      }
-    }
-  }
+void PlotTimingFigure(const FigureText& text, const std::vector<const GroupSummary*>& groups,
+                      const std::string& out_dir, PlotOutput* out) {
   Panel panel;
   std::string xtics;
-  for (const GroupSummary* g : chosen) {  // groups are in algorithm order
+  for (const GroupSummary* g : groups) {
     const double x = static_cast<double>(panel.series.size() + 1);
     Series s{"using (" + std::to_string(x) + "):1 with boxplot lw 1.2 lc rgb " +
                  Quote(Colour(g->algorithm)) + " notitle",
@@ -402,39 +325,67 @@ void PlotTimingFigure(const std::vector<RunRecord>& runs, const std::string& out
       for (const StepRecord& step : r->steps) s.rows.push_back({Positive(step.solve_time_s * 1e6)});
     }
     if (!HasPoint(s)) continue;
-    xtics += std::string(xtics.empty() ? "" : ", ") + Quote(g->algorithm) + " " + std::to_string(x);
+    xtics += std::string(xtics.empty() ? "" : ", ") +
+             Quote(WithParams(g->algorithm, g->algorithm_params)) + " " + std::to_string(x);
     panel.series.push_back(std::move(s));
   }
-  if (panel.series.empty()) {
-    out->messages.push_back("fig_timing: skipped: no ok run with per-step solve times");
-    return;
-  }
-  panel.setup = "set title " + Quote("Solve time per CSP (" + setting + ")") +
+  if (panel.series.empty()) return Skip(text, out);
+  panel.setup = "set title " + Quote(text.title) +
                 " noenhanced\nset ylabel 'time per CSP (µs)'\nset logscale y\nset format y '10^{%L}'\n"
                 "set style boxplot outliers pointtype 7\nset pointsize 0.3\nset boxwidth 0.5\n"
                 "set xtics (" + xtics + ") noenhanced\nset xrange [0.4:" +
                 std::to_string(panel.series.size() + 0.6) + "]\nset grid noxtics\n";
   Figure f;
-  f.name = "fig_timing";
+  f.name = text.name;
   f.width_in = std::max(4.0, 1.4 * static_cast<double>(panel.series.size()) + 1.5);
   f.height_in = 4.5;
   f.panels = {panel};
   Render(f, out_dir, out);
 }
 
-PlotOutput PlotRuns(const std::vector<RunRecord>& runs, const std::string& out_dir) {
+std::vector<const GroupSummary*> TimingGroups(const std::vector<GroupSummary>& groups,
+                                              std::string* setting) {
+  // (problem, problem params) -> (algorithms ok at default params, CSPs)
+  std::map<std::pair<std::string, ParamMap>, std::pair<int, int>> score;
+  for (const GroupSummary& g : groups) {
+    if (!g.algorithm_params.empty() || g.ok == 0) continue;
+    auto& [algorithms, steps] = score[{g.problem, g.problem_params}];
+    ++algorithms;
+    steps += g.metrics.steps;
+  }
+  const auto best = std::max_element(score.begin(), score.end(), [](const auto& a, const auto& b) {
+    return a.second < b.second;
+  });
+  std::vector<const GroupSummary*> chosen;
+  if (best == score.end()) return chosen;
+  const auto& [problem, problem_params] = best->first;
+  *setting = problem + (problem_params.empty() ? "" : ", " + CompactParams(problem_params));
+  for (const GroupSummary& g : groups) {  // groups are in algorithm order
+    if (g.algorithm_params.empty() && g.ok > 0 && g.problem == problem &&
+        g.problem_params == problem_params)
+      chosen.push_back(&g);
+  }
+  return chosen;
+}
+
+PlotOutput PlotRuns(const std::vector<RunRecord>& runs, const std::string& out_dir,
+                    const FigureMaker& more) {
   std::filesystem::create_directories(out_dir);
   PlotOutput out;
-  PlotWindowFigure(runs, out_dir, &out);
-  PlotCorridorFigure(runs, out_dir, &out);
-  PlotAreaFigure(runs, out_dir, &out);
-  PlotTimingFigure(runs, out_dir, &out);
+  if (more) more(runs, out_dir, &out);
+  const std::vector<GroupSummary> groups = SummariseGroups(runs);
+  std::string setting;
+  const std::vector<const GroupSummary*> timing = TimingGroups(groups, &setting);
+  PlotTimingFigure({"fig_timing", "Solve time per CSP (" + setting + ")",
+                    "no ok run with per-step solve times"},
+                   timing, out_dir, &out);
   return out;
 }
 
 std::vector<std::string> PlotDirectory(const std::string& dir, const std::string& out_dir,
-                                       std::vector<std::string>* messages) {
-  PlotOutput out = PlotRuns(LoadRunsFromDirectory(dir), out_dir);
+                                       std::vector<std::string>* messages,
+                                       const FigureMaker& more) {
+  PlotOutput out = PlotRuns(LoadRunsFromDirectory(dir), out_dir, more);
   if (messages) *messages = std::move(out.messages);
   return out.files;
 }

@@ -1,10 +1,8 @@
 #include "plots/figures.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -12,11 +10,15 @@
 #include <vector>
 
 #include "harness/metrics.h"
+#include "plots/figures_testing.h"
 
 namespace icp {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::FigureFiles;
+using testing::GnuplotMissing;
+using testing::TempDir;
 
 // A synthetic car-track run: a box around a circular track whose width
 // shrinks over the first steps, times spread around base_time_s.
@@ -69,15 +71,6 @@ std::vector<RunRecord> PaperLikeRuns() {
   return runs;
 }
 
-bool GnuplotMissing() { return std::system("gnuplot --version >/dev/null 2>&1") != 0; }
-
-fs::path TempDir(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("icpbench_figures_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  return dir;
-}
-
 std::string Head(const std::string& path, std::size_t n) {
   std::ifstream in(path, std::ios::binary);
   std::string head(n, '\0');
@@ -85,16 +78,30 @@ std::string Head(const std::string& path, std::size_t n) {
   return head;
 }
 
-TEST(FiguresTest, WritesEveryFigureAsPngAndPdf) {
+std::vector<const RunRecord*> Pointers(const std::vector<RunRecord>& runs) {
+  std::vector<const RunRecord*> out;
+  for (const RunRecord& r : runs) out.push_back(&r);
+  return out;
+}
+
+TEST(FiguresTest, WritesEveryKindAsPngAndPdfCallersFirst) {
   if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
-  const fs::path dir = TempDir("all");
-  const PlotOutput out = PlotRuns(PaperLikeRuns(), dir.string());
+  const fs::path dir = TempDir("figures_all");
+  const std::vector<RunRecord> runs = PaperLikeRuns();
+  const FigureMaker more = [](const std::vector<RunRecord>& runs, const std::string& out_dir,
+                              PlotOutput* out) {
+    std::vector<const RunRecord*> lap;
+    for (const RunRecord& r : runs)
+      if (r.spec.problem_params.empty() && r.spec.seed == 1) lap.push_back(&r);
+    PlotSweepFigure({"sweep", "Against w", "none"}, "w", ParamSweep(runs, "car-track", "w"),
+                    out_dir, out);
+    PlotCorridorFigure({"corridors", "Corridors", "none"}, lap, out_dir, out);
+    PlotAreaFigure({"area", "Area", "none"}, lap, out_dir, out);
+  };
+  const PlotOutput out = PlotRuns(runs, dir.string(), more);
   EXPECT_TRUE(out.messages.empty()) << out.messages.front();
-  std::vector<std::string> expected;
-  for (const char* name : {"fig2_window", "fig3_corridors", "fig4_area", "fig_timing"}) {
-    expected.push_back((dir / (std::string(name) + ".png")).string());
-    expected.push_back((dir / (std::string(name) + ".pdf")).string());
-  }
+  const std::vector<std::string> expected =
+      FigureFiles(dir, {"sweep", "corridors", "area", "fig_timing"});
   EXPECT_EQ(out.files, expected);
   for (const std::string& path : expected) {
     ASSERT_TRUE(fs::exists(path)) << path;
@@ -105,35 +112,68 @@ TEST(FiguresTest, WritesEveryFigureAsPngAndPdf) {
 }
 
 TEST(FiguresTest, EmptyStoreWritesNothing) {
-  const fs::path dir = TempDir("empty");
+  const fs::path dir = TempDir("figures_empty");
   PlotOutput out;
   ASSERT_NO_THROW(out = PlotRuns({}, dir.string()));
   EXPECT_TRUE(out.files.empty());
-  EXPECT_EQ(out.messages.size(), 4u);
+  EXPECT_EQ(out.messages, (std::vector<std::string>{
+                              "fig_timing: skipped: no ok run with per-step solve times"}));
+  // Each kind given nothing says why, in the caller's words.
+  PlotSweepFigure({"a", "", "no sweep"}, "w", {}, dir.string(), &out);
+  PlotCorridorFigure({"b", "", "no lap"}, {}, dir.string(), &out);
+  PlotAreaFigure({"c", "", "no area"}, {}, dir.string(), &out);
+  PlotTimingFigure({"d", "", "no times"}, {}, dir.string(), &out);
+  EXPECT_EQ(out.messages.back(), "d: skipped: no times");
+  EXPECT_EQ(out.messages.size(), 5u);
   EXPECT_TRUE(fs::is_empty(dir));
   fs::remove_all(dir);
 }
 
 TEST(FiguresTest, SkipsWhatTheStoreLacks) {
   if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
-  const fs::path dir = TempDir("partial");
-  // No car-track: only the timing box plot, over the chain runs.
+  const fs::path dir = TempDir("figures_partial");
+  // No car-track: the timing box plot over the chain runs.
   std::vector<RunRecord> runs = {MakeRun("hc4", "chain", {{"w", "4"}}, 1, 30, 1e-5, 1),
                                  MakeRun("bc4", "chain", {{"w", "4"}}, 1, 30, 2e-5, 1)};
   // A failed run and a run with undefined areas and times change nothing.
   RunRecord failed = MakeRun("bc3", "car-track", {}, 1, 0, 0, 0);
   failed.status = RunStatus::kFailed;
   runs.push_back(failed);
-  const PlotOutput out = PlotRuns(runs, dir.string());
-  EXPECT_EQ(out.files, (std::vector<std::string>{(dir / "fig_timing.png").string(),
-                                                 (dir / "fig_timing.pdf").string()}));
-  EXPECT_EQ(out.messages.size(), 3u);
+  PlotOutput out = PlotRuns(runs, dir.string());
+  EXPECT_EQ(out.files, FigureFiles(dir, {"fig_timing"}));
+  EXPECT_TRUE(out.messages.empty());
+  // Runs without steps draw no corridor.
+  PlotCorridorFigure({"corridors", "", "no steps"}, Pointers({failed}), dir.string(), &out);
+  EXPECT_EQ(out.messages, (std::vector<std::string>{"corridors: skipped: no steps"}));
   fs::remove_all(dir);
 }
 
+TEST(FiguresTest, TimingShowsTheConfigurationWithTheMostAlgorithms) {
+  std::vector<RunRecord> runs = PaperLikeRuns();  // 4 algorithms on the lap, 2 at each w
+  // More CSPs, but fewer algorithms, and non-default parameters never count.
+  runs.push_back(MakeRun("hc4", "car-track", {{"steps", "900"}}, 1, 900, 1e-5, 1));
+  runs.push_back(MakeRun("bc4", "car-track", {{"steps", "900"}}, 1, 900, 1e-5, 1));
+  runs.push_back(MakeRun("bc3", "car-track", {{"steps", "900"}}, 1, 900, 1e-5, 1));
+  runs.back().spec.algorithm_params = {{"ratio", "0.1"}};
+  const std::vector<GroupSummary> groups = SummariseGroups(runs);
+  std::string setting;
+  const std::vector<const GroupSummary*> chosen = TimingGroups(groups, &setting);
+  EXPECT_EQ(setting, "car-track");
+  ASSERT_EQ(chosen.size(), 4u);
+  EXPECT_EQ(chosen[0]->algorithm, "hc4");
+  EXPECT_EQ(chosen[3]->algorithm, "3b-bc4");
+  // A tie in algorithms goes to the most CSPs.
+  runs.push_back(MakeRun("bc3", "car-track", {{"steps", "900"}}, 1, 900, 1e-5, 1));
+  runs.push_back(MakeRun("3b-bc4", "car-track", {{"steps", "900"}}, 1, 900, 1e-5, 1));
+  TimingGroups(SummariseGroups(runs), &setting);
+  EXPECT_EQ(setting, "car-track, steps=900");
+  EXPECT_TRUE(TimingGroups({}, &setting).empty());
+}
+
 TEST(FiguresTest, PlotDirectoryNeedsAStore) {
-  EXPECT_THROW(PlotDirectory("/nonexistent/icpbench-figures-test", TempDir("none").string()),
-               std::runtime_error);
+  EXPECT_THROW(
+      PlotDirectory("/nonexistent/icpbench-figures-test", TempDir("figures_none").string()),
+      std::runtime_error);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <thread>
 
+#include "experiments/registry.h"
 #include "harness/list_command.h"
 #include "harness/report.h"
 #include "harness/results_store.h"
@@ -109,11 +110,12 @@ int main(int argc, char** argv) {
                 << " already stored, " << s.ok << " ok, " << s.failed << " failed, "
                 << s.timed_out << " timed out, " << s.skipped << " skipped\n";
     } else if (*report_cmd) {
-      std::cout << icp::ReportDirectory(report_dir, report_format);
+      std::cout << icp::ReportDirectory(report_dir, report_format, icp::PaperTables);
     } else if (*plot_cmd) {
       if (plot_out.empty()) plot_out = plot_dir + "/figures";
       std::vector<std::string> messages;
-      for (const std::string& file : icp::PlotDirectory(plot_dir, plot_out, &messages))
+      for (const std::string& file :
+           icp::PlotDirectory(plot_dir, plot_out, &messages, icp::PaperFigures))
         std::cout << file << "\n";
       for (const std::string& m : messages) std::cerr << "icpbench: " << m << "\n";
     } else if (*merge_cmd) {

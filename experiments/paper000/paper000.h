@@ -1,0 +1,68 @@
+// Paper 000 (HC3, HC4, BC3, BC4 and 3B-BC4 on the car-track CSP, Table 1 and
+// Figs 2-4): its published values and which runs make its tables and
+// figures. Runs are chosen by the name of the spec experiment that planned
+// them (ExperimentOf: spec_file "<spec>#<name>", any spec file), never by
+// their parameters:
+//
+//   table1  Table 1 (published vs measured ms per CSP), Fig. 3 (corridors),
+//           Fig. 4 (area over the steps): every configuration (algorithm,
+//           params, problem, params) with a run of experiment table1 and
+//           ok runs, pooled over all its runs (every seed).
+//   window  Fig. 2 (area and time against w): every car-track configuration
+//           (w aside) with an ok run of experiment window, at every w it was
+//           run at. A run two experiments plan is stored under the first,
+//           so specs/default.yaml's hc4 and bc4 at w = 20 are table1's, and
+//           Fig. 2 still shows them.
+//
+// The window-sweep table lists every car-track configuration run at two or
+// more w, whatever the experiment (so the GPS-outage sweep is there too).
+// A spec of one's own gets the paper's tables and figures by naming its
+// experiments table1 and window (specs/default.yaml is the reference).
+#ifndef ICPBENCH_EXPERIMENTS_PAPER000_PAPER000_H_
+#define ICPBENCH_EXPERIMENTS_PAPER000_PAPER000_H_
+
+#include <string>
+#include <vector>
+
+#include "harness/report.h"
+#include "harness/run_record.h"
+#include "plots/figures.h"
+
+namespace icp {
+
+inline constexpr char kPaper000Table1[] = "table1";
+inline constexpr char kPaper000Window[] = "window";
+
+// The algorithms of paper 000 Table 1 with their published mean time per CSP
+// (one recorded lap, 2000 CSPs, w = 20).
+struct PublishedTime {
+  const char* algorithm;  // registry key; shown by its display label
+  double ms;
+};
+const std::vector<PublishedTime>& Paper000PublishedTimes();
+
+// The groups of Table 1 and Figs 3-4 (see the top), in SummariseGroups
+// order.
+std::vector<const GroupSummary*> Paper000Table1Groups(const std::vector<GroupSummary>& groups);
+
+// The runs of Figs 3 and 4: for each group of Table 1 in algorithm order,
+// its ok run with steps and the smallest seed.
+std::vector<const RunRecord*> Paper000LapRuns(const std::vector<GroupSummary>& groups);
+
+// Every car-track configuration run at two or more w (ParamSweep over "w").
+std::vector<SweepPoint> Paper000WindowSweep(const std::vector<RunRecord>& runs);
+// The points of Fig. 2: those of the configurations with a run of
+// experiment window.
+std::vector<SweepPoint> Paper000Fig2Points(const std::vector<SweepPoint>& sweep);
+
+// The report's tables: Table 1 published vs measured, then the window sweep
+// (Fig. 2 as text, ms per CSP).
+std::vector<TextTable> Paper000Tables(const std::vector<RunRecord>& runs);
+
+// The figures fig2_window, fig3_corridors and fig4_area.
+void Paper000Figures(const std::vector<RunRecord>& runs, const std::string& out_dir,
+                     PlotOutput* out);
+
+}  // namespace icp
+
+#endif  // ICPBENCH_EXPERIMENTS_PAPER000_PAPER000_H_

@@ -1,0 +1,28 @@
+#include "experiments/registry.h"
+
+#include "experiments/paper000/paper000.h"
+
+namespace icp {
+
+const std::vector<PaperInfo>& Papers() {
+  static const std::vector<PaperInfo> kPapers = {
+      {"paper000", "HC4, BC3, BC4, 3B-BC4 on the car track: Table 1, Figs 2-4", &Paper000Tables,
+       &Paper000Figures},
+  };
+  return kPapers;
+}
+
+std::vector<TextTable> PaperTables(const std::vector<RunRecord>& runs) {
+  std::vector<TextTable> out;
+  for (const PaperInfo& p : Papers()) {
+    for (TextTable& t : p.tables(runs)) out.push_back(std::move(t));
+  }
+  return out;
+}
+
+void PaperFigures(const std::vector<RunRecord>& runs, const std::string& out_dir,
+                  PlotOutput* out) {
+  for (const PaperInfo& p : Papers()) p.figures(runs, out_dir, out);
+}
+
+}  // namespace icp
