@@ -3,6 +3,22 @@
 # "core/interval.h"), the static libraries in P/lib, the binary in P/bin and
 # the package that find_package(icpbench) reads in P/lib/cmake/icpbench.
 
+# How a --plugin library reaches icpbench's code: it links none of it. The
+# icpbench executable exports its symbols (ENABLE_EXPORTS: -rdynamic) and
+# carries the whole of icp_core, icp_algorithms and icp_problems, not only the
+# archive members it calls itself, so dlopen resolves every function of the
+# installed headers that a plugin calls, the registries' among them, from the
+# executable: one registry. A plugin that linked the static libraries would
+# carry a second copy of the tables and of every other global, and which copy
+# a call reached would depend on the order of symbol lookup. The libraries
+# come to the executable through icp_harness; the overrides (CMake 3.24) give
+# them the WHOLE_ARCHIVE feature there.
+set_target_properties(icpbench PROPERTIES
+  ENABLE_EXPORTS ON
+  LINK_LIBRARY_OVERRIDE_icp_core WHOLE_ARCHIVE
+  LINK_LIBRARY_OVERRIDE_icp_algorithms WHOLE_ARCHIVE
+  LINK_LIBRARY_OVERRIDE_icp_problems WHOLE_ARCHIVE)
+
 # icpbench::plugin: what a plugin compiles against, the headers and their
 # public dependencies, and no code.
 add_library(icpbench_plugin_api INTERFACE)
