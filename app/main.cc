@@ -13,6 +13,7 @@
 
 #include "experiments/registry.h"
 #include "harness/list_command.h"
+#include "harness/plugin_loader.h"
 #include "harness/report.h"
 #include "harness/results_store.h"
 #include "harness/runner.h"
@@ -27,6 +28,15 @@ constexpr int kUsageError = 2;
 int main(int argc, char** argv) {
   CLI::App app{"icpbench: interval constraint propagation benchmarks"};
   app.require_subcommand(1);
+
+  // Set before the subcommands, which inherit fallthrough: then --plugin is
+  // accepted after the subcommand too.
+  std::vector<std::string> plugins;
+  app.add_option("--plugin", plugins,
+                 "shared library that registers algorithms or problems (repeatable)")
+      ->type_name("LIB.so")
+      ->allow_extra_args(false);
+  app.fallthrough();
 
   icp::SolveOptions solve;
   CLI::App* solve_cmd = app.add_subcommand("solve", "contract the box of a Minibex file");
@@ -90,6 +100,7 @@ int main(int argc, char** argv) {
   }
 
   try {
+    for (const std::string& plugin : plugins) icp::LoadPlugin(plugin);
     if (*solve_cmd) {
       icp::SolveResult result = icp::Solve(solve);
       std::cout << (solve.format == "json" ? icp::SolveResultToJson(result) + "\n"

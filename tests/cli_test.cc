@@ -2,37 +2,19 @@
 // round-trip and enclose, null for infinite bounds, exit code 2 on bad input.
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "core/minibex_parser.h"
+#include "tests/cli_helpers.h"
 
 namespace {
 
-struct Result {
-  int exit_code;
-  std::string out;
-};
+using icp::testing::Result;
+using icp::testing::WriteFile;
 
 // Runs icpbench with args (stderr folded into the output).
-Result Icpbench(const std::string& args) {
-  const std::string command = std::string(ICPBENCH_BINARY) + " " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  while (std::size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
-  int status = pclose(pipe);
-  return {WEXITSTATUS(status), out};
-}
-
-std::string WriteFile(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + name;
-  std::ofstream(path) << text;
-  return path;
-}
+Result Icpbench(const std::string& args) { return icp::testing::RunCommand(ICPBENCH_BINARY, args); }
 
 std::string Example(const std::string& name) { return std::string(ICPBENCH_EXAMPLES) + "/" + name; }
 

@@ -1,0 +1,27 @@
+// `icpbench --plugin LIB.so`: loads a shared library and lets its entry point
+// (core/plugin.h) add algorithms and problems to the registries.
+#ifndef ICPBENCH_HARNESS_PLUGIN_LOADER_H_
+#define ICPBENCH_HARNESS_PLUGIN_LOADER_H_
+
+#include <stdexcept>
+#include <string>
+
+namespace icp {
+
+// A plugin that cannot be loaded: bad input (exit code 2). The message names
+// the library and the cause.
+class PluginError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+// Loads the library at path and runs its entry point; throws PluginError if
+// the file is missing or not loadable, has no entry point, the entry point
+// fails or throws, or it registers a name that is taken. The library stays
+// loaded for the life of the process (the registries point into it), and so
+// is inherited by the forked workers of `icpbench run`.
+void LoadPlugin(const std::string& path);
+
+}  // namespace icp
+
+#endif  // ICPBENCH_HARNESS_PLUGIN_LOADER_H_
