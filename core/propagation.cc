@@ -17,21 +17,15 @@ void PropagationContractor::Push(int c) {
   ++count_;
 }
 
-ContractSummary PropagationContractor::Contract(Box& box, const StopCondition& stop) {
+ContractSummary PropagationContractor::Contract(Box& box, ContractContext& context) {
   head_ = count_ = 0;
-  for (int c = 0; c < system_->num_constraints(); ++c) Push(c);
-  return Propagate(box, stop);
-}
-
-ContractSummary PropagationContractor::ContractFrom(Box& box, const StopCondition& stop,
-                                                    const std::vector<int>& vars) {
-  head_ = count_ = 0;
-  for (int v : vars)
-    for (int c : system_->constraints_of(v)) Push(c);
-  return Propagate(box, stop);
-}
-
-ContractSummary PropagationContractor::Propagate(Box& box, const StopCondition& stop) {
+  if (context.all_changed()) {
+    for (int c = 0; c < system_->num_constraints(); ++c) Push(c);
+  } else {
+    for (int v : context.changed())
+      for (int c : system_->constraints_of(v)) Push(c);
+  }
+  const StopCondition& stop = context.stop();
   ContractSummary summary;
   const Box start = box;
   auto finish = [&](ContractStatus status, const char* message) {

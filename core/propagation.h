@@ -21,12 +21,11 @@ class PropagationContractor : public Contractor {
   PropagationContractor(std::shared_ptr<const CompiledSystem> system, double ratio,
                         std::int64_t max_revise_calls);
 
-  // Propagates from every constraint.
-  ContractSummary Contract(Box& box, const StopCondition& stop) final;
-  // Propagates from the constraints of the given variables only: after a
-  // change of those variables in a box that was otherwise at a fixpoint
-  // (3B shaving), this reaches the same fixpoint with far less work.
-  ContractSummary ContractFrom(Box& box, const StopCondition& stop, const std::vector<int>& vars);
+  // Propagates from the constraints of the context's changed variables: after
+  // a change of a few variables in a box that was otherwise at a fixpoint (3B
+  // shaving), this reaches the same fixpoint as propagating from every
+  // constraint with far less work.
+  ContractSummary Contract(Box& box, ContractContext& context) final;
 
   const CompiledSystem& system() const { return *system_; }
   const std::shared_ptr<const CompiledSystem>& shared_system() const { return system_; }
@@ -42,7 +41,6 @@ class PropagationContractor : public Contractor {
   virtual bool Revise(int c, Box& box, WorkCounters& work, bool* idempotent) = 0;
 
  private:
-  ContractSummary Propagate(Box& box, const StopCondition& stop);
   void Push(int c);
 
   std::shared_ptr<const CompiledSystem> system_;

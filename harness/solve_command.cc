@@ -45,7 +45,8 @@ SolveResult Solve(const SolveOptions& options) {
   for (int r = 0; r < options.repeat; ++r) {
     Box box = result.csp.domains();
     auto start = std::chrono::steady_clock::now();
-    ContractSummary summary = contractor->Contract(box, StopCondition());
+    ContractContext context;
+    ContractSummary summary = contractor->Contract(box, context);
     times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     result.box = box;
     result.summary = summary;

@@ -28,9 +28,9 @@ class FaultContractor : public Contractor {
       : params_(std::move(params)),
         hc4_(std::make_shared<CompiledSystem>(csp), HC4Params()) {}
   std::string_view Name() const override { return "fault"; }
-  ContractSummary Contract(Box& box, const StopCondition& stop) override {
+  ContractSummary Contract(Box& box, ContractContext& context) override {
     if (calls_in_process++ < params_.after_calls || params_.mode == "none")
-      return hc4_.Contract(box, stop);
+      return hc4_.Contract(box, context);
     if (params_.mode == "segfault") std::raise(SIGSEGV);
     if (params_.mode == "abort") std::abort();
     if (params_.mode == "throw") throw std::runtime_error("injected fault");

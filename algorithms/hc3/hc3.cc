@@ -58,7 +58,7 @@ HC3Contractor::HC3Contractor(const ConstraintSystem& csp, const HC3Params& param
   }
 }
 
-ContractSummary HC3Contractor::Contract(Box& box, const StopCondition& stop) {
+ContractSummary HC3Contractor::Contract(Box& box, ContractContext& context) {
   ContractSummary summary;
   const Box start = box;
   std::vector<Interval> d = initial_;
@@ -80,7 +80,7 @@ ContractSummary HC3Contractor::Contract(Box& box, const StopCondition& stop) {
   Interval before[3];
   while (count > 0) {
     if (summary.work.revise_calls >= params_.max_revise_calls ||
-        ((summary.work.revise_calls & 1023) == 1023 && stop.ShouldStop())) {
+        ((summary.work.revise_calls & 1023) == 1023 && context.stop().ShouldStop())) {
       summary.status = ContractStatus::kStopped;
       summary.message = summary.work.revise_calls >= params_.max_revise_calls
                             ? "max_revise_calls reached"

@@ -33,7 +33,7 @@ class HC3Contractor : public Contractor {
  public:
   HC3Contractor(const ConstraintSystem& csp, const HC3Params& params);
   std::string_view Name() const override { return "hc3"; }
-  ContractSummary Contract(Box& box, const StopCondition& stop) override;
+  ContractSummary Contract(Box& box, ContractContext& context) override;
 
   int num_primitives() const { return static_cast<int>(primitives_.size()); }
   int num_auxiliaries() const { return static_cast<int>(initial_.size()) - num_variables_; }

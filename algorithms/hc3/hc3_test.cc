@@ -12,7 +12,8 @@ namespace {
 
 ContractSummary RunHC3(const ConstraintSystem& csp, Box& box) {
   HC3Contractor hc3(csp, HC3Params());
-  return hc3.Contract(box, StopCondition());
+  ContractContext context;
+  return hc3.Contract(box, context);
 }
 
 // Paper 002 §2.2, the worked example, step by step: [3,4], [1,2], [5,6].
@@ -42,7 +43,8 @@ TEST(HC3Test, Paper000DecompositionExample) {
   // 2*x, 2x - y, cos(.), and z - cos(.) = 0.
   EXPECT_EQ(hc3.num_primitives(), 4);
   Box box = csp.domains();
-  hc3.Contract(box, StopCondition());
+  ContractContext context;
+  hc3.Contract(box, context);
   // 2x - y in [-1, 2], so z = cos(.) >= cos(2) ~ -0.416.
   EXPECT_NEAR(box[2].lo(), std::cos(2.0), 1e-9);
   EXPECT_LE(box[2].lo(), std::cos(2.0));
@@ -99,8 +101,8 @@ TEST(HC3Test, KeepsTheTruthOfChainWindows) {
     ASSERT_NE(RunHC3(step.csp, hc3).status, ContractStatus::kEmpty);
     EXPECT_TRUE(hc3.Contains(step.truth)) << "seed " << seed;
     Box hc4 = step.csp.domains();
-    HC4Contractor(std::make_shared<CompiledSystem>(step.csp), HC4Params())
-        .Contract(hc4, StopCondition());
+    ContractContext context;
+    HC4Contractor(std::make_shared<CompiledSystem>(step.csp), HC4Params()).Contract(hc4, context);
     for (std::size_t i = 0; i < hc4.size(); ++i)
       EXPECT_LE(hc4[i].Width(), hc3[i].Width() * 1.01 + 1e-9) << "seed " << seed << " var " << i;
   }

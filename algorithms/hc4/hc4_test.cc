@@ -12,7 +12,8 @@ namespace {
 
 ContractSummary RunHC4(const ConstraintSystem& csp, Box& box, HC4Params params = {}) {
   HC4Contractor hc4(std::make_shared<CompiledSystem>(csp), params);
-  return hc4.Contract(box, StopCondition());
+  ContractContext context;
+  return hc4.Contract(box, context);
 }
 
 // Paper 002 §2.2: x3 = x1 + x2, x1 in [1,4], x2 in [1,2], x3 in [5,7]
@@ -119,7 +120,8 @@ TEST(HC4Test, RegistryBuildsItAndRejectsBadParameters) {
   EXPECT_THROW(info.make({{"speed", "1"}}, csp), ParamError);
   auto hc4 = info.make({{"ratio", "0.1"}}, csp);
   Box box = csp.domains();
-  hc4->Contract(box, StopCondition());
+  ContractContext context;
+  hc4->Contract(box, context);
   EXPECT_EQ(box[0], Interval(0.5));
   EXPECT_THROW(FindAlgorithm("nope"), std::invalid_argument);
 }

@@ -12,7 +12,8 @@ namespace {
 
 Box RunAlgorithm(const std::string& name, const ConstraintSystem& csp, const ParamMap& params = {}) {
   Box box = csp.domains();
-  FindAlgorithm(name).make(params, csp)->Contract(box, StopCondition());
+  ContractContext context;
+  FindAlgorithm(name).make(params, csp)->Contract(box, context);
   return box;
 }
 

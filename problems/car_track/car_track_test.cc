@@ -33,7 +33,8 @@ void RunHC4(Problem& problem, const std::function<void(const Step&, const Box&)>
   while (problem.Next(first ? nullptr : &result, &step)) {
     first = false;
     result = step.csp.domains();
-    hc4.make({}, step.csp)->Contract(result, StopCondition());
+    ContractContext context;
+    hc4.make({}, step.csp)->Contract(result, context);
     visit(step, result);
   }
 }
