@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <thread>
+#include <vector>
 
 namespace icp {
 namespace {
@@ -33,6 +34,44 @@ class MakeEmpty : public Contractor {
     return {ContractStatus::kEmpty, "", {}};
   }
 };
+
+// Records whether it was told that every variable changed.
+class RecordAllChanged : public Contractor {
+ public:
+  explicit RecordAllChanged(std::vector<bool>* seen) : seen_(seen) {}
+  std::string_view Name() const override { return "record"; }
+  ContractSummary Contract(Box&, ContractContext& context) override {
+    seen_->push_back(context.all_changed());
+    return {};
+  }
+
+ private:
+  std::vector<bool>* seen_;
+};
+
+TEST(ContractorTest, AFreshContextSaysEveryVariableChanged) {
+  ContractContext context;
+  EXPECT_TRUE(context.all_changed());
+  const int vars[] = {3, 1};
+  context.SetChanged(vars);
+  EXPECT_FALSE(context.all_changed());
+  EXPECT_EQ(context.changed(), (std::vector<int>{3, 1}));
+}
+
+// The later parts of a sequence see what the earlier ones changed as well.
+TEST(ContractorTest, SequenceTellsOnlyItsFirstPartWhatChanged) {
+  std::vector<bool> seen;
+  std::vector<std::unique_ptr<Contractor>> parts;
+  parts.push_back(std::make_unique<RecordAllChanged>(&seen));
+  parts.push_back(std::make_unique<RecordAllChanged>(&seen));
+  SequenceContractor seq(std::move(parts));
+  Box box{{0, 1}};
+  ContractContext context;
+  const int vars[] = {0};
+  context.SetChanged(vars);
+  seq.Contract(box, context);
+  EXPECT_EQ(seen, (std::vector<bool>{false, true}));
+}
 
 TEST(ContractorTest, SequenceAppliesEachPartOnceAndAddsTheirWork) {
   std::vector<std::unique_ptr<Contractor>> parts;
