@@ -98,8 +98,8 @@ RunRecord ExecuteRun(const RunSpec& spec) {
     while (problem->Next(has_previous ? &previous : nullptr, &step)) {
       std::unique_ptr<Contractor> contractor = algorithm.make(spec.algorithm_params, step.csp);
       Box box = step.csp.domains();
-      const auto t0 = Clock::now();
       ContractContext context(stop);
+      const auto t0 = Clock::now();
       ContractSummary summary = contractor->Contract(box, context);
       const double solve_time = Seconds(Clock::now() - t0);
       if (std::string why = InvalidBoxReason(step.csp.domains(), box); !why.empty()) {

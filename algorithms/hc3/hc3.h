@@ -59,7 +59,7 @@ class HC3Contractor : public Contractor, private Revisers {
   Box initial_;                       // extended domains before a call
   std::vector<Interval> root_range_;  // per original variable: ranges of constraints "x in R"
   Propagation propagation_;           // over primitives_, scoped to {z, a, b}
-  Box extended_;
+  Box extended_;                      // the box a call propagates over
 };
 
 std::unique_ptr<Contractor> MakeHC3(const ParamMap& params, const ConstraintSystem& csp);

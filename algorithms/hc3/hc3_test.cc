@@ -10,8 +10,8 @@
 namespace icp {
 namespace {
 
-ContractSummary RunHC3(const ConstraintSystem& csp, Box& box) {
-  HC3Contractor hc3(csp, HC3Params());
+ContractSummary RunHC3(const ConstraintSystem& csp, Box& box, HC3Params params = {}) {
+  HC3Contractor hc3(csp, params);
   ContractContext context;
   return hc3.Contract(box, context);
 }
@@ -88,6 +88,24 @@ TEST(HC3Test, InconsistencyGivesEmpty) {
   Box box = csp.domains();
   EXPECT_EQ(RunHC3(csp, box).status, ContractStatus::kEmpty);
   EXPECT_TRUE(box.IsEmpty());
+}
+
+// x = x / 2 converges geometrically to 0: the budget stops the shared loop,
+// and x keeps what the primitives proved so far.
+TEST(HC3Test, ReviseBudgetStopsSlowConvergence) {
+  ConstraintSystem csp;
+  Expr x = csp.AddVariable("x", {0, 1});
+  csp.AddConstraint(x, Relation::kEq, x / 2.0);
+  HC3Params p;
+  p.ratio = 0;
+  p.max_revise_calls = 200;
+  Box box = csp.domains();
+  ContractSummary s = RunHC3(csp, box, p);
+  EXPECT_EQ(s.status, ContractStatus::kStopped);
+  EXPECT_EQ(s.message, "max_revise_calls reached");
+  EXPECT_EQ(s.work.revise_calls, 200);
+  EXPECT_TRUE(box.Contains({0}));
+  EXPECT_LT(box[0].hi(), 1e-6);
 }
 
 // On the car-track windows HC3 keeps the truth, and is never tighter than HC4
