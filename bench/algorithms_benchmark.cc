@@ -18,9 +18,11 @@ void ContractChain(benchmark::State& state, const AlgorithmInfo* info) {
   auto contractor = info->contractor({}, csp);
   WorkCounters work;
   double area = 0;
+  ContractContext context;
   for (auto _ : state) {
     Box box = csp.domains();
-    work += contractor->Contract(box, StopCondition()).work;
+    ContractContext context;
+    work += contractor->Contract(box, context).work;
     benchmark::DoNotOptimize(box);
     area = box[3 * p.w].Width() * box[3 * p.w + 1].Width();
   }

@@ -49,21 +49,23 @@ bool Absorb(const ContractSummary& part, Box& box, ContractSummary& total) {
 }
 }  // namespace
 
-ContractSummary SequenceContractor::Contract(Box& box, const StopCondition& stop) {
+ContractSummary SequenceContractor::Contract(Box& box, ContractContext& context) {
   const Box before = box;
   ContractSummary summary;
-  for (auto& part : parts_)
-    if (Absorb(part->Contract(box, stop), box, summary)) return summary;
+  ContractContext fresh(context.stop());
+  for (std::size_t i = 0; i < parts_.size(); ++i)
+    if (Absorb(parts_[i]->Contract(box, i == 0 ? context : fresh), box, summary)) return summary;
   summary.status = StatusOf(before, box);
   return summary;
 }
 
-ContractSummary FixpointContractor::Contract(Box& box, const StopCondition& stop) {
+ContractSummary FixpointContractor::Contract(Box& box, ContractContext& context) {
   const Box start = box;
   ContractSummary summary;
+  ContractContext fresh(context.stop());
   for (int it = 0; it < max_iterations_; ++it) {
     const Box before = box;
-    if (Absorb(inner_->Contract(box, stop), box, summary)) return summary;
+    if (Absorb(inner_->Contract(box, it == 0 ? context : fresh), box, summary)) return summary;
     bool shrank = false;
     for (std::size_t i = 0; i < box.size() && !shrank; ++i)
       shrank = ShrankByMoreThan(before[i], box[i], ratio_);

@@ -1,7 +1,7 @@
 // The Contractor interface: the unit every algorithm is built from (DESIGN.md).
-// Contract(box) shrinks box in place and never removes a point that satisfies
-// the constraints it stands for. An empty result is a value (kEmpty), a
-// timeout is a result (kStopped), never an exception.
+// Contract(box, context) shrinks box in place and never removes a point that
+// satisfies the constraints it stands for. An empty result is a value
+// (kEmpty), a timeout is a result (kStopped), never an exception.
 #ifndef ICPBENCH_CORE_CONTRACTOR_H_
 #define ICPBENCH_CORE_CONTRACTOR_H_
 
@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -57,11 +58,44 @@ class StopCondition {
   const std::atomic<bool>* cancel_ = nullptr;
 };
 
+// What a contraction is told beside the box, in one argument so that every
+// contractor, and every wrapper of one (3B), has the same entry point (STYLE.md
+// §1, §7.3): when to give up, and which variables changed since the box was
+// last at a fixpoint of the contractor. A contractor may treat more variables
+// as changed than it is told (that is always sound); told fewer, it may stop
+// short of its fixpoint.
+class ContractContext {
+ public:
+  // A fresh box: every variable counts as changed.
+  explicit ContractContext(const StopCondition& stop = StopCondition()) : stop_(stop) {}
+
+  const StopCondition& stop() const { return stop_; }
+  // True when every variable counts as changed; then changed() is meaningless.
+  bool all_changed() const { return all_changed_; }
+  // The changed variables, as indices into the box, when !all_changed(). An
+  // empty list says the box is at a fixpoint already.
+  const std::vector<int>& changed() const { return changed_; }
+
+  // Says that only vars changed since the last fixpoint (3B, after moving a
+  // bound of a box its inner contractor had contracted).
+  void SetChanged(std::span<const int> vars) {
+    all_changed_ = false;
+    changed_.assign(vars.begin(), vars.end());
+  }
+
+ private:
+  StopCondition stop_;
+  bool all_changed_ = true;
+  std::vector<int> changed_;
+};
+
 class Contractor {
  public:
   virtual ~Contractor() = default;
   virtual std::string_view Name() const = 0;
-  virtual ContractSummary Contract(Box& box, const StopCondition& stop) = 0;
+  // The one entry point (STYLE.md §7.3): whatever a contraction needs to know
+  // beside the box travels in context.
+  virtual ContractSummary Contract(Box& box, ContractContext& context) = 0;
 };
 
 // Summary status for a contraction from before to after.
@@ -77,26 +111,29 @@ inline bool ShrankByMoreThan(const Interval& before, const Interval& after, doub
   return wb - wa > ratio * wb;
 }
 
-// Applies each contractor once, in order; stops early on an empty box.
+// Applies each contractor once, in order; stops early on an empty box. Only
+// the first part is told the context's changed variables: the later ones
+// also see what the earlier parts changed, so they are told that all did.
 class SequenceContractor : public Contractor {
  public:
   explicit SequenceContractor(std::vector<std::unique_ptr<Contractor>> parts)
       : parts_(std::move(parts)) {}
   std::string_view Name() const override { return "sequence"; }
-  ContractSummary Contract(Box& box, const StopCondition& stop) override;
+  ContractSummary Contract(Box& box, ContractContext& context) override;
 
  private:
   std::vector<std::unique_ptr<Contractor>> parts_;
 };
 
 // Repeats an inner contractor until no component shrinks by more than ratio
-// (relative width), the box is empty, or max_iterations is reached.
+// (relative width), the box is empty, or max_iterations is reached. Only the
+// first iteration is told the context's changed variables.
 class FixpointContractor : public Contractor {
  public:
   FixpointContractor(std::unique_ptr<Contractor> inner, double ratio, int max_iterations)
       : inner_(std::move(inner)), ratio_(ratio), max_iterations_(max_iterations) {}
   std::string_view Name() const override { return "fixpoint"; }
-  ContractSummary Contract(Box& box, const StopCondition& stop) override;
+  ContractSummary Contract(Box& box, ContractContext& context) override;
 
  private:
   std::unique_ptr<Contractor> inner_;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <thread>
+#include <vector>
 
 namespace icp {
 namespace {
@@ -13,7 +14,7 @@ class HalveUpper : public Contractor {
  public:
   explicit HalveUpper(std::size_t i) : i_(i) {}
   std::string_view Name() const override { return "halve"; }
-  ContractSummary Contract(Box& box, const StopCondition&) override {
+  ContractSummary Contract(Box& box, ContractContext&) override {
     ContractSummary s;
     s.work.revise_calls = 1;
     box[i_] = Interval(box[i_].lo(), box[i_].lo() + box[i_].Width() / 2);
@@ -28,11 +29,49 @@ class HalveUpper : public Contractor {
 class MakeEmpty : public Contractor {
  public:
   std::string_view Name() const override { return "empty"; }
-  ContractSummary Contract(Box& box, const StopCondition&) override {
+  ContractSummary Contract(Box& box, ContractContext&) override {
     box.SetEmpty();
     return {ContractStatus::kEmpty, "", {}};
   }
 };
+
+// Records whether it was told that every variable changed.
+class RecordAllChanged : public Contractor {
+ public:
+  explicit RecordAllChanged(std::vector<bool>* seen) : seen_(seen) {}
+  std::string_view Name() const override { return "record"; }
+  ContractSummary Contract(Box&, ContractContext& context) override {
+    seen_->push_back(context.all_changed());
+    return {};
+  }
+
+ private:
+  std::vector<bool>* seen_;
+};
+
+TEST(ContractorTest, AFreshContextSaysEveryVariableChanged) {
+  ContractContext context;
+  EXPECT_TRUE(context.all_changed());
+  const int vars[] = {3, 1};
+  context.SetChanged(vars);
+  EXPECT_FALSE(context.all_changed());
+  EXPECT_EQ(context.changed(), (std::vector<int>{3, 1}));
+}
+
+// The later parts of a sequence see what the earlier ones changed as well.
+TEST(ContractorTest, SequenceTellsOnlyItsFirstPartWhatChanged) {
+  std::vector<bool> seen;
+  std::vector<std::unique_ptr<Contractor>> parts;
+  parts.push_back(std::make_unique<RecordAllChanged>(&seen));
+  parts.push_back(std::make_unique<RecordAllChanged>(&seen));
+  SequenceContractor seq(std::move(parts));
+  Box box{{0, 1}};
+  ContractContext context;
+  const int vars[] = {0};
+  context.SetChanged(vars);
+  seq.Contract(box, context);
+  EXPECT_EQ(seen, (std::vector<bool>{false, true}));
+}
 
 TEST(ContractorTest, SequenceAppliesEachPartOnceAndAddsTheirWork) {
   std::vector<std::unique_ptr<Contractor>> parts;
@@ -40,7 +79,8 @@ TEST(ContractorTest, SequenceAppliesEachPartOnceAndAddsTheirWork) {
   parts.push_back(std::make_unique<HalveUpper>(1));
   SequenceContractor seq(std::move(parts));
   Box box{{0, 8}, {0, 4}};
-  ContractSummary s = seq.Contract(box, StopCondition());
+  ContractContext context;
+  ContractSummary s = seq.Contract(box, context);
   EXPECT_EQ(s.status, ContractStatus::kContracted);
   EXPECT_EQ(s.work.revise_calls, 2);
   EXPECT_EQ(box[0], Interval(0, 4));
@@ -53,7 +93,8 @@ TEST(ContractorTest, SequenceStopsAtAnEmptyBox) {
   parts.push_back(std::make_unique<HalveUpper>(0));
   SequenceContractor seq(std::move(parts));
   Box box{{0, 8}};
-  EXPECT_EQ(seq.Contract(box, StopCondition()).status, ContractStatus::kEmpty);
+  ContractContext context;
+  EXPECT_EQ(seq.Contract(box, context).status, ContractStatus::kEmpty);
   EXPECT_TRUE(box.IsEmpty());
 }
 
@@ -62,11 +103,12 @@ TEST(ContractorTest, FixpointRepeatsUntilTheRatio) {
   // to go on, so one call; with ratio 0.4 it goes on to the iteration bound.
   Box a{{0, 1}};
   FixpointContractor loose(std::make_unique<HalveUpper>(0), 0.6, 100);
-  ContractSummary s = loose.Contract(a, StopCondition());
+  ContractContext context;
+  ContractSummary s = loose.Contract(a, context);
   EXPECT_EQ(s.work.revise_calls, 1);
   Box b{{0, 1}};
   FixpointContractor tight(std::make_unique<HalveUpper>(0), 0.4, 10);
-  s = tight.Contract(b, StopCondition());
+  s = tight.Contract(b, context);
   EXPECT_EQ(s.work.revise_calls, 10);
   EXPECT_EQ(b[0], Interval(0, 1.0 / 1024));
   EXPECT_EQ(s.status, ContractStatus::kContracted);

@@ -1,12 +1,16 @@
-// The AC3-like propagation loop shared by HC4, BC3 and BC4 (paper 000 §3):
-// a FIFO queue of constraints; each popped constraint is revised, and every
-// variable that shrank by more than `ratio` of its width re-queues the
-// constraints it occurs in (itself included, unless its revise reported that
-// a second one could change nothing). Subclasses say what revising a
-// constraint means.
+// The AC3-like propagation loop (paper 000 §3), the one loop that HC3, HC4,
+// BC3 and BC4 share: a FIFO queue of revisers, each scoped to the variables
+// it reads and narrows; each popped reviser is revised, and every variable of
+// its scope that shrank by more than `ratio` of its width re-queues the
+// revisers whose scope holds it (itself included, unless its revise reported
+// that a second one could change nothing). HC4, BC3 and BC4 revise the
+// constraints of a compiled system (PropagationContractor); HC3 revises the
+// primitive constraints of its decomposition over the box extended by its
+// auxiliary variables.
 #ifndef ICPBENCH_CORE_PROPAGATION_H_
 #define ICPBENCH_CORE_PROPAGATION_H_
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -16,43 +20,74 @@
 
 namespace icp {
 
-class PropagationContractor : public Contractor {
+// What a Propagation revises: reviser r reads and narrows only the
+// components of the box in its scope, and never widens one.
+class Revisers {
  public:
-  PropagationContractor(std::shared_ptr<const CompiledSystem> system, double ratio,
-                        std::int64_t max_revise_calls);
-
-  // Propagates from every constraint.
-  ContractSummary Contract(Box& box, const StopCondition& stop) final;
-  // Propagates from the constraints of the given variables only: after a
-  // change of those variables in a box that was otherwise at a fixpoint
-  // (3B shaving), this reaches the same fixpoint with far less work.
-  ContractSummary ContractFrom(Box& box, const StopCondition& stop, const std::vector<int>& vars);
-
-  const CompiledSystem& system() const { return *system_; }
-  const std::shared_ptr<const CompiledSystem>& shared_system() const { return system_; }
-
- protected:
-  // Narrows box with constraint c; returns false if c has no solution in box.
+  // Narrows box with reviser r; returns false if r has no solution in box.
   // A revise is not assumed idempotent: even with single occurrences, a
   // backward projection that takes the hull of a union (a division by an
   // interval holding 0, an overflowed enclosure) can narrow more on a second
-  // call, so a constraint whose variables shrank is queued again, unless the
+  // call, so a reviser whose variables shrank is queued again, unless the
   // revise sets *idempotent (false on entry) because it knows that calling
   // it again right away would narrow nothing (Tape::Revise says when).
-  virtual bool Revise(int c, Box& box, WorkCounters& work, bool* idempotent) = 0;
+  virtual bool Revise(int r, Box& box, WorkCounters& work, bool* idempotent) = 0;
+
+ protected:
+  ~Revisers() = default;
+};
+
+class Propagation {
+ public:
+  // No revisers: Run changes nothing.
+  Propagation() = default;
+  // scopes[r] lists the distinct variables of reviser r, as indices into
+  // boxes of num_variables components. Stops after max_revise_calls revises.
+  Propagation(int num_variables, std::vector<std::vector<int>> scopes, double ratio,
+              std::int64_t max_revise_calls);
+
+  // Revises box with revisers, starting from those whose scope holds one of
+  // the context's changed variables, until the queue runs empty (or the
+  // context's stop condition or max_revise_calls ends it: kStopped). Empties
+  // box when a revise finds no solution.
+  ContractSummary Run(Box& box, const ContractContext& context, Revisers& revisers);
+
+  int num_revisers() const { return static_cast<int>(scopes_.size()); }
 
  private:
-  ContractSummary Propagate(Box& box, const StopCondition& stop);
-  void Push(int c);
+  void Push(int r);
+  int Pop();
 
-  std::shared_ptr<const CompiledSystem> system_;
-  double ratio_;
-  std::int64_t max_revise_calls_;
-  std::vector<int> queue_;
+  std::vector<std::vector<int>> scopes_;
+  std::vector<std::vector<int>> revisers_of_;  // variable -> revisers whose scope holds it
+  double ratio_ = 0;
+  std::int64_t max_revise_calls_ = 0;
+  std::vector<int> queue_;  // a ring of num_revisers() slots
   std::vector<char> queued_;
   std::size_t head_ = 0;
   std::size_t count_ = 0;
   std::vector<Interval> before_;
+};
+
+// A propagation over the constraints of a compiled system, each scoped to the
+// variables of its tape; subclasses say what revising constraint c means.
+class PropagationContractor : public Contractor, protected Revisers {
+ public:
+  PropagationContractor(std::shared_ptr<const CompiledSystem> system, double ratio,
+                        std::int64_t max_revise_calls);
+
+  // Propagates from the constraints of the context's changed variables: after
+  // a change of a few variables in a box that was otherwise at a fixpoint (3B
+  // shaving), this reaches the same fixpoint as propagating from every
+  // constraint with far less work.
+  ContractSummary Contract(Box& box, ContractContext& context) final;
+
+  const CompiledSystem& system() const { return *system_; }
+  const std::shared_ptr<const CompiledSystem>& shared_system() const { return system_; }
+
+ private:
+  std::shared_ptr<const CompiledSystem> system_;
+  Propagation propagation_;
 };
 
 }  // namespace icp

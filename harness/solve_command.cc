@@ -48,8 +48,9 @@ SolveResult Solve(const SolveOptions& options) {
   std::vector<double> times;
   for (int r = 0; r < options.repeat; ++r) {
     Box box = result.csp.domains();
+    ContractContext context;
     auto start = std::chrono::steady_clock::now();
-    ContractSummary summary = contractor->Contract(box, StopCondition());
+    ContractSummary summary = contractor->Contract(box, context);
     times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     result.box = box;
     result.summary = summary;

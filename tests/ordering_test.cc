@@ -22,7 +22,8 @@ const ParamMap kTight = {{"ratio", "1e-6"}};
 
 Box Contract(const std::string& algorithm, const ConstraintSystem& csp, Box box,
              ParamMap params = kTight) {
-  FindAlgorithm(algorithm).contractor(params, csp)->Contract(box, StopCondition());
+  ContractContext context;
+  FindAlgorithm(algorithm).contractor(params, csp)->Contract(box, context);
   return box;
 }
 
@@ -77,9 +78,10 @@ TEST(OrderingTest, ContractingTwiceChangesNothingBeyondThePrecision) {
       testing::RandomCsp r = testing::MakeRandomCsp(seed);
       auto contractor = info.contractor({}, r.csp);
       Box once = r.csp.domains();
-      contractor->Contract(once, StopCondition());
+      ContractContext context;
+      contractor->Contract(once, context);
       Box twice = once;
-      contractor->Contract(twice, StopCondition());
+      contractor->Contract(twice, context);
       EXPECT_TRUE(InsideUpTo(once, twice, r.csp.domains(), 2e-2))
           << info.name << " seed " << seed;
     }

@@ -19,7 +19,8 @@ TEST_P(SoundnessTest, NeverRemovesTheKnownSolution) {
     ASSERT_FALSE(r.csp.constraints().empty()) << "seed " << seed;
     auto contractor = info.contractor({}, r.csp);
     Box box = r.csp.domains();
-    ContractSummary s = contractor->Contract(box, StopCondition());
+    ContractContext context;
+    ContractSummary s = contractor->Contract(box, context);
     ASSERT_NE(s.status, ContractStatus::kEmpty) << "seed " << seed;
     ASSERT_TRUE(box.Contains(r.point)) << "seed " << seed << ": lost the solution";
     ASSERT_TRUE(box.IsSubsetOf(r.csp.domains())) << "seed " << seed;
@@ -42,7 +43,8 @@ TEST_P(SoundnessTest, EmptiesTheBoxOfInconsistentSystems) {
   systems[2].AddConstraint(y, Relation::kLeq, systems[2].Constant(2));
   for (std::size_t i = 0; i < systems.size(); ++i) {
     Box box = systems[i].domains();
-    ContractSummary s = info.contractor({}, systems[i])->Contract(box, StopCondition());
+    ContractContext context;
+    ContractSummary s = info.contractor({}, systems[i])->Contract(box, context);
     EXPECT_EQ(s.status, ContractStatus::kEmpty) << "system " << i;
     EXPECT_TRUE(box.IsEmpty()) << "system " << i;
   }

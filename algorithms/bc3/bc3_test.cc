@@ -13,7 +13,8 @@ namespace {
 Box RunBC3(const ConstraintSystem& csp, BC3Params params = {}) {
   Box box = csp.domains();
   BC3Contractor bc3(std::make_shared<CompiledSystem>(csp), params);
-  bc3.Contract(box, StopCondition());
+  ContractContext context;
+  bc3.Contract(box, context);
   return box;
 }
 
@@ -108,8 +109,9 @@ TEST(BC3Test, KeepsTheTruthOfChainWindowsAndMatchesHC4There) {
     Box bc3 = RunBC3(step.views.csp->csp);
     ASSERT_TRUE(bc3.Contains(step.csp_truth)) << "seed " << seed;
     Box hc4 = step.views.csp->csp.domains();
+    ContractContext context;
     HC4Contractor(std::make_shared<CompiledSystem>(step.views.csp->csp), HC4Params())
-        .Contract(hc4, StopCondition());
+        .Contract(hc4, context);
     for (std::size_t i = 0; i < hc4.size(); ++i)
       EXPECT_NEAR(bc3[i].Width(), hc4[i].Width(), 0.02 * hc4[i].Width() + 1e-5) << "var " << i;
   }

@@ -13,7 +13,8 @@ namespace {
 Box RunBC4(const ConstraintSystem& csp, ContractSummary* summary = nullptr) {
   Box box = csp.domains();
   BC4Contractor bc4(std::make_shared<CompiledSystem>(csp), BC4Params());
-  ContractSummary s = bc4.Contract(box, StopCondition());
+  ContractContext context;
+  ContractSummary s = bc4.Contract(box, context);
   if (summary) *summary = s;
   return box;
 }
@@ -60,8 +61,9 @@ TEST(BC4Test, EqualsHC4OnChainWindows) {
     Step step = MakeChainStep(p, seed);
     Box bc4 = RunBC4(step.views.csp->csp);
     Box hc4 = step.views.csp->csp.domains();
+    ContractContext context;
     HC4Contractor(std::make_shared<CompiledSystem>(step.views.csp->csp), HC4Params())
-        .Contract(hc4, StopCondition());
+        .Contract(hc4, context);
     EXPECT_EQ(bc4, hc4) << "seed " << seed;
     EXPECT_TRUE(bc4.Contains(step.csp_truth));
   }

@@ -24,7 +24,7 @@ HC3Contractor::HC3Contractor(const ConstraintSystem& csp, const HC3Params& param
     if (g.node(id).b >= 0) used[g.node(id).b] = 1;
   }
   // Extended variables: the originals, then one per constant or operation node.
-  initial_.assign(num_variables_, Interval());
+  initial_ = Box(num_variables_);
   root_range_.assign(num_variables_, Interval());
   std::vector<int> var_of(g.size(), -1);
   for (int id = 0; id < g.size(); ++id) {
@@ -49,70 +49,46 @@ HC3Contractor::HC3Contractor(const ConstraintSystem& csp, const HC3Params& param
       initial_[v] = Intersect(initial_[v], c.range);
     }
   }
-  primitives_of_.resize(initial_.size());
-  for (int p = 0; p < num_primitives(); ++p) {
-    const Primitive& q = primitives_[p];
-    primitives_of_[q.z].push_back(p);
-    primitives_of_[q.a].push_back(p);
-    if (q.b >= 0 && q.b != q.a) primitives_of_[q.b].push_back(p);
+  // Topological order (children before parents): forward revises first.
+  std::vector<std::vector<int>> scopes;
+  for (const Primitive& q : primitives_) {
+    scopes.push_back({q.z, q.a});
+    if (q.b >= 0 && q.b != q.a) scopes.back().push_back(q.b);
   }
+  propagation_ = Propagation(static_cast<int>(initial_.size()), std::move(scopes), params_.ratio,
+                             params_.max_revise_calls);
 }
 
-ContractSummary HC3Contractor::Contract(Box& box, const StopCondition& stop) {
-  ContractSummary summary;
-  const Box start = box;
-  std::vector<Interval> d = initial_;
-  for (int v = 0; v < num_variables_; ++v) d[v] = Intersect(box[v], root_range_[v]);
-  auto empty_result = [&] {
-    box.SetEmpty();
-    summary.status = ContractStatus::kEmpty;
-    return summary;
-  };
-  for (const Interval& x : d)
-    if (x.IsEmpty()) return empty_result();
-
-  const int m = num_primitives();
-  std::vector<int> queue(m);
-  std::vector<char> queued(m, 1);
-  for (int p = 0; p < m; ++p) queue[p] = p;  // topological order: forward first
-  std::size_t head = 0, count = m;
+bool HC3Contractor::Revise(int p, Box& extended, WorkCounters&, bool*) {
+  const Primitive& q = primitives_[p];
   Interval unused;
-  Interval before[3];
-  while (count > 0) {
-    if (summary.work.revise_calls >= params_.max_revise_calls ||
-        ((summary.work.revise_calls & 1023) == 1023 && stop.ShouldStop())) {
-      summary.status = ContractStatus::kStopped;
-      summary.message = summary.work.revise_calls >= params_.max_revise_calls
-                            ? "max_revise_calls reached"
-                            : "stopped (time limit)";
-      for (int v = 0; v < num_variables_; ++v) box[v] = d[v];
-      return summary;
-    }
-    const int p = queue[head];
-    head = (head + 1) % m;
-    --count;
-    queued[p] = 0;
-    const Primitive& q = primitives_[p];
-    const int vars[3] = {q.z, q.a, q.b};
-    for (int i = 0; i < 3; ++i) before[i] = vars[i] >= 0 ? d[vars[i]] : Interval();
-    ++summary.work.revise_calls;
-    Interval& b = q.b >= 0 ? d[q.b] : unused;
-    d[q.z] = Intersect(d[q.z], EvalOp(q.op, d[q.a], b, q.n));
-    if (d[q.z].IsEmpty()) return empty_result();
-    ProjectOp(q.op, d[q.z], d[q.a], b, q.n);
-    if (d[q.a].IsEmpty() || b.IsEmpty()) return empty_result();
-    for (int i = 0; i < 3; ++i) {
-      if (vars[i] < 0 || !ShrankByMoreThan(before[i], d[vars[i]], params_.ratio)) continue;
-      for (int other : primitives_of_[vars[i]]) {
-        if (queued[other]) continue;
-        queued[other] = 1;
-        queue[(head + count) % m] = other;
-        ++count;
-      }
-    }
+  Interval& b = q.b >= 0 ? extended[q.b] : unused;
+  extended[q.z] = Intersect(extended[q.z], EvalOp(q.op, extended[q.a], b, q.n));
+  if (extended[q.z].IsEmpty()) return false;
+  ProjectOp(q.op, extended[q.z], extended[q.a], b, q.n);
+  return !extended[q.a].IsEmpty() && !b.IsEmpty();
+}
+
+ContractSummary HC3Contractor::Contract(Box& box, ContractContext& context) {
+  extended_ = initial_;
+  for (int v = 0; v < num_variables_; ++v) extended_[v] = Intersect(box[v], root_range_[v]);
+  ContractSummary summary{ContractStatus::kEmpty, "", {}};
+  if (!extended_.IsEmpty()) {
+    // The auxiliaries start afresh, so every primitive is revised.
+    ContractContext fresh(context.stop());
+    summary = propagation_.Run(extended_, fresh, *this);
   }
-  for (int v = 0; v < num_variables_; ++v) box[v] = d[v];
-  summary.status = StatusOf(start, box);
+  if (summary.status == ContractStatus::kEmpty) {
+    box.SetEmpty();
+    return summary;
+  }
+  bool shrank = false;
+  for (int v = 0; v < num_variables_; ++v) {
+    shrank |= !(extended_[v] == box[v]);
+    box[v] = extended_[v];
+  }
+  if (summary.status != ContractStatus::kStopped)
+    summary.status = shrank ? ContractStatus::kContracted : ContractStatus::kFixpoint;
   return summary;
 }
 

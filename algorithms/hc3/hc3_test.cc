@@ -10,9 +10,10 @@
 namespace icp {
 namespace {
 
-ContractSummary RunHC3(const ConstraintSystem& csp, Box& box) {
-  HC3Contractor hc3(csp, HC3Params());
-  return hc3.Contract(box, StopCondition());
+ContractSummary RunHC3(const ConstraintSystem& csp, Box& box, HC3Params params = {}) {
+  HC3Contractor hc3(csp, params);
+  ContractContext context;
+  return hc3.Contract(box, context);
 }
 
 // Paper 002 §2.2, the worked example, step by step: [3,4], [1,2], [5,6].
@@ -42,7 +43,8 @@ TEST(HC3Test, Paper000DecompositionExample) {
   // 2*x, 2x - y, cos(.), and z - cos(.) = 0.
   EXPECT_EQ(hc3.num_primitives(), 4);
   Box box = csp.domains();
-  hc3.Contract(box, StopCondition());
+  ContractContext context;
+  hc3.Contract(box, context);
   // 2x - y in [-1, 2], so z = cos(.) >= cos(2) ~ -0.416.
   EXPECT_NEAR(box[2].lo(), std::cos(2.0), 1e-9);
   EXPECT_LE(box[2].lo(), std::cos(2.0));
@@ -88,6 +90,24 @@ TEST(HC3Test, InconsistencyGivesEmpty) {
   EXPECT_TRUE(box.IsEmpty());
 }
 
+// x = x / 2 converges geometrically to 0: the budget stops the shared loop,
+// and x keeps what the primitives proved so far.
+TEST(HC3Test, ReviseBudgetStopsSlowConvergence) {
+  ConstraintSystem csp;
+  Expr x = csp.AddVariable("x", {0, 1});
+  csp.AddConstraint(x, Relation::kEq, x / 2.0);
+  HC3Params p;
+  p.ratio = 0;
+  p.max_revise_calls = 200;
+  Box box = csp.domains();
+  ContractSummary s = RunHC3(csp, box, p);
+  EXPECT_EQ(s.status, ContractStatus::kStopped);
+  EXPECT_EQ(s.message, "max_revise_calls reached");
+  EXPECT_EQ(s.work.revise_calls, 200);
+  EXPECT_TRUE(box.Contains({0}));
+  EXPECT_LT(box[0].hi(), 1e-6);
+}
+
 // On the car-track windows HC3 keeps the truth, and is never tighter than HC4
 // beyond the propagation threshold (each variable occurs once per constraint).
 TEST(HC3Test, KeepsTheTruthOfChainWindows) {
@@ -99,8 +119,9 @@ TEST(HC3Test, KeepsTheTruthOfChainWindows) {
     ASSERT_NE(RunHC3(step.views.csp->csp, hc3).status, ContractStatus::kEmpty);
     EXPECT_TRUE(hc3.Contains(step.csp_truth)) << "seed " << seed;
     Box hc4 = step.views.csp->csp.domains();
+    ContractContext context;
     HC4Contractor(std::make_shared<CompiledSystem>(step.views.csp->csp), HC4Params())
-        .Contract(hc4, StopCondition());
+        .Contract(hc4, context);
     for (std::size_t i = 0; i < hc4.size(); ++i)
       EXPECT_LE(hc4[i].Width(), hc3[i].Width() * 1.01 + 1e-9) << "seed " << seed << " var " << i;
   }

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "algorithms/registry.h"
 #include "problems/chain/chain.h"
@@ -12,7 +14,8 @@ namespace {
 
 ContractSummary RunHC4(const ConstraintSystem& csp, Box& box, HC4Params params = {}) {
   HC4Contractor hc4(std::make_shared<CompiledSystem>(csp), params);
-  return hc4.Contract(box, StopCondition());
+  ContractContext context;
+  return hc4.Contract(box, context);
 }
 
 // Paper 002 §2.2: x3 = x1 + x2, x1 in [1,4], x2 in [1,2], x3 in [5,7]
@@ -109,6 +112,41 @@ TEST(HC4Test, KeepsTheTruthOfChainWindowsAndContractsThem) {
   }
 }
 
+// Told which variables changed in a box at a fixpoint, HC4 revises only what
+// they reach: x0 = x1 = x2 and, apart, x3 = x4.
+TEST(HC4Test, PropagatesFromTheChangedVariablesOnly) {
+  ConstraintSystem csp;
+  std::vector<Expr> x;
+  for (int i = 0; i < 5; ++i) x.push_back(csp.AddVariable("x" + std::to_string(i), {0, 10}));
+  csp.AddConstraint(x[0], Relation::kEq, x[1]);
+  csp.AddConstraint(x[1], Relation::kEq, x[2]);
+  csp.AddConstraint(x[3], Relation::kEq, x[4]);
+  HC4Contractor hc4(std::make_shared<CompiledSystem>(csp), HC4Params());
+  Box moved = csp.domains();
+  moved[0] = Interval(2, 3);
+
+  Box from_all = moved;
+  ContractContext fresh;
+  ContractSummary all = hc4.Contract(from_all, fresh);
+  Box from_x0 = moved;
+  ContractContext x0_changed;
+  const int changed[] = {0};
+  x0_changed.SetChanged(changed);
+  ContractSummary some = hc4.Contract(from_x0, x0_changed);
+  EXPECT_EQ(from_x0, from_all);
+  EXPECT_EQ(from_x0[2], Interval(2, 3));
+  EXPECT_EQ(from_x0[3], Interval(0, 10));
+  EXPECT_LT(some.work.revise_calls, all.work.revise_calls);
+
+  ContractContext none_changed;
+  none_changed.SetChanged({});
+  Box untouched = moved;
+  ContractSummary none = hc4.Contract(untouched, none_changed);
+  EXPECT_EQ(none.work.revise_calls, 0);
+  EXPECT_EQ(none.status, ContractStatus::kFixpoint);
+  EXPECT_EQ(untouched, moved);
+}
+
 TEST(HC4Test, RegistryBuildsItAndRejectsBadParameters) {
   ConstraintSystem csp;
   Expr x = csp.AddVariable("x", {0, 1});
@@ -119,7 +157,8 @@ TEST(HC4Test, RegistryBuildsItAndRejectsBadParameters) {
   EXPECT_THROW(info.contractor({{"speed", "1"}}, csp), ParamError);
   auto hc4 = info.contractor({{"ratio", "0.1"}}, csp);
   Box box = csp.domains();
-  hc4->Contract(box, StopCondition());
+  ContractContext context;
+  hc4->Contract(box, context);
   EXPECT_EQ(box[0], Interval(0.5));
   EXPECT_THROW(FindAlgorithm("nope"), std::invalid_argument);
 }

@@ -16,25 +16,24 @@ void Describe(ShavingParams& p, ParamSet& set) {
           Range::AtLeast(1));
 }
 
-ThreeBContractor::ThreeBContractor(std::string name, std::unique_ptr<PropagationContractor> inner,
+ThreeBContractor::ThreeBContractor(std::string name, std::unique_ptr<Contractor> inner,
                                    const ShavingParams& params)
     : name_(std::move(name)), inner_(std::move(inner)), params_(params) {}
 
-bool ThreeBContractor::Shave(Box& box, int var, bool left, const StopCondition& stop,
+bool ThreeBContractor::Shave(Box& box, int var, bool left, ContractContext& inner_context,
                              WorkCounters& work) {
   Interval x = box[var];
   if (!x.IsBounded()) return true;  // an infinite side cannot be sliced
   const double slice_width = x.Width() / params_.slices;
   if (slice_width <= params_.epsilon * std::max(1.0, x.Mag())) return true;
-  var_list_.assign(1, var);
-  for (int k = 0; k < params_.slices && !stop.ShouldStop(); ++k) {
+  for (int k = 0; k < params_.slices && !inner_context.stop().ShouldStop(); ++k) {
     const bool last = k == params_.slices - 1;
     Interval slice = left ? Interval(x.lo(), last ? x.hi() : std::min(x.hi(), x.lo() + slice_width))
                           : Interval(last ? x.lo() : std::max(x.lo(), x.hi() - slice_width), x.hi());
     trial_ = box;
     trial_[var] = slice;
     ++work.inner_calls;
-    ContractSummary s = inner_->ContractFrom(trial_, stop, var_list_);
+    ContractSummary s = inner_->Contract(trial_, inner_context);
     work += s.work;
     if (s.status != ContractStatus::kEmpty) {
       // Every solution with x in the slice lies in trial_, so none is
@@ -50,7 +49,7 @@ bool ThreeBContractor::Shave(Box& box, int var, bool left, const StopCondition& 
   return true;
 }
 
-ContractSummary ThreeBContractor::Contract(Box& box, const StopCondition& stop) {
+ContractSummary ThreeBContractor::Contract(Box& box, ContractContext& context) {
   ContractSummary summary;
   const Box start = box;
   auto fail = [&](ContractStatus status, const std::string& message) {
@@ -59,23 +58,28 @@ ContractSummary ThreeBContractor::Contract(Box& box, const StopCondition& stop) 
     summary.message = message;
     return summary;
   };
-  ContractSummary first = inner_->Contract(box, stop);
+  ContractSummary first = inner_->Contract(box, context);
   ++summary.work.inner_calls;
   summary.work += first.work;
   if (first.status == ContractStatus::kEmpty) return fail(ContractStatus::kEmpty, "");
+  // Box is now at a fixpoint of the inner contractor, up to its precision;
+  // each shave and each spread of new bounds changes one variable of it.
+  ContractContext inner_context(context.stop());
   for (int round = 0; round < params_.max_rounds; ++round) {
     bool shrank = false;
     for (int var = 0; var < static_cast<int>(box.size()); ++var) {
-      if (stop.ShouldStop()) return fail(ContractStatus::kStopped, "stopped (time limit)");
+      if (context.stop().ShouldStop())
+        return fail(ContractStatus::kStopped, "stopped (time limit)");
       const Interval before = box[var];
-      if (!Shave(box, var, true, stop, summary.work) || !Shave(box, var, false, stop, summary.work))
+      inner_context.SetChanged(std::span(&var, 1));
+      if (!Shave(box, var, true, inner_context, summary.work) ||
+          !Shave(box, var, false, inner_context, summary.work))
         return fail(ContractStatus::kEmpty, "");
       if (!ShrankByMoreThan(before, box[var], params_.ratio)) continue;
       shrank = true;
       // Spread the new bounds before shaving the next variable.
-      var_list_.assign(1, var);
       ++summary.work.inner_calls;
-      ContractSummary s = inner_->ContractFrom(box, stop, var_list_);
+      ContractSummary s = inner_->Contract(box, inner_context);
       summary.work += s.work;
       if (s.status == ContractStatus::kEmpty) return fail(ContractStatus::kEmpty, "");
     }

@@ -1,11 +1,13 @@
 // 3B consistency (Lhomme 1993; paper 000 §3.5): each bound of each variable
 // is shaved: a slice [lo, lo + width / slices] is tried with an inner
-// contractor (BC4 in the paper: "3b-bc4"; or HC4: "3b-hc4") and removed if
-// the inner contractor proves it empty, else the bound moves to where the
-// inner contractor shrank the slice. Rounds repeat until no variable shrinks
-// by more than `ratio`. This projects the whole CSP, not one constraint at a
-// time: x + y = 0, x - y = 0 on [-2,2]^2 becomes [0,0]^2, which no
-// constraint-by-constraint algorithm finds.
+// contractor (BC4 in the paper: "3b-bc4"; or HC4: "3b-hc4"; any Contractor
+// will do) and removed if the inner contractor proves it empty, else the
+// bound moves to where the inner contractor shrank the slice. Rounds repeat
+// until no variable shrinks by more than `ratio`. This projects the whole CSP,
+// not one constraint at a time: x + y = 0, x - y = 0 on [-2,2]^2 becomes
+// [0,0]^2, which no constraint-by-constraint algorithm finds. The inner
+// contractor is told (ContractContext) that only the shaved variable
+// changed, which a propagation turns into far less work than a fresh start.
 //
 // Sound: a slice or part of a slice is removed only when the sound inner
 // contractor proves it holds no solution.
@@ -17,8 +19,8 @@
 
 #include "algorithms/bc4/bc4.h"
 #include "algorithms/hc4/hc4.h"
+#include "core/contractor.h"
 #include "core/params.h"
-#include "core/propagation.h"
 
 namespace icp {
 
@@ -56,20 +58,20 @@ void Describe(ThreeBParams<InnerParams>& p, ParamSet& set) {
 
 class ThreeBContractor : public Contractor {
  public:
-  ThreeBContractor(std::string name, std::unique_ptr<PropagationContractor> inner,
+  ThreeBContractor(std::string name, std::unique_ptr<Contractor> inner,
                    const ShavingParams& params);
   std::string_view Name() const override { return name_; }
-  ContractSummary Contract(Box& box, const StopCondition& stop) override;
+  ContractSummary Contract(Box& box, ContractContext& context) override;
 
  private:
-  // Shaves the left (or right) bound of box[var]; false if box has no solution.
-  bool Shave(Box& box, int var, bool left, const StopCondition& stop, WorkCounters& work);
+  // Shaves the left (or right) bound of box[var] with the inner contractor,
+  // told by inner_context that only var changed; false if box has no solution.
+  bool Shave(Box& box, int var, bool left, ContractContext& inner_context, WorkCounters& work);
 
   std::string name_;
-  std::unique_ptr<PropagationContractor> inner_;
+  std::unique_ptr<Contractor> inner_;
   ShavingParams params_;
   Box trial_;
-  std::vector<int> var_list_;
 };
 
 std::unique_ptr<Contractor> MakeThreeBBC4(const ParamMap& params, const ConstraintSystem& csp);

@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
+#include "algorithms/hc3/hc3.h"
 #include "algorithms/registry.h"
 #include "problems/chain/chain.h"
 
@@ -12,17 +14,24 @@ namespace {
 
 Box RunAlgorithm(const std::string& name, const ConstraintSystem& csp, const ParamMap& params = {}) {
   Box box = csp.domains();
-  FindAlgorithm(name).contractor(params, csp)->Contract(box, StopCondition());
+  ContractContext context;
+  FindAlgorithm(name).contractor(params, csp)->Contract(box, context);
   return box;
 }
 
-// Paper 000 §3.5: x + y = 0, x - y = 0 on [-2,2]^2: 3B gives [0,0]^2.
-TEST(ThreeBTest, Paper000Example) {
+// Paper 000 §3.5: x + y = 0, x - y = 0 on [-2,2]^2, which 3B contracts to
+// [0,0]^2.
+ConstraintSystem Paper000Example() {
   ConstraintSystem csp;
   Expr x = csp.AddVariable("x", {-2, 2});
   Expr y = csp.AddVariable("y", {-2, 2});
   csp.AddConstraint(x + y, Relation::kEq, csp.Constant(0));
   csp.AddConstraint(x - y, Relation::kEq, csp.Constant(0));
+  return csp;
+}
+
+TEST(ThreeBTest, Paper000Example) {
+  const ConstraintSystem csp = Paper000Example();
   for (const std::string name : {"3b-bc4", "3b-hc4"}) {
     Box box = RunAlgorithm(name, csp);
     EXPECT_TRUE(box.Contains({0, 0})) << name;
@@ -63,6 +72,61 @@ TEST(ThreeBTest, InnerParametersAreNestedAndValidated) {
   bool listed = false;
   for (const ParamInfo& p : info.params(info.name)) listed |= p.name == "inner.max_bisections";
   EXPECT_TRUE(listed);
+}
+
+// Contracts with HC4 and records which variables each call was told changed
+// ({-1} for all of them).
+class RecordingHC4 : public Contractor {
+ public:
+  RecordingHC4(const ConstraintSystem& csp, std::vector<std::vector<int>>* told)
+      : hc4_(std::make_shared<CompiledSystem>(csp), HC4Params()), told_(told) {}
+  std::string_view Name() const override { return "recording-hc4"; }
+  ContractSummary Contract(Box& box, ContractContext& context) override {
+    told_->push_back(context.all_changed() ? std::vector<int>{-1} : context.changed());
+    return hc4_.Contract(box, context);
+  }
+
+ private:
+  HC4Contractor hc4_;
+  std::vector<std::vector<int>>* told_;
+};
+
+// The inner contractor is any Contractor, told through the context that only
+// the shaved variable changed; wrapping HC4 changes nothing in the result.
+TEST(ThreeBTest, TellsAnyInnerContractorWhichVariableChanged) {
+  ChainParams p;
+  p.w = 4;
+  Step step = MakeChainStep(p, 1);
+  std::vector<std::vector<int>> told;
+  ThreeBContractor three_b("3b-recording", std::make_unique<RecordingHC4>(step.views.csp->csp, &told),
+                           ShavingParams());
+  Box box = step.views.csp->csp.domains();
+  ContractContext context;
+  ContractSummary s = three_b.Contract(box, context);
+  EXPECT_EQ(box, RunAlgorithm("3b-hc4", step.views.csp->csp));
+  ASSERT_EQ(static_cast<std::int64_t>(told.size()), s.work.inner_calls);
+  EXPECT_EQ(told[0], std::vector<int>{-1});
+  std::vector<char> shaved(box.size(), 0);
+  for (std::size_t k = 1; k < told.size(); ++k) {
+    ASSERT_EQ(told[k].size(), 1u) << "call " << k;
+    ASSERT_GE(told[k][0], 0) << "call " << k;
+    shaved[told[k][0]] = 1;
+  }
+  EXPECT_EQ(std::count(shaved.begin(), shaved.end(), 1), static_cast<int>(box.size()));
+}
+
+// An inner contractor that ignores the changed variables (HC3 starts afresh at
+// every call) works too, only slower.
+TEST(ThreeBTest, ShavesWithHC3AsInnerContractor) {
+  const ConstraintSystem csp = Paper000Example();
+  ThreeBContractor three_b("3b-hc3", std::make_unique<HC3Contractor>(csp, HC3Params()),
+                           ShavingParams());
+  Box box = csp.domains();
+  ContractContext context;
+  EXPECT_EQ(three_b.Contract(box, context).status, ContractStatus::kContracted);
+  EXPECT_TRUE(box.Contains({0, 0}));
+  EXPECT_LE(box[0].Width(), 1e-6);
+  EXPECT_LE(box[1].Width(), 1e-6);
 }
 
 // 3B contracts the chain windows at least as much as BC4 and keeps the truth;

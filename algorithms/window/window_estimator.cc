@@ -80,7 +80,8 @@ StepResult WindowEstimator::Step(const Views& views, const StopCondition& stop) 
   std::unique_ptr<Contractor> contractor = make_contractor_(contractor_params_, view.csp);
   StepResult result;
   const auto start = std::chrono::steady_clock::now();
-  result.summary = contractor->Contract(box, stop);
+  ContractContext context(stop);
+  result.summary = contractor->Contract(box, context);
   result.solve_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (std::size_t i = 0; i < box.size() && !box.IsEmpty(); ++i) {
