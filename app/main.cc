@@ -14,7 +14,7 @@
 #include "experiments/registry.h"
 #include "harness/list_command.h"
 #include "harness/plugin_loader.h"
-#include "harness/report.h"
+#include "report/report.h"
 #include "harness/results_store.h"
 #include "harness/runner.h"
 #include "harness/solve_command.h"

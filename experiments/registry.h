@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/report.h"
+#include "report/report.h"
 #include "harness/run_record.h"
 #include "plots/figures.h"
 

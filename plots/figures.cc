@@ -13,7 +13,7 @@
 #include <utility>
 
 #include "harness/metrics.h"
-#include "harness/report.h"
+#include "report/report.h"
 
 namespace icp {
 

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/report.h"
+#include "report/report.h"
 #include "harness/run_record.h"
 
 namespace icp {

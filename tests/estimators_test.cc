@@ -10,7 +10,7 @@
 #include <map>
 #include <sstream>
 
-#include "harness/report.h"
+#include "report/report.h"
 #include "harness/results_store.h"
 #include "harness/runner.h"
 #include "plots/figures.h"

@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/report.h"
+#include "report/report.h"
 #include "harness/run_record.h"
 #include "plots/figures.h"
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "experiments/registry.h"
-#include "harness/report_testing.h"
+#include "report/report_testing.h"
 #include "plots/figures_testing.h"
 
 namespace icp {

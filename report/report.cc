@@ -1,4 +1,4 @@
-#include "harness/report.h"
+#include "report/report.h"
 
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-#include "harness/report.h"
+#include "report/report.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "harness/metrics.h"
-#include "harness/report_testing.h"
+#include "report/report_testing.h"
 #include "harness/results_store.h"
 #include "harness/spec.h"
 

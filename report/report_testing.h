@@ -1,7 +1,7 @@
 // Synthetic runs and Markdown helpers for the tests of the report, the plots
-// and the papers (harness/report_test.cc, experiments/*/..._test.cc).
-#ifndef ICPBENCH_HARNESS_REPORT_TESTING_H_
-#define ICPBENCH_HARNESS_REPORT_TESTING_H_
+// and the papers (report/report_test.cc, experiments/*/..._test.cc).
+#ifndef ICPBENCH_REPORT_REPORT_TESTING_H_
+#define ICPBENCH_REPORT_REPORT_TESTING_H_
 
 #include <cstdint>
 #include <sstream>
@@ -69,4 +69,4 @@ inline std::string MarkdownRow(const std::string& md, const std::string& first) 
 
 }  // namespace icp::testing
 
-#endif  // ICPBENCH_HARNESS_REPORT_TESTING_H_
+#endif  // ICPBENCH_REPORT_REPORT_TESTING_H_

@@ -25,8 +25,8 @@
 // CSV holds the runs-per-configuration table only, one header row then one
 // row per group, RFC 4180 quoting, 6 significant digits, NaN as an empty
 // field.
-#ifndef ICPBENCH_HARNESS_REPORT_H_
-#define ICPBENCH_HARNESS_REPORT_H_
+#ifndef ICPBENCH_REPORT_REPORT_H_
+#define ICPBENCH_REPORT_REPORT_H_
 
 #include <functional>
 #include <string>
@@ -154,4 +154,4 @@ std::string TexEscape(const std::string& text);
 
 }  // namespace icp
 
-#endif  // ICPBENCH_HARNESS_REPORT_H_
+#endif  // ICPBENCH_REPORT_REPORT_H_
