@@ -97,10 +97,19 @@ TEST(CliTest, ListShowsNamesDescriptionsAndParameters) {
     EXPECT_FALSE(a["description"].get<std::string>().empty());
     EXPECT_EQ(a["params"][0]["name"], "ratio");
     EXPECT_EQ(a["params"][0]["type"], "double");
+    EXPECT_EQ(a["needs"], "csp");
+    bool carry = false;
+    for (const auto& p : a["params"]) carry |= p["name"] == "carry" && p["default"] == "first";
+    EXPECT_TRUE(carry);
   }
   EXPECT_TRUE(found);
+  for (const auto& a : list) EXPECT_TRUE(a.contains("needs")) << a["name"];
   auto problems = nlohmann::json::parse(Icpbench("list problems --format json").out);
   EXPECT_GE(problems.size(), 1u);
+  for (const auto& p : problems) {
+    ASSERT_TRUE(p["offers"].is_array()) << p["name"];
+    if (p["name"] == "car-track") EXPECT_EQ(p["offers"], nlohmann::json::array({"csp"}));
+  }
   EXPECT_EQ(Icpbench("list algorithms").exit_code, 0);
 }
 
