@@ -2,7 +2,9 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -27,11 +29,40 @@ class Reader {
     throw SpecError(out.str());
   }
 
+  // A mapping key as text; yaml-cpp's own conversion error names no file.
+  std::string Key(const YAML::Node& key, const std::string& where) const {
+    if (!key.IsScalar())
+      Fail(key, where,
+           std::string("a key must be a single value, not a ") +
+               (key.IsSequence() ? "list" : key.IsMap() ? "mapping" : "null"));
+    return key.Scalar();
+  }
+
+  // yaml-cpp keeps the first of duplicated keys silently and lets lookups
+  // see only it, so every mapping of the document is checked once up front.
+  void CheckDocument(const YAML::Node& node, const std::string& where) const {
+    if (node.IsSequence()) {
+      for (std::size_t i = 0; i < node.size(); ++i)
+        CheckDocument(node[i], where + "[" + std::to_string(i) + "]");
+    } else if (node.IsMap()) {
+      std::map<std::string, YAML::Mark> seen;
+      for (const auto& kv : node) {
+        const std::string k = Key(kv.first, where);
+        const auto [it, inserted] = seen.emplace(k, kv.first.Mark());
+        if (!inserted)
+          Fail(kv.first, Join(where, k),
+               "duplicated key (first at line " + std::to_string(it->second.line + 1) + ":" +
+                   std::to_string(it->second.column + 1) + ")");
+        CheckDocument(kv.second, Join(where, k));
+      }
+    }
+  }
+
   void CheckKeys(const YAML::Node& map, const std::string& where,
                  const std::set<std::string>& allowed) const {
     if (!map.IsMap()) Fail(map, where, "expected a mapping");
     for (const auto& kv : map) {
-      const std::string k = kv.first.as<std::string>();
+      const std::string k = Key(kv.first, where);
       if (!allowed.count(k)) {
         std::string known;
         for (const auto& a : allowed) known += (known.empty() ? "" : ", ") + a;
@@ -108,7 +139,7 @@ class Reader {
     if (const YAML::Node params = node["params"]) {
       if (!params.IsMap()) Fail(params, Join(where, "params"), "expected a mapping of key: value");
       for (const auto& kv : params) {
-        const std::string key = kv.first.as<std::string>();
+        const std::string key = Key(kv.first, Join(where, "params"));
         const std::string at = Join(where, "params." + key);
         std::vector<std::string> values;
         if (kv.second.IsSequence()) {
@@ -234,7 +265,9 @@ class Reader {
 
 }  // namespace
 
-Spec ParseSpec(const std::string& text, const std::string& source) {
+namespace {
+
+Spec ParseSpecText(const std::string& text, const std::string& source) {
   Reader reader(source);
   YAML::Node root;
   try {
@@ -245,6 +278,7 @@ Spec ParseSpec(const std::string& text, const std::string& source) {
     throw SpecError(out.str());
   }
   if (!root || root.IsNull()) throw SpecError(source + ": empty spec");
+  reader.CheckDocument(root, "");
   reader.CheckKeys(root, "",
                    {"name", "description", "timeout_s", "seeds", "repetitions", "experiments",
                     "algorithms", "problems"});
@@ -258,6 +292,7 @@ Spec ParseSpec(const std::string& text, const std::string& source) {
       reader.Fail(root, "", "give 'experiments' or top-level 'algorithms'/'problems', not both");
     if (!experiments.IsSequence() || experiments.size() == 0)
       reader.Fail(experiments, "experiments", "expected a non-empty list");
+    std::map<std::string, std::string> names;  // experiment name -> where it was given
     for (std::size_t i = 0; i < experiments.size(); ++i) {
       const YAML::Node e = experiments[i];
       const std::string where = "experiments[" + std::to_string(i) + "]";
@@ -266,6 +301,11 @@ Spec ParseSpec(const std::string& text, const std::string& source) {
                         "timeout_s"});
       const std::string name =
           e["name"] ? reader.Scalar(e["name"], where + ".name") : "experiment" + std::to_string(i + 1);
+      // Runs are stored under SPEC#name: two experiments of one name would mix.
+      const auto [it, inserted] = names.emplace(name, where);
+      if (!inserted)
+        reader.Fail(e["name"] ? e["name"] : e, where + ".name",
+                    "experiment '" + name + "' is already the name of " + it->second);
       const double t = e["timeout_s"] ? reader.Positive(e["timeout_s"], where + ".timeout_s") : timeout;
       reader.Experiment(e, where, name, t, reader.Seeds(e, where, seeds), &spec, &seen);
     }
@@ -274,6 +314,21 @@ Spec ParseSpec(const std::string& text, const std::string& source) {
     reader.Experiment(root, "", name, timeout, seeds, &spec, &seen);
   }
   return spec;
+}
+
+}  // namespace
+
+Spec ParseSpec(const std::string& text, const std::string& source) {
+  try {
+    return ParseSpecText(text, source);
+  } catch (const YAML::Exception& e) {
+    // A yaml-cpp error the reader did not foresee still names the file.
+    std::ostringstream out;
+    out << source;
+    if (e.mark.line >= 0) out << ":" << e.mark.line + 1 << ":" << e.mark.column + 1;
+    out << ": " << e.msg;
+    throw SpecError(out.str());
+  }
 }
 
 ParamMap NonDefaultParams(const ParamMap& defaults, const ParamMap& params) {
@@ -307,6 +362,9 @@ RunSpec WithoutDefaults(RunSpec spec) {
 }
 
 Spec LoadSpec(const std::string& path) {
+  // An ifstream opens a directory and then reads nothing ("empty spec").
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw SpecError(path + ": is a directory");
   std::ifstream in(path);
   if (!in) throw SpecError(path + ": cannot read the spec file");
   std::stringstream text;

@@ -130,8 +130,41 @@ TEST(SpecTest, ErrorsNameTheFileLineAndKey) {
             std::string::npos);
 }
 
+TEST(SpecTest, NonScalarKeysNameTheFileLineAndKey) {
+  EXPECT_EQ(ErrorOf("? [a, b]\n: 1\nalgorithms: [hc4]\nproblems: [chain]\n"),
+            "spec.yaml:1:3: a key must be a single value, not a list");
+  EXPECT_EQ(ErrorOf("algorithms: [hc4]\nproblems:\n  - {name: chain, params: {[x]: 1}}\n"),
+            "spec.yaml:3:28: key 'problems[0].params': a key must be a single value, not a list");
+  EXPECT_EQ(ErrorOf("experiments:\n  - {{a: 1}: 2, algorithms: [hc4], problems: [chain]}\n"),
+            "spec.yaml:2:6: key 'experiments[0]': a key must be a single value, not a mapping");
+}
+
+TEST(SpecTest, DuplicateKeysAndExperimentNamesAreRejected) {
+  EXPECT_EQ(ErrorOf("algorithms: [hc4]\nproblems: [chain]\nalgorithms: [bc4]\n"),
+            "spec.yaml:3:1: key 'algorithms': duplicated key (first at line 1:1)");
+  EXPECT_EQ(ErrorOf("algorithms: [hc4]\nproblems:\n  - {name: chain, params: {w: 3, w: 4}}\n"),
+            "spec.yaml:3:34: key 'problems[0].params.w': duplicated key (first at line 3:28)");
+  EXPECT_EQ(ErrorOf("experiments:\n"
+                    "  - {name: a, algorithms: [hc4], problems: [chain]}\n"
+                    "  - {name: a, algorithms: [bc4], problems: [chain]}\n"),
+            "spec.yaml:3:12: key 'experiments[1].name': experiment 'a' is already the name of "
+            "experiments[0]");
+  // A default name counts too.
+  EXPECT_NE(ErrorOf("experiments:\n"
+                    "  - {name: experiment2, algorithms: [hc4], problems: [chain]}\n"
+                    "  - {algorithms: [bc4], problems: [chain]}\n")
+                .find("spec.yaml:3:5: key 'experiments[1].name': experiment 'experiment2'"),
+            std::string::npos);
+}
+
 TEST(SpecTest, MissingFileIsASpecError) {
   EXPECT_THROW(LoadSpec("/nonexistent/spec.yaml"), SpecError);
+  try {
+    LoadSpec("/tmp");
+    ADD_FAILURE() << "a directory was read as a spec";
+  } catch (const SpecError& e) {
+    EXPECT_EQ(std::string(e.what()), "/tmp: is a directory");
+  }
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <numbers>
 #include <ostream>
@@ -100,6 +101,17 @@ double TrackHeading(double s) {
   return heading;
 }
 
+// now - prev as a double; records not read by ReadCarTrackLog may hold any
+// counts, and a signed overflow there would be undefined behaviour.
+double TickStep(std::int64_t prev, std::int64_t now, std::size_t row) {
+  std::int64_t diff = 0;
+  if (__builtin_sub_overflow(now, prev, &diff))
+    throw std::invalid_argument("car-track: row " + std::to_string(row) + ": tick count " +
+                                std::to_string(now) + " after " + std::to_string(prev) +
+                                " overflows a 64-bit difference");
+  return static_cast<double>(diff);
+}
+
 // x + [-e, e], outward rounded.
 Interval Around(double x, double e) { return Interval(x) + Interval(-e, e); }
 
@@ -143,6 +155,13 @@ std::vector<CarTrackRecord> SimulateCarTrack(const CarTrackParams& p, std::uint6
       rot_right += d_right * per_metre / r_right + noise(p.odo_slip);
       gyro = dth + noise(p.gyro_error);
     }
+    // Converting a double beyond int64 is undefined behaviour (tiny radius,
+    // huge ticks_per_rev and odo_slip over a long drive).
+    constexpr double kMaxTicks = 0x1p62;
+    if (!(std::fabs(rot_left) < kMaxTicks && std::fabs(rot_right) < kMaxTicks))
+      throw ParamError("car-track: the simulated tick count exceeds 2^62 at step " +
+                       std::to_string(k) +
+                       "; lower ticks_per_rev, odo_slip or steps, or raise wheel_radius");
     CarTrackRecord r;
     r.t = k / p.rate;
     r.odo_left_ticks = static_cast<std::int64_t>(std::floor(rot_left));
@@ -173,9 +192,9 @@ std::vector<CarTrackMeasurement> MeasureCarTrack(const CarTrackParams& p,
     if (k > 0) {
       const CarTrackRecord& prev = records[k - 1];
       const Interval dp_left =
-          Around(static_cast<double>(r.odo_left_ticks - prev.odo_left_ticks), ticks_error.hi());
+          Around(TickStep(prev.odo_left_ticks, r.odo_left_ticks, k), ticks_error.hi());
       const Interval dp_right =
-          Around(static_cast<double>(r.odo_right_ticks - prev.odo_right_ticks), ticks_error.hi());
+          Around(TickStep(prev.odo_right_ticks, r.odo_right_ticks, k), ticks_error.hi());
       m.ds = Pi() * (radius * dp_left + radius * dp_right) / ticks_per_rev;  // eq. 13
       m.dth = Around(r.gyro_dtheta, p.gyro_error);                           // eq. 10
     }
@@ -256,6 +275,18 @@ constexpr const char* kColumnNames[kNumColumns] = {
     "t",      "odo_left_ticks", "odo_right_ticks", "gyro_dtheta", "gps_x",      "gps_y",
     "gps_ex", "gps_ey",         "truth_x",         "truth_y",     "truth_theta"};
 constexpr int kFirstOptional = kTruthX;
+// Largest tick count change between two rows (README): far above any wheel
+// in 0.2 s, far below where the int64 difference overflows.
+constexpr std::int64_t kMaxTickStep = std::int64_t{1} << 31;
+// Physical bounds on the values (README): beyond them a value is a glitch,
+// and one such value corrupts the unwrapped heading of every later row.
+constexpr double kMaxTime = 1e12;      // s, about 31700 years
+constexpr double kMaxPosition = 1e9;   // m, for gps_x, gps_y, truth_x, truth_y
+constexpr double kMaxGpsError = 1e9;   // m, for gps_ex, gps_ey
+constexpr double kMaxAngle = 1e6;      // rad, for truth_theta and gyro_dtheta
+// Largest gap between the unwrapped truth heading's change and the gyro's
+// reading on consecutive rows: a real car's stays far below it.
+constexpr double kMaxHeadingMismatch = std::numbers::pi / 2;
 
 std::string_view Trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
@@ -293,13 +324,12 @@ class LogReader {
         continue;
       }
       records.push_back(ReadRow(text));
-      if (records.size() > 1 && !(records.back().t > records[records.size() - 2].t))
-        Fail("column 't': " + FormatDouble(records.back().t) + " is not after the previous row's " +
-             FormatDouble(records[records.size() - 2].t));
+      const CarTrackRecord* prev = records.size() > 1 ? &records[records.size() - 2] : nullptr;
+      if (prev) CheckStep(*prev, records.back());
+      UnwrapTruthHeading(prev, records.back());
     }
     if (!have_header) throw std::invalid_argument(source_ + ": no header line");
     if (records.empty()) throw std::invalid_argument(source_ + ": no data rows");
-    UnwrapTruthHeading(records);
     return records;
   }
 
@@ -333,12 +363,39 @@ class LogReader {
       Fail("header: truth_x, truth_y and truth_theta go together");
   }
 
+  // What the problem derives from two consecutive rows must be meaningful.
+  void CheckStep(const CarTrackRecord& prev, const CarTrackRecord& r) const {
+    if (!(r.t > prev.t))
+      Fail("column 't': " + FormatDouble(r.t) + " is not after the previous row's " +
+           FormatDouble(prev.t));
+    CheckTicks(kOdoLeft, prev.odo_left_ticks, r.odo_left_ticks);
+    CheckTicks(kOdoRight, prev.odo_right_ticks, r.odo_right_ticks);
+  }
+
+  // A wrapped or reset counter would overflow the int64 difference or give a
+  // displacement of kilometres in one step.
+  void CheckTicks(int column, std::int64_t prev, std::int64_t now) const {
+    std::int64_t diff = 0;
+    if (__builtin_sub_overflow(now, prev, &diff) || diff > kMaxTickStep || diff < -kMaxTickStep)
+      Fail(Where(column) + ": " + std::to_string(now) + " ticks after " + std::to_string(prev) +
+           " on the previous row: a step of more than 2^31 ticks (a wrapped or reset counter?)");
+  }
+
   std::string Where(int column) const {
     return "column " + std::to_string(position_[column] + 1) + " (" + kColumnNames[column] + ")";
   }
 
   std::string_view Field(int column) const {
     return position_[column] < 0 ? std::string_view() : fields_[position_[column]];
+  }
+
+  // Double(column) within [-limit, limit].
+  double Bounded(int column, double limit, const char* unit) const {
+    const double v = Double(column);
+    if (!(std::fabs(v) <= limit))
+      Fail(Where(column) + ": " + FormatDouble(v) + " is beyond +-" + FormatDouble(limit) + " " +
+           unit);
+    return v;
   }
 
   double Double(int column) const {
@@ -374,42 +431,50 @@ class LogReader {
       Fail(std::to_string(fields_.size()) + " fields, the header has " +
            std::to_string(names_.size()));
     CarTrackRecord r;
-    r.t = Double(kT);
+    r.t = Bounded(kT, kMaxTime, "s");
     r.odo_left_ticks = Integer(kOdoLeft);
     r.odo_right_ticks = Integer(kOdoRight);
-    r.gyro_dtheta = Double(kGyro);
+    r.gyro_dtheta = Bounded(kGyro, kMaxAngle, "rad");
     r.has_gps = Group({kGpsX, kGpsY, kGpsEx, kGpsEy}, "gps_x, gps_y, gps_ex, gps_ey");
     if (r.has_gps) {
-      r.gps_x = Double(kGpsX);
-      r.gps_y = Double(kGpsY);
-      r.gps_ex = Double(kGpsEx);
-      r.gps_ey = Double(kGpsEy);
+      r.gps_x = Bounded(kGpsX, kMaxPosition, "m");
+      r.gps_y = Bounded(kGpsY, kMaxPosition, "m");
+      r.gps_ex = Bounded(kGpsEx, kMaxGpsError, "m");
+      r.gps_ey = Bounded(kGpsEy, kMaxGpsError, "m");
       if (!(r.gps_ex > 0)) Fail(Where(kGpsEx) + ": " + FormatDouble(r.gps_ex) + " must be > 0");
       if (!(r.gps_ey > 0)) Fail(Where(kGpsEy) + ": " + FormatDouble(r.gps_ey) + " must be > 0");
     }
     r.has_truth = position_[kTruthX] >= 0 &&
                   Group({kTruthX, kTruthY, kTruthTheta}, "truth_x, truth_y, truth_theta");
     if (r.has_truth) {
-      r.truth_x = Double(kTruthX);
-      r.truth_y = Double(kTruthY);
-      r.truth_theta = Double(kTruthTheta);
+      r.truth_x = Bounded(kTruthX, kMaxPosition, "m");
+      r.truth_y = Bounded(kTruthY, kMaxPosition, "m");
+      r.truth_theta = Bounded(kTruthTheta, kMaxAngle, "rad");
     }
     return r;
   }
 
-  // The CSP carries the unwrapped heading from th[0] in [-pi, pi].
-  static void UnwrapTruthHeading(std::vector<CarTrackRecord>& records) {
+  // The CSP carries the unwrapped heading from th[0] in [-pi, pi]: r's is
+  // moved within pi of the previous known one. Where the previous row has a
+  // truth too, the change must agree with the gyro: a glitch that still lies
+  // within kMaxAngle would otherwise shift every later heading by 2 pi.
+  void UnwrapTruthHeading(const CarTrackRecord* prev, CarTrackRecord& r) {
+    if (!r.has_truth) return;
     const double two_pi = 2 * kPi;
-    bool first = true;
-    double previous = 0;
-    for (CarTrackRecord& r : records) {
-      if (!r.has_truth) continue;
-      const double turns = first ? std::ceil((r.truth_theta - kPi) / two_pi)
-                                 : std::round((r.truth_theta - previous) / two_pi);
-      if (turns != 0) r.truth_theta -= turns * two_pi;
-      previous = r.truth_theta;
-      first = false;
+    const double raw = r.truth_theta;
+    const double turns = !have_known_heading_
+                             ? std::ceil((raw - kPi) / two_pi)
+                             : std::round((raw - last_known_heading_) / two_pi);
+    if (turns != 0) r.truth_theta -= turns * two_pi;
+    if (prev && prev->has_truth) {
+      const double turn = r.truth_theta - prev->truth_theta;
+      if (!(std::fabs(turn - r.gyro_dtheta) <= kMaxHeadingMismatch))
+        Fail(Where(kTruthTheta) + ": " + FormatDouble(raw) + " turns the heading by " +
+             FormatDouble(turn) + " rad since the previous row (unwrapped) but the gyro by " +
+             FormatDouble(r.gyro_dtheta) + ": more than pi/2 apart");
     }
+    last_known_heading_ = r.truth_theta;
+    have_known_heading_ = true;
   }
 
   std::string source_;
@@ -417,6 +482,8 @@ class LogReader {
   std::array<int, kNumColumns> position_{};
   std::vector<std::string> names_;
   std::vector<std::string_view> fields_;
+  bool have_known_heading_ = false;
+  double last_known_heading_ = 0;
 };
 
 }  // namespace
@@ -426,6 +493,10 @@ std::vector<CarTrackRecord> ReadCarTrackLog(std::istream& in, const std::string&
 }
 
 std::vector<CarTrackRecord> ReadCarTrackLog(const std::string& path) {
+  // An ifstream opens a directory and then reads nothing ("no header line").
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw std::invalid_argument(path + ": is a directory, not a log file");
   std::ifstream in(path);
   if (!in) throw std::invalid_argument(path + ": cannot open the car-track log");
   return ReadCarTrackLog(in, path);

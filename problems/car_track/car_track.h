@@ -126,6 +126,9 @@ std::vector<CarTrackRecord> SimulateCarTrack(const CarTrackParams& params, std::
 // of fields. The first row's ticks and gyro_dtheta are only a reference.
 // truth_theta may be wrapped: each value is moved by a multiple of 2 pi to
 // lie within pi of the previous known one, the first into ]-pi, pi].
+// Non-physical values (bounds in problems/car_track/README.md: a tick step
+// over 2^31, |t| > 1e12 s, a position beyond 1e9 m, an angle beyond 1e6 rad,
+// a truth heading change more than pi/2 off the gyro's) are errors.
 // Throws std::invalid_argument naming the source, line and column.
 std::vector<CarTrackRecord> ReadCarTrackLog(std::istream& in, const std::string& source);
 std::vector<CarTrackRecord> ReadCarTrackLog(const std::string& path);

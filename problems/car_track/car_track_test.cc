@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <sstream>
 
@@ -398,6 +399,14 @@ TEST(CarTrackTest, BadLogsFailWithLineAndColumn) {
       {header + "0,0,0,0,,,\n", "log.csv:2: 7 fields, the header has 8"},
       {header + "0,0,0,0,,,,\n0,1,1,0,,,,\n", "log.csv:3: column 't': 0 is not after"},
       {header + ",0,0,0,,,,\n", "log.csv:2: column 1 (t): '' is not a finite"},
+      // A wrapped counter: the int64 difference would overflow.
+      {header + "0,9223372036854775807,0,0,,,,\n0.2,-9223372036854775808,0,0,,,,\n",
+       "log.csv:3: column 2 (odo_left_ticks): -9223372036854775808 ticks after "
+       "9223372036854775807 on the previous row: a step of more than 2^31 ticks"},
+      {header + "0,0,0,0,,,,\n0.2,0,2147483649,0,,,,\n",
+       "log.csv:3: column 3 (odo_right_ticks): 2147483649 ticks after 0"},
+      {header + "0,0,-5,0,,,,\n0.2,0,-2147483654,0,,,,\n",
+       "log.csv:3: column 3 (odo_right_ticks): -2147483654 ticks after -5"},
   };
   for (const Case& c : cases) {
     const std::string error = ErrorOf([&] { ReadLogText(c.text); });
@@ -405,6 +414,71 @@ TEST(CarTrackTest, BadLogsFailWithLineAndColumn) {
         << "log:\n"
         << c.text << "error: " << error << "\nexpected: " << c.message;
   }
+}
+
+TEST(CarTrackTest, NonPhysicalValuesFailWithLineAndColumn) {
+  const std::string header =
+      "t,odo_left_ticks,odo_right_ticks,gyro_dtheta,gps_x,gps_y,gps_ex,gps_ey,truth_x,truth_y,"
+      "truth_theta\n";
+  const std::pair<std::string, std::string> cases[] = {
+      {"1e13,0,0,0,,,,,,,\n", "log.csv:2: column 1 (t): 1e+13 is beyond +-1e+12 s"},
+      {"0,0,0,-2e6,,,,,,,\n", "log.csv:2: column 4 (gyro_dtheta): -2e+06 is beyond +-1e+06 rad"},
+      {"0,0,0,0,2e9,0,1,1,,,\n", "log.csv:2: column 5 (gps_x): 2e+09 is beyond +-1e+09 m"},
+      {"0,0,0,0,0,-2e9,1,1,,,\n", "log.csv:2: column 6 (gps_y): "},
+      {"0,0,0,0,0,0,1e10,1,,,\n", "log.csv:2: column 7 (gps_ex): 1e+10 is beyond"},
+      {"0,0,0,0,0,0,1,1e10,,,\n", "log.csv:2: column 8 (gps_ey): "},
+      {"0,0,0,0,,,,,1e300,0,0\n", "log.csv:2: column 9 (truth_x): 1e+300 is beyond"},
+      {"0,0,0,0,,,,,0,1e300,0\n", "log.csv:2: column 10 (truth_y): "},
+      {"0,0,0,0,,,,,0,0,0\n0.2,0,0,0,,,,,0,0,1e300\n",
+       "log.csv:3: column 11 (truth_theta): 1e+300 is beyond +-1e+06 rad"},
+      // Within the bound but 3 rad off the gyro's 0.
+      {"0,0,0,0,,,,,0,0,0\n0.2,0,0,0,,,,,0,0,3\n",
+       "log.csv:3: column 11 (truth_theta): 3 turns the heading by 3 rad since the previous row "
+       "(unwrapped) but the gyro by 0: more than pi/2 apart"},
+  };
+  for (const auto& [rows, message] : cases) {
+    const std::string error = ErrorOf([&] { ReadLogText(header + rows); });
+    EXPECT_NE(error.find(message), std::string::npos)
+        << "rows:\n" << rows << "error: " << error << "\nexpected: " << message;
+  }
+  // The bounds themselves are accepted.
+  EXPECT_EQ(ReadLogText(header + "1e12,0,0,-1e6,-1e9,1e9,1e9,1e9,1e9,-1e9,1e6\n").size(), 1u);
+  // One glitch in a simulated drive is caught on its own line, whether it is
+  // far out (it would corrupt every later unwrapped heading) or just wrong.
+  CarTrackParams p;
+  p.steps = 20;
+  for (const double glitch : {1e300, 2000 * kPi + 2, 2.0}) {
+    std::vector<CarTrackRecord> records = SimulateCarTrack(p, 1);
+    records[10].truth_theta += glitch;
+    std::ostringstream csv;
+    WriteCarTrackLog(records, csv);
+    const std::string error = ErrorOf([&] { ReadLogText(csv.str()); });
+    EXPECT_NE(error.find("log.csv:12: column 11 (truth_theta): "), std::string::npos)
+        << glitch << ": " << error;
+  }
+}
+
+TEST(CarTrackTest, TickCountsNeverOverflow) {
+  const std::string header =
+      "t,odo_left_ticks,odo_right_ticks,gyro_dtheta,gps_x,gps_y,gps_ex,gps_ey\n";
+  // 2^31 ticks in one step is the documented limit, near the int64 ends too.
+  EXPECT_EQ(ReadLogText(header + "0,9223372036854775807,-9223372036854775808,0,,,,\n"
+                                 "0.2,9223372034707292159,-9223372034707292160,0,,,,\n")
+                .size(),
+            2u);
+  // Records not read from a log: the difference is checked, not wrapped.
+  CarTrackParams p;
+  std::vector<CarTrackRecord> records(2);
+  records[1].t = 0.2;
+  records[0].odo_left_ticks = std::numeric_limits<std::int64_t>::max();
+  records[1].odo_left_ticks = std::numeric_limits<std::int64_t>::min();
+  const std::string error = ErrorOf([&] { MeasureCarTrack(p, records); });
+  EXPECT_NE(error.find("overflows a 64-bit difference"), std::string::npos) << error;
+  // A simulated count beyond int64 (a tiny wheel) is a parameter error.
+  EXPECT_THROW(Make({{"wheel_radius", "1e-12"}, {"radius_error", "0"}, {"ticks_per_rev", "1e9"},
+                     {"steps", "3"}},
+                    1),
+               ParamError);
 }
 
 TEST(CarTrackTest, RegistryRejectsBadParameters) {
@@ -426,6 +500,9 @@ TEST(CarTrackTest, RegistryRejectsBadParameters) {
   EXPECT_NE(missing.find("/nonexistent/log.csv: cannot open"), std::string::npos) << missing;
   EXPECT_THROW(info.resolve("car-track", {{"log", "/nonexistent/log.csv"}}),
                std::invalid_argument);
+  const std::string directory = ErrorOf([&] { info.resolve("car-track", {{"log", "/tmp"}}); });
+  EXPECT_NE(directory.find("/tmp: is a directory, not a log file"), std::string::npos)
+      << directory;
   EXPECT_EQ(info.make({{"steps", "30"}}, 1)->NumSteps(), 30);
   EXPECT_EQ(info.offers, std::vector<View>{View::kCsp});
   // The run key holds every effective parameter, in canonical spelling.
