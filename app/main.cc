@@ -69,6 +69,8 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--shard", shard, "run only share i of n (i/n, 0-based) of the matrix")
       ->capture_default_str();
   run_cmd->add_flag("--force", run.force, "rerun runs that are already stored");
+  run_cmd->add_flag("--no-retry", run.no_retry,
+                    "keep stored failed and timeout runs instead of retrying them");
 
   std::string merge_out;
   std::vector<std::string> merge_in;
@@ -130,14 +132,12 @@ int main(int argc, char** argv) {
         std::cout << file << "\n";
       for (const std::string& m : messages) std::cerr << "icpbench: " << m << "\n";
     } else if (*merge_cmd) {
-      std::filesystem::create_directories(merge_out);
-      icp::ResultsStore out(icp::StorePath(merge_out));
-      for (const std::string& dir : merge_in) {
-        if (!std::filesystem::exists(icp::StorePath(dir)))
-          throw std::invalid_argument("merge: no results store in " + dir);
-        const int n = out.MergeFrom(icp::StorePath(dir));
-        std::cerr << "icpbench: merged " << n << " runs from " << dir << "\n";
-      }
+      // Validates every input, then writes OUT in one rename (MergeStores).
+      const icp::MergeSummary m = icp::MergeStores(merge_out, merge_in);
+      for (std::size_t i = 0; i < merge_in.size(); ++i)
+        std::cerr << "icpbench: merged " << m.from_input[i] << " runs from " << merge_in[i] << "\n";
+      if (!m.ConflictMessage().empty()) std::cerr << "icpbench: " << m.ConflictMessage() << "\n";
+      std::cerr << "icpbench: " << m.runs << " runs in " << icp::StorePath(merge_out) << "\n";
     }
   } catch (const std::invalid_argument& e) {  // ParamError, unknown names, options
     std::cerr << "icpbench: " << e.what() << "\n";

@@ -1,14 +1,17 @@
 #include "harness/results_store.h"
 
 #include <sqlite3.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <string_view>
+#include <set>
 #include <system_error>
 #include <unordered_map>
 #include <type_traits>
@@ -19,7 +22,7 @@ namespace icp {
 
 namespace {
 
-constexpr int kSchemaVersion = 2;
+constexpr int kSchemaVersion = 3;
 constexpr int kBusyTimeoutMs = 30000;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -32,7 +35,8 @@ constexpr const char* kConventions =
     "(box, paving, accumulator, particles); step_properties and run_properties hold what an "
     "estimator reports beyond the typed columns, as (name, type, value) with type int, real or "
     "text and value of that SQL type; *_params hold the effective parameters (defaults "
-    "resolved), as the run key does.";
+    "resolved), as the run key does; attempts holds the summary of each replaced run row "
+    "(attempt 1, 2, ... per run_key), the row in runs being the newest or merge-preferred one.";
 
 constexpr const char* kSchema = R"sql(
 CREATE TABLE IF NOT EXISTS meta (
@@ -110,6 +114,23 @@ CREATE TABLE IF NOT EXISTS run_properties (
   type TEXT NOT NULL,
   value,
   PRIMARY KEY (run_id, name)
+) WITHOUT ROWID;
+)sql";
+
+// Table added by version 3; also the migration of a version-2 store.
+constexpr const char* kAttemptsSchema = R"sql(
+CREATE TABLE IF NOT EXISTS attempts (
+  run_key TEXT NOT NULL,
+  attempt INTEGER NOT NULL,
+  status TEXT,
+  reason TEXT,
+  wall_time_s REAL,
+  timeout_s REAL,
+  steps INTEGER,
+  date TEXT,
+  git_revision TEXT,
+  machine TEXT,
+  PRIMARY KEY (run_key, attempt)
 ) WITHOUT ROWID;
 )sql";
 
@@ -225,9 +246,11 @@ sqlite3* Open(const std::string& path, int flags) {
   return db;
 }
 
-// Checks that db is an icpbench store of this schema version; with
-// may_create, makes an empty file (or one without tables) into one.
-void CheckOrCreateSchema(sqlite3* db, const std::string& path, bool may_create) {
+// Checks that db is an icpbench store and returns its schema version. With
+// may_create (a writer), makes an empty file (or one without tables) into a
+// store and migrates an older version to this one; without (a reader),
+// accepts versions 1 to kSchemaVersion as they are.
+int CheckOrCreateSchema(sqlite3* db, const std::string& path, bool may_create) {
   auto has_meta = [&] {
     Statement q(db, path, "SELECT count(*) FROM sqlite_master WHERE type='table' AND name='meta'");
     q.Step();
@@ -242,35 +265,45 @@ void CheckOrCreateSchema(sqlite3* db, const std::string& path, bool may_create) 
     Statement q(db, path, "SELECT value FROM meta WHERE key='schema_version'");
     return q.Step() ? q.ColumnText(0) : std::string();
   };
-  auto check_version = [&] {
+  auto set_version = [&](int v) {
+    Statement update(db, path, "UPDATE meta SET value = ? WHERE key = 'schema_version'");
+    update.Text(1, std::to_string(v));
+    update.Run();
+    Statement conventions(db, path, "UPDATE meta SET value = ? WHERE key = 'conventions'");
+    conventions.Text(1, kConventions);
+    conventions.Run();
+  };
+  auto check_version = [&]() -> int {
     const std::string v = version();
-    if (v == "1" && may_create) {
-      // Version 1 lacks the estimate kind and the open properties; its runs
-      // keep their keys (typed parameters), so a rerun of their spec, now
-      // keyed on effective parameters, runs them again.
+    if (may_create && (v == "1" || v == "2")) {
+      // One transaction for the whole chain, so a reader never sees a half
+      // migrated store.
       InTransaction(db, path, [&] {
-        if (version() != "1") return;  // another process migrated it meanwhile
-        Exec(db, path, "ALTER TABLE steps ADD COLUMN estimate TEXT");
-        Exec(db, path, kPropertiesSchema);
-        Exec(db, path, "UPDATE meta SET value = '2' WHERE key = 'schema_version'");
-        Statement conventions(db, path, "UPDATE meta SET value = ? WHERE key = 'conventions'");
-        conventions.Text(1, kConventions);
-        conventions.Run();
+        if (version() == "1") {
+          // Version 1 lacks the estimate kind and the open properties; its
+          // runs keep their keys (typed parameters), so a rerun of their
+          // spec, now keyed on effective parameters, runs them again.
+          Exec(db, path, "ALTER TABLE steps ADD COLUMN estimate TEXT");
+          Exec(db, path, kPropertiesSchema);
+          set_version(2);
+        }
+        if (version() == "2") {
+          // Version 2 kept no record of replaced runs.
+          Exec(db, path, kAttemptsSchema);
+          set_version(3);
+        }
       });
-      return;
+      return kSchemaVersion;
     }
-    if (version() != std::to_string(kSchemaVersion)) {
-      throw StoreError("results store '" + path + "': schema version '" + v +
-                       "', this build reads version " + std::to_string(kSchemaVersion) +
-                       (v == "1" ? " (a version-1 store is migrated when opened for writing)"
-                                 : " and migrates version 1"));
+    for (int known = 1; known <= kSchemaVersion; ++known) {
+      if (v == std::to_string(known) && (known == kSchemaVersion || !may_create)) return known;
     }
+    throw StoreError("results store '" + path + "': schema version '" + v +
+                     "', this build reads versions 1 to " + std::to_string(kSchemaVersion) +
+                     " (older ones are migrated when opened for writing)");
   };
   // Reading the catalogue is also what reports "file is not a database".
-  if (has_meta()) {
-    check_version();
-    return;
-  }
+  if (has_meta()) return check_version();
   auto not_a_store = [&] {
     return StoreError("results store '" + path + "': not an icpbench results store (no meta table)");
   };
@@ -280,6 +313,7 @@ void CheckOrCreateSchema(sqlite3* db, const std::string& path, bool may_create) 
     if (table_count() > 0) throw not_a_store();
     Exec(db, path, kSchema);
     Exec(db, path, kPropertiesSchema);
+    Exec(db, path, kAttemptsSchema);
     Statement insert(db, path, "INSERT INTO meta(key, value) VALUES (?, ?)");
     const std::pair<const char*, std::string> rows[] = {
         {"schema_version", std::to_string(kSchemaVersion)},
@@ -293,7 +327,7 @@ void CheckOrCreateSchema(sqlite3* db, const std::string& path, bool may_create) 
       insert.Reset();
     }
   });
-  check_version();
+  return check_version();
 }
 
 std::string ParamsToJson(const ParamMap& params, const std::string& path) {
@@ -390,15 +424,84 @@ Property ReadProperty(const Statement& q, int i) {
   return p;
 }
 
-// Writes one run with its steps, replacing a run with the same key. Runs
+// Appends a.* as the key's next attempt (a.attempt is ignored). Runs inside
+// the caller's transaction.
+void AddAttempt(sqlite3* db, const std::string& path, const Attempt& a) {
+  Statement q(db, path,
+              "INSERT INTO attempts (run_key, attempt, status, reason, wall_time_s, timeout_s, "
+              "steps, date, git_revision, machine) VALUES (?1, (SELECT coalesce(max(attempt), 0) "
+              "+ 1 FROM attempts WHERE run_key = ?1), ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9)");
+  q.Text(1, a.run_key);
+  q.Text(2, ToString(a.status));
+  q.Text(3, a.reason);
+  q.Double(4, a.wall_time_s);
+  q.Double(5, a.timeout_s);
+  q.Int(6, a.steps);
+  q.Text(7, a.date);
+  q.Text(8, a.git_revision);
+  q.Text(9, a.machine);
+  q.Run();
+}
+
+// The summary of a run, as an attempt.
+Attempt AttemptOf(const RunRecord& run) {
+  Attempt a;
+  a.run_key = run.spec.Key();
+  a.status = run.status;
+  a.reason = run.reason;
+  a.wall_time_s = run.wall_time_s;
+  a.timeout_s = run.spec.timeout_s;
+  a.steps = run.metrics.steps;
+  a.date = run.provenance.date;
+  a.git_revision = run.provenance.git_revision;
+  a.machine = run.provenance.machine;
+  return a;
+}
+
+// The summary of the stored run with this key, and its id; nullopt if none.
+std::optional<std::pair<std::int64_t, Attempt>> StoredSummary(sqlite3* db, const std::string& path,
+                                                              const std::string& key) {
+  Statement find(db, path,
+                 "SELECT id, status, reason, wall_time_s, timeout_s, steps, date, git_revision, "
+                 "machine FROM runs WHERE key = ?");
+  find.Text(1, key);
+  if (!find.Step()) return std::nullopt;
+  Attempt a;
+  a.run_key = key;
+  try {
+    a.status = ParseRunStatus(find.ColumnText(1));
+  } catch (const std::invalid_argument& e) {
+    throw StoreError("results store '" + path + "': run '" + key + "': " + e.what());
+  }
+  a.reason = find.ColumnText(2);
+  a.wall_time_s = find.ColumnDouble(3);
+  a.timeout_s = find.ColumnDouble(4);
+  a.steps = static_cast<int>(find.ColumnInt(5));
+  a.date = find.ColumnText(6);
+  a.git_revision = find.ColumnText(7);
+  a.machine = find.ColumnText(8);
+  return std::make_pair(find.ColumnInt(0), a);
+}
+
+// Whether two summaries are one measurement (the attempt number aside): a
+// merge records a dropped copy only if it is not a duplicate of one kept.
+bool SameMeasurement(const Attempt& a, const Attempt& b) {
+  auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
+  return a.run_key == b.run_key && a.status == b.status && a.reason == b.reason &&
+         same(a.wall_time_s, b.wall_time_s) && same(a.timeout_s, b.timeout_s) &&
+         a.steps == b.steps && a.date == b.date && a.git_revision == b.git_revision &&
+         a.machine == b.machine;
+}
+
+// Writes one run with its steps, replacing a run with the same key (whose
+// summary goes to attempts first, so no measurement vanishes silently). Runs
 // inside the caller's transaction.
 void WriteRun(sqlite3* db, const std::string& path, const RunRecord& run) {
   const std::string key = run.spec.Key();
   {
-    Statement find(db, path, "SELECT id FROM runs WHERE key = ?");
-    find.Text(1, key);
-    if (find.Step()) {
-      const std::int64_t old_id = find.ColumnInt(0);
+    if (auto stored = StoredSummary(db, path, key)) {
+      const std::int64_t old_id = stored->first;
+      AddAttempt(db, path, stored->second);
       for (const char* sql : {"DELETE FROM step_values WHERE run_id = ?",
                               "DELETE FROM step_properties WHERE run_id = ?",
                               "DELETE FROM run_properties WHERE run_id = ?",
@@ -503,7 +606,9 @@ void WriteRun(sqlite3* db, const std::string& path, const RunRecord& run) {
 }
 
 // Every run, in insertion order, with one query per table.
-std::vector<RunRecord> ReadRuns(sqlite3* db, const std::string& path, bool with_steps) {
+// A version-1 store (read-only) has no estimate column and no properties.
+std::vector<RunRecord> ReadRuns(sqlite3* db, const std::string& path, int version,
+                                bool with_steps) {
   std::vector<RunRecord> runs;
   std::unordered_map<std::int64_t, std::size_t> index_of;  // runs.id -> index in runs
   {
@@ -553,8 +658,9 @@ std::vector<RunRecord> ReadRuns(sqlite3* db, const std::string& path, bool with_
 
   {
     Statement q(db, path,
-                "SELECT run_id, step, status, contained, area, centre_error, solve_time_s, "
-                "estimate FROM steps ORDER BY run_id, step");
+                std::string("SELECT run_id, step, status, contained, area, centre_error, "
+                            "solve_time_s, ") +
+                    (version >= 2 ? "estimate" : "NULL") + " FROM steps ORDER BY run_id, step");
     RunRecord* run = nullptr;
     std::int64_t run_id = 0;
     while (q.Step()) {
@@ -607,6 +713,7 @@ std::vector<RunRecord> ReadRuns(sqlite3* db, const std::string& path, bool with_
       step->vars.push_back(std::move(v));
     }
   }
+  if (version < 2) return runs;
   {
     Statement q(db, path, "SELECT run_id, name, type, value FROM run_properties ORDER BY run_id, name");
     while (q.Step()) {
@@ -631,7 +738,104 @@ std::vector<RunRecord> ReadRuns(sqlite3* db, const std::string& path, bool with_
   return runs;
 }
 
+// The attempts table, by key then attempt (none before version 3).
+std::vector<Attempt> ReadAttempts(sqlite3* db, const std::string& path, int version) {
+  std::vector<Attempt> attempts;
+  if (version < 3) return attempts;
+  Statement q(db, path,
+              "SELECT run_key, attempt, status, reason, wall_time_s, timeout_s, steps, date, "
+              "git_revision, machine FROM attempts ORDER BY run_key, attempt");
+  while (q.Step()) {
+    Attempt a;
+    a.run_key = q.ColumnText(0);
+    a.attempt = static_cast<int>(q.ColumnInt(1));
+    try {
+      a.status = ParseRunStatus(q.ColumnText(2));
+    } catch (const std::invalid_argument& e) {
+      throw StoreError("results store '" + path + "': attempt of '" + a.run_key + "': " + e.what());
+    }
+    a.reason = q.ColumnText(3);
+    a.wall_time_s = q.ColumnDouble(4);
+    a.timeout_s = q.ColumnDouble(5);
+    a.steps = static_cast<int>(q.ColumnInt(6));
+    a.date = q.ColumnText(7);
+    a.git_revision = q.ColumnText(8);
+    a.machine = q.ColumnText(9);
+    attempts.push_back(std::move(a));
+  }
+  return attempts;
+}
+
+// Runs body inside one read transaction (one snapshot for all its queries).
+template <class Body>
+void InReadTransaction(sqlite3* db, const std::string& path, Body&& body) {
+  Exec(db, path, "BEGIN");
+  try {
+    body();
+    Exec(db, path, "COMMIT");
+  } catch (...) {
+    sqlite3_exec(db, "ROLLBACK", nullptr, nullptr, nullptr);
+    throw;
+  }
+}
+
+// Opens an existing store file for reading only. Without a -wal file no
+// writer has the store open, so it is opened immutable: SQLite then creates
+// no -wal/-shm files (a plain read-only open of a WAL file does, and cannot
+// on a read-only directory). With one, a sweep may be writing: a plain
+// read-only open shares its WAL index.
+sqlite3* OpenExistingReadOnly(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) {
+    throw StoreError("results store '" + path + "': no such file");
+  }
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw StoreError("results store '" + path + "': not a regular file");
+  }
+  if (std::filesystem::file_size(path, ec) == 0) {
+    throw StoreError("results store '" + path + "': empty file (0 bytes), not a results store");
+  }
+  if (std::filesystem::exists(path + "-wal", ec)) return Open(path, SQLITE_OPEN_READONLY);
+  std::string uri = "file:";
+  for (char c : std::filesystem::absolute(path, ec).string()) {
+    // Percent-encode what a URI path cannot hold literally.
+    if (c == '%' || c == '?' || c == '#') {
+      static const char kHex[] = "0123456789ABCDEF";
+      uri += '%';
+      uri += kHex[(static_cast<unsigned char>(c) >> 4) & 15];
+      uri += kHex[static_cast<unsigned char>(c) & 15];
+    } else {
+      uri += c;
+    }
+  }
+  uri += "?immutable=1";
+  sqlite3* db = nullptr;
+  if (sqlite3_open_v2(uri.c_str(), &db, SQLITE_OPEN_READONLY | SQLITE_OPEN_URI, nullptr) !=
+      SQLITE_OK) {
+    std::string message = db != nullptr ? sqlite3_errmsg(db) : "out of memory";
+    sqlite3_close_v2(db);
+    throw StoreError("results store '" + path + "': cannot open read-only: " + message);
+  }
+  sqlite3_extended_result_codes(db, 1);
+  sqlite3_busy_timeout(db, kBusyTimeoutMs);
+  return db;
+}
+
+// Rank for PreferredOver: a finished measurement beats a deterministic skip,
+// which beats a run that did not finish.
+int Rank(RunStatus s) {
+  switch (s) {
+    case RunStatus::kOk: return 2;
+    case RunStatus::kSkipped: return 1;
+    case RunStatus::kFailed:
+    case RunStatus::kTimeout: return 0;
+  }
+  return 0;
+}
+
 }  // namespace
+
+bool PreferredOver(RunStatus a, RunStatus b) { return Rank(a) > Rank(b); }
 
 ResultsStore::ResultsStore(const std::string& path) : path_(path) {
   db_ = Open(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
@@ -647,12 +851,27 @@ ResultsStore::ResultsStore(const std::string& path) : path_(path) {
                        "')");
     }
     Exec(db_, path_, "PRAGMA foreign_keys=ON");
-    CheckOrCreateSchema(db_, path_, /*may_create=*/true);
+    version_ = CheckOrCreateSchema(db_, path_, /*may_create=*/true);
   } catch (...) {
     sqlite3_close_v2(db_);
     db_ = nullptr;
     throw;
   }
+}
+
+ResultsStore::ResultsStore(const std::string& path, ReadOnlyTag) : path_(path), read_only_(true) {
+  db_ = OpenExistingReadOnly(path);
+  try {
+    version_ = CheckOrCreateSchema(db_, path_, /*may_create=*/false);
+  } catch (...) {
+    sqlite3_close_v2(db_);
+    db_ = nullptr;
+    throw;
+  }
+}
+
+std::unique_ptr<ResultsStore> ResultsStore::OpenReadOnly(const std::string& path) {
+  return std::unique_ptr<ResultsStore>(new ResultsStore(path, ReadOnlyTag{}));
 }
 
 ResultsStore::~ResultsStore() { sqlite3_close_v2(db_); }
@@ -672,55 +891,193 @@ bool ResultsStore::HasRun(const std::string& key) const {
   return q.Step();
 }
 
+std::vector<StoredRun> ResultsStore::StoredRuns() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<StoredRun> runs;
+  Statement q(db_, path_, "SELECT key, status FROM runs ORDER BY id");
+  while (q.Step()) {
+    StoredRun r{q.ColumnText(0), RunStatus::kOk};
+    try {
+      r.status = ParseRunStatus(q.ColumnText(1));
+    } catch (const std::invalid_argument& e) {
+      throw StoreError("results store '" + path_ + "': run '" + r.key + "': " + e.what());
+    }
+    runs.push_back(std::move(r));
+  }
+  return runs;
+}
+
 void ResultsStore::Insert(const RunRecord& run) {
+  if (read_only_) throw StoreError("results store '" + path_ + "': opened read-only");
   std::lock_guard<std::mutex> lock(mutex_);
   InTransaction(db_, path_, [&] { WriteRun(db_, path_, run); });
+}
+
+std::vector<Attempt> ResultsStore::Attempts() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return ReadAttempts(db_, path_, version_);
 }
 
 std::vector<RunRecord> ResultsStore::LoadRuns(bool with_steps) const {
   std::lock_guard<std::mutex> lock(mutex_);
   std::vector<RunRecord> runs;
-  // One read transaction, so the three queries see the same snapshot.
-  Exec(db_, path_, "BEGIN");
-  try {
-    runs = ReadRuns(db_, path_, with_steps);
-    Exec(db_, path_, "COMMIT");
-  } catch (...) {
-    sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
-    throw;
-  }
+  InReadTransaction(db_, path_, [&] { runs = ReadRuns(db_, path_, version_, with_steps); });
   return runs;
 }
 
 int ResultsStore::MergeFrom(const std::string& other_path) {
+  if (read_only_) throw StoreError("results store '" + path_ + "': opened read-only");
   std::vector<RunRecord> others;
   {
-    sqlite3* other = Open(other_path, SQLITE_OPEN_READONLY);
-    try {
-      CheckOrCreateSchema(other, other_path, /*may_create=*/false);
-      Exec(other, other_path, "BEGIN");
-      others = ReadRuns(other, other_path, /*with_steps=*/true);
-      Exec(other, other_path, "COMMIT");
-    } catch (...) {
-      sqlite3_close_v2(other);
-      throw;
-    }
-    sqlite3_close_v2(other);
+    std::unique_ptr<ResultsStore> other = OpenReadOnly(other_path);
+    others = other->LoadRuns(/*with_steps=*/true);
   }
   std::lock_guard<std::mutex> lock(mutex_);
   int copied = 0;
   InTransaction(db_, path_, [&] {
-    Statement has(db_, path_, "SELECT 1 FROM runs WHERE key = ?");
     for (const RunRecord& run : others) {
-      has.Text(1, run.spec.Key());
-      const bool present = has.Step();
-      has.Reset();
-      if (present) continue;
-      WriteRun(db_, path_, run);
+      if (auto here = StoredSummary(db_, path_, run.spec.Key())) {
+        if (!PreferredOver(run.status, here->second.status)) {
+          // The dropped copy is kept as an attempt, unless it is this very run.
+          const Attempt dropped = AttemptOf(run);
+          if (!SameMeasurement(dropped, here->second)) AddAttempt(db_, path_, dropped);
+          continue;
+        }
+      }
+      WriteRun(db_, path_, run);  // a replaced copy goes to attempts
       ++copied;
     }
   });
   return copied;
+}
+
+std::string MergeSummary::ConflictMessage() const {
+  if (duplicates == 0) return "";
+  std::string m = "merge: " + std::to_string(duplicates) + " conflicting key" +
+                  (duplicates == 1 ? "" : "s") + ":";
+  const char* sep = " ";
+  for (const auto& [statuses, n] : kept_over) {
+    m += sep + std::string("kept ") + std::string(ToString(statuses.first)) + " over " +
+         std::string(ToString(statuses.second)) + " for " + std::to_string(n);
+    sep = ", ";
+  }
+  if (equal_kept_first > 0) {
+    m += sep + std::string("kept the first of equal-status copies for ") +
+         std::to_string(equal_kept_first);
+  }
+  return m + " (dropped copies are in table attempts)";
+}
+
+MergeSummary MergeStores(const std::string& out_dir, const std::vector<std::string>& in_dirs) {
+  namespace fs = std::filesystem;
+  const std::string out_path = StorePath(out_dir);
+  // Read everything first: a missing or bad input fails before OUT is touched.
+  struct Input {
+    std::vector<RunRecord> runs;
+    std::vector<Attempt> attempts;
+  };
+  std::vector<Input> inputs;
+  std::error_code ec;
+  const bool out_exists = fs::exists(out_path, ec);
+  std::vector<std::string> sources;
+  if (out_exists) sources.push_back(out_path);
+  for (const std::string& dir : in_dirs) sources.push_back(StorePath(dir));
+  for (const std::string& source : sources) {
+    std::unique_ptr<ResultsStore> store = ResultsStore::OpenReadOnly(source);
+    Input input;
+    input.runs = store->LoadRuns(/*with_steps=*/true);
+    input.attempts = store->Attempts();
+    inputs.push_back(std::move(input));
+  }
+
+  // Per key the preferred copy, among equals the first; drops become attempts.
+  MergeSummary summary;
+  summary.from_input.assign(in_dirs.size(), 0);
+  struct Chosen {
+    const RunRecord* run;
+    std::size_t input;
+    std::set<RunStatus> dropped;
+    bool equal = false;
+  };
+  std::vector<std::string> order;  // keys in first-seen order
+  std::unordered_map<std::string, Chosen> chosen;
+  std::vector<Attempt> attempts;
+  std::unordered_map<std::string, std::vector<std::size_t>> attempts_of;  // key -> indices
+  // A copy of one measurement (a store merged twice, overlapping shards) is
+  // recorded once.
+  auto add_attempt = [&](const Attempt& a) {
+    std::vector<std::size_t>& same_key = attempts_of[a.run_key];
+    for (std::size_t j : same_key) {
+      if (SameMeasurement(a, attempts[j])) return;
+    }
+    same_key.push_back(attempts.size());
+    attempts.push_back(a);
+  };
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    for (const Attempt& a : inputs[i].attempts) add_attempt(a);
+    for (const RunRecord& run : inputs[i].runs) {
+      const std::string key = run.spec.Key();
+      auto [it, inserted] = chosen.try_emplace(key, Chosen{&run, i, {}, false});
+      if (inserted) {
+        order.push_back(key);
+        continue;
+      }
+      Chosen& c = it->second;
+      if (PreferredOver(run.status, c.run->status)) {
+        add_attempt(AttemptOf(*c.run));
+        c.dropped.insert(c.run->status);
+        c.run = &run;
+        c.input = i;
+      } else if (!SameMeasurement(AttemptOf(run), AttemptOf(*c.run))) {
+        // A copy of the very same measurement is no conflict.
+        add_attempt(AttemptOf(run));
+        if (run.status == c.run->status) c.equal = true;
+        else c.dropped.insert(run.status);
+      }
+    }
+  }
+  for (const std::string& key : order) {
+    const Chosen& c = chosen.at(key);
+    if (c.dropped.empty() && !c.equal) continue;
+    ++summary.duplicates;
+    if (c.dropped.empty()) ++summary.equal_kept_first;
+    for (RunStatus d : c.dropped) ++summary.kept_over[{c.run->status, d}];
+  }
+
+  // Write a temporary store beside OUT and rename it over OUT at the end.
+  fs::create_directories(out_dir);
+  const std::string tmp_path =
+      out_path + ".merge-" + std::to_string(static_cast<long long>(getpid())) + ".tmp";
+  auto remove_tmp = [&] {
+    for (const char* suffix : {"", "-wal", "-shm", "-journal"}) fs::remove(tmp_path + suffix, ec);
+  };
+  remove_tmp();
+  try {
+    {
+      ResultsStore out(tmp_path);
+      std::lock_guard<std::mutex> lock(out.mutex_);
+      InTransaction(out.db_, tmp_path, [&] {
+        for (const std::string& key : order) {
+          const Chosen& c = chosen.at(key);
+          WriteRun(out.db_, tmp_path, *c.run);
+          if (c.input >= (out_exists ? 1u : 0u)) ++summary.from_input[c.input - (out_exists ? 1 : 0)];
+          ++summary.runs;
+        }
+        for (const Attempt& a : attempts) AddAttempt(out.db_, tmp_path, a);
+      });
+      // Fold the WAL into the file and leave WAL mode, so the rename moves
+      // one complete file and no -wal is left behind under the old name.
+      Exec(out.db_, tmp_path, "PRAGMA journal_mode=DELETE");
+    }
+    // The old OUT was read above; stale side files must not be replayed
+    // into the new one.
+    for (const char* suffix : {"-wal", "-shm"}) fs::remove(out_path + suffix, ec);
+    fs::rename(tmp_path, out_path);
+  } catch (...) {
+    remove_tmp();
+    throw;
+  }
+  return summary;
 }
 
 std::string StorePath(const std::string& out_dir) { return out_dir + "/results.sqlite"; }

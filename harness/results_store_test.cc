@@ -13,7 +13,11 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
+#include <map>
+#include <memory>
+#include <utility>
 #include <string>
 #include <thread>
 #include <vector>
@@ -262,7 +266,7 @@ TEST(ResultsStoreTest, FileIsSelfDescribingWithTypedColumns) {
     ResultsStore store(path);
     store.Insert(MakeRun(2, 10));
   }
-  EXPECT_EQ(RawQuery(path, "SELECT value FROM meta WHERE key='schema_version'"), "2");
+  EXPECT_EQ(RawQuery(path, "SELECT value FROM meta WHERE key='schema_version'"), "3");
   EXPECT_EQ(RawQuery(path, "PRAGMA journal_mode"), "wal");
   EXPECT_EQ(RawQuery(path, "SELECT typeof(seed) || typeof(timeout_s) || typeof(wall_time_s) FROM runs"),
             "integerrealreal");
@@ -286,10 +290,9 @@ TEST(ResultsStoreTest, FileIsSelfDescribingWithTypedColumns) {
   EXPECT_EQ(RawQuery(path, "SELECT estimate FROM steps WHERE step = 1"), "paving");
 }
 
-// A store written by schema version 1 (no estimate kind, no properties) is
-// migrated when opened: its runs load, new runs with properties go in.
-TEST(ResultsStoreTest, MigratesAVersionOneStore) {
-  const std::string path = FreshPath("v1");
+// Writes a store as schema version 1 wrote it (no estimate kind, no
+// properties): one run 'hc4{}|chain{}|seed=1' of one step.
+void WriteVersionOneStore(const std::string& path) {
   sqlite3* db = nullptr;
   ASSERT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
   const char* v1 = R"sql(
@@ -315,6 +318,13 @@ INSERT INTO step_values VALUES (1, 0, 0, 'x', -1, 1, 0);
 )sql";
   ASSERT_EQ(sqlite3_exec(db, v1, nullptr, nullptr, nullptr), SQLITE_OK) << sqlite3_errmsg(db);
   sqlite3_close(db);
+}
+
+// A store written by schema version 1 (no estimate kind, no properties) is
+// migrated when opened: its runs load, new runs with properties go in.
+TEST(ResultsStoreTest, MigratesAVersionOneStore) {
+  const std::string path = FreshPath("v1");
+  WriteVersionOneStore(path);
   {
     ResultsStore store(path);
     const std::vector<RunRecord> runs = store.LoadRuns(true);
@@ -326,8 +336,10 @@ INSERT INTO step_values VALUES (1, 0, 0, 'x', -1, 1, 0);
     store.Insert(MakeRun(1, 5));
     ASSERT_EQ(store.LoadRuns(true).size(), 2u);
     ExpectSameRun(MakeRun(1, 5), store.LoadRuns(true)[1], true);
+    EXPECT_TRUE(store.Attempts().empty());
   }
-  EXPECT_EQ(RawQuery(path, "SELECT value FROM meta WHERE key='schema_version'"), "2");
+  EXPECT_EQ(RawQuery(path, "SELECT value FROM meta WHERE key='schema_version'"), "3");
+  EXPECT_EQ(RawQuery(path, "SELECT count(*) FROM attempts"), "0");
 }
 
 TEST(ResultsStoreTest, SameKeyReplacesTheRun) {
@@ -565,6 +577,296 @@ TEST(ResultsStoreTest, LoadsALargeStore) {
     EXPECT_EQ(loaded[i].steps[1999].vars[2].name, "theta");
   }
   ExpectSameRun(MakeRun(19, 2000), loaded[19], true);
+}
+
+
+// A replaced run (retry, --force) leaves its summary in attempts, numbered
+// per key in the order of replacement.
+TEST(ResultsStoreTest, ReplacedRunsAreKeptAsAttempts) {
+  const std::string path = FreshPath("attempts");
+  ResultsStore store(path);
+  RunRecord first = MakeRun(3, 4);  // i % 4 == 3: a timeout
+  first.provenance.date = "2026-01-01T00:00:00Z";
+  first.provenance.git_revision = "aaaa";
+  ASSERT_EQ(first.status, RunStatus::kTimeout);
+  store.Insert(first);
+  EXPECT_TRUE(store.Attempts().empty());
+  RunRecord second = first;
+  second.status = RunStatus::kFailed;
+  second.reason = "worker killed by signal 9";
+  second.provenance.date = "2026-01-02T00:00:00Z";
+  store.Insert(second);
+  RunRecord third = first;
+  third.status = RunStatus::kOk;
+  third.reason = "";
+  store.Insert(third);
+  store.Insert(MakeRun(1, 4));  // another key: no attempt
+
+  const std::vector<Attempt> attempts = store.Attempts();
+  ASSERT_EQ(attempts.size(), 2u);
+  EXPECT_EQ(attempts[0].run_key, first.spec.Key());
+  EXPECT_EQ(attempts[0].attempt, 1);
+  EXPECT_EQ(attempts[0].status, RunStatus::kTimeout);
+  EXPECT_EQ(attempts[0].reason, first.reason);
+  EXPECT_EQ(attempts[0].wall_time_s, first.wall_time_s);
+  EXPECT_EQ(attempts[0].timeout_s, first.spec.timeout_s);
+  EXPECT_EQ(attempts[0].steps, 4);
+  EXPECT_EQ(attempts[0].date, "2026-01-01T00:00:00Z");
+  EXPECT_EQ(attempts[0].git_revision, "aaaa");
+  EXPECT_EQ(attempts[1].attempt, 2);
+  EXPECT_EQ(attempts[1].status, RunStatus::kFailed);
+  EXPECT_EQ(attempts[1].reason, "worker killed by signal 9");
+  const std::vector<StoredRun> runs = store.StoredRuns();
+  ASSERT_EQ(runs.size(), 2u);
+  EXPECT_EQ(runs[0].key, first.spec.Key());
+  EXPECT_EQ(runs[0].status, RunStatus::kOk);  // the newest attempt is the run
+  EXPECT_EQ(RawQuery(path, "SELECT count(*) FROM attempts"), "2");
+}
+
+// A version-2 store (no attempts table) is migrated to version 3.
+TEST(ResultsStoreTest, MigratesAVersionTwoStore) {
+  const std::string path = FreshPath("v2");
+  {
+    ResultsStore store(path);
+    store.Insert(MakeRun(3, 4));
+  }
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(db,
+                         "DROP TABLE attempts; UPDATE meta SET value='2' WHERE key='schema_version'",
+                         nullptr, nullptr, nullptr),
+            SQLITE_OK);
+  sqlite3_close(db);
+  {
+    ResultsStore store(path);
+    EXPECT_EQ(store.schema_version(), 3);
+    RunRecord retry = MakeRun(3, 4);
+    retry.status = RunStatus::kOk;
+    store.Insert(retry);
+    ASSERT_EQ(store.Attempts().size(), 1u);
+    EXPECT_EQ(store.Attempts()[0].status, RunStatus::kTimeout);
+  }
+  EXPECT_EQ(RawQuery(path, "SELECT value FROM meta WHERE key='schema_version'"), "3");
+}
+
+// MergeFrom prefers an ok copy over a timeout one, whichever store has it.
+TEST(ResultsStoreTest, MergeFromPrefersOkOverTimeout) {
+  const std::string path_a = FreshPath("merge_pref_a");
+  const std::string path_b = FreshPath("merge_pref_b");
+  RunRecord ok = MakeRun(3, 4);
+  ok.status = RunStatus::kOk;
+  ok.reason = "";
+  const RunRecord timeout = MakeRun(3, 4);
+  { ResultsStore(path_b).Insert(ok); }
+  ResultsStore a(path_a);
+  a.Insert(timeout);
+  EXPECT_EQ(a.MergeFrom(path_b), 1);
+  ASSERT_EQ(a.StoredRuns().size(), 1u);
+  EXPECT_EQ(a.StoredRuns()[0].status, RunStatus::kOk);
+  ASSERT_EQ(a.Attempts().size(), 1u);
+  EXPECT_EQ(a.Attempts()[0].status, RunStatus::kTimeout);
+}
+
+// Bytes of a file ("" when missing).
+std::string FileBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// A fresh directory holding no store.
+std::string FreshDir(const std::string& name) {
+  const std::string dir = ::testing::TempDir() + "/icpbench_store_dir_" + name;
+  std::error_code ec;  // a read-only leftover of an earlier run is made removable
+  std::filesystem::permissions(dir, std::filesystem::perms::owner_all,
+                               std::filesystem::perm_options::add, ec);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+TEST(MergeStoresTest, PrefersOkAndSaysWhatItDidAboutConflicts) {
+  const std::string a = FreshDir("merge_a");
+  const std::string b = FreshDir("merge_b");
+  const std::string out = FreshDir("merge_out");
+  std::filesystem::remove_all(out);  // OUT need not exist
+  RunRecord ok3 = MakeRun(3, 4);     // MakeRun(3) is a timeout; this its ok copy
+  ok3.status = RunStatus::kOk;
+  ok3.reason = "";
+  RunRecord ok7 = MakeRun(7, 4);
+  ok7.status = RunStatus::kOk;
+  ok7.reason = "";
+  {
+    ResultsStore sa(StorePath(a));
+    sa.Insert(MakeRun(3, 4));  // timeout first: a keep-first merge would keep it
+    sa.Insert(ok7);
+    sa.Insert(MakeRun(1, 4));
+  }
+  {
+    ResultsStore sb(StorePath(b));
+    sb.Insert(ok3);
+    sb.Insert(MakeRun(7, 4));  // a timeout that must not replace a's ok
+    RunRecord later1 = MakeRun(1, 4);  // equal status, another measurement: a's kept
+    later1.provenance.date = "2026-02-02T00:00:00Z";
+    sb.Insert(later1);
+    sb.Insert(MakeRun(2, 4));
+    sb.Insert(MakeRun(5, 4));
+  }
+  {
+    ResultsStore sa(StorePath(a));
+    sa.Insert(MakeRun(5, 4));  // the very same run in both: no conflict, no attempt
+  }
+  const MergeSummary m = MergeStores(out, {a, b});
+  EXPECT_EQ(m.runs, 5);
+  EXPECT_EQ(m.from_input, (std::vector<int>{3, 2}));
+  EXPECT_EQ(m.duplicates, 3);
+  EXPECT_EQ(m.equal_kept_first, 1);
+  EXPECT_EQ(m.ConflictMessage(),
+            "merge: 3 conflicting keys: kept ok over timeout for 2, kept the first of "
+            "equal-status copies for 1 (dropped copies are in table attempts)");
+
+  std::map<std::string, RunStatus> status;
+  {
+    std::unique_ptr<ResultsStore> merged = ResultsStore::OpenReadOnly(StorePath(out));
+    for (const StoredRun& r : merged->StoredRuns()) status[r.key] = r.status;
+    EXPECT_EQ(merged->Attempts().size(), 3u);  // every dropped copy
+    for (const RunRecord& r : merged->LoadRuns(true)) {
+      if (r.spec.Key() == ok3.spec.Key()) ExpectSameRun(ok3, r, true);
+    }
+  }
+  EXPECT_EQ(status.size(), 5u);
+  EXPECT_EQ(status[ok3.spec.Key()], RunStatus::kOk);
+  EXPECT_EQ(status[ok7.spec.Key()], RunStatus::kOk);
+  // One complete file: no WAL, no temporary left in OUT.
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(out))
+    names.push_back(e.path().filename().string());
+  EXPECT_EQ(names, (std::vector<std::string>{"results.sqlite"}));
+
+  // Merging again into the existing OUT keeps it as the first input.
+  const MergeSummary again = MergeStores(out, {b});
+  EXPECT_EQ(again.runs, 5);
+  EXPECT_EQ(again.from_input, (std::vector<int>{0}));
+  EXPECT_EQ(again.duplicates, 2);  // b's timeout 7 and later 1 differ from OUT's copies
+  std::unique_ptr<ResultsStore> merged = ResultsStore::OpenReadOnly(StorePath(out));
+  EXPECT_EQ(merged->Attempts().size(), 3u);  // and are in its attempts already: not added
+}
+
+TEST(MergeStoresTest, AMissingOrBadInputLeavesOutAsItWas) {
+  const std::string a = FreshDir("merge_in_a");
+  const std::string missing = FreshDir("merge_in_missing");
+  const std::string empty = FreshDir("merge_in_empty");
+  const std::string out = FreshDir("merge_out2");
+  { ResultsStore(StorePath(a)).Insert(MakeRun(1, 4)); }
+  std::ofstream(StorePath(empty)).close();  // zero bytes
+  // No OUT store yet: a failed merge creates none.
+  EXPECT_THROW(MergeStores(out, {a, missing}), StoreError);
+  EXPECT_FALSE(std::filesystem::exists(StorePath(out)));
+  EXPECT_THROW(MergeStores(out, {a, empty}), StoreError);
+  EXPECT_FALSE(std::filesystem::exists(StorePath(out)));
+  EXPECT_EQ(std::filesystem::file_size(StorePath(empty)), 0u);  // not made a store
+  const std::string out_missing_dir = ::testing::TempDir() + "/icpbench_store_dir_merge_nodir";
+  std::filesystem::remove_all(out_missing_dir);
+  EXPECT_THROW(MergeStores(out_missing_dir, {missing}), StoreError);
+  EXPECT_FALSE(std::filesystem::exists(out_missing_dir));
+  // An OUT store stays byte for byte as it was.
+  MergeStores(out, {a});
+  const std::string before = FileBytes(StorePath(out));
+  ASSERT_FALSE(before.empty());
+  try {
+    MergeStores(out, {a, missing});
+    FAIL() << "expected StoreError";
+  } catch (const StoreError& e) {
+    EXPECT_NE(std::string(e.what()).find(StorePath(missing)), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(FileBytes(StorePath(out)), before);
+}
+
+// A read-only open writes nothing: not the file, no -wal/-shm (tests may
+// run as root, where permissions do not stop writes, so the bytes and the
+// directory listing are checked too).
+TEST(ResultsStoreReadOnlyTest, ReadsAReadOnlyStoreWithoutWritingIt) {
+  namespace fs = std::filesystem;
+  const std::string dir = FreshDir("readonly");
+  const std::string path = StorePath(dir);
+  {
+    ResultsStore store(path);
+    store.Insert(MakeRun(1, 6));
+    store.Insert(MakeRun(2, 6, "bc4"));
+  }
+  ASSERT_FALSE(fs::exists(path + "-wal"));
+  const std::string before = FileBytes(path);
+  fs::permissions(path, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+  fs::permissions(dir, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                           fs::perms::group_exec);
+  {
+    std::unique_ptr<ResultsStore> store = ResultsStore::OpenReadOnly(path);
+    EXPECT_EQ(store->schema_version(), 3);
+    const std::vector<RunRecord> runs = store->LoadRuns(true);
+    ASSERT_EQ(runs.size(), 2u);
+    ExpectSameRun(MakeRun(2, 6, "bc4"), runs[1], true);
+    EXPECT_THROW(store->Insert(MakeRun(3, 6)), StoreError);
+  }
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  EXPECT_EQ(names, (std::vector<std::string>{"results.sqlite"}));
+  EXPECT_EQ(FileBytes(path), before);
+  fs::permissions(dir, fs::perms::owner_all);
+  fs::permissions(path, fs::perms::owner_read | fs::perms::owner_write);
+}
+
+// While a writer has the store open (a -wal exists) a reader sees its
+// committed runs.
+TEST(ResultsStoreReadOnlyTest, SeesTheRunsOfAnOpenWriter) {
+  const std::string path = FreshPath("readonly_live");
+  ResultsStore writer(path);
+  writer.Insert(MakeRun(1, 3));
+  ASSERT_TRUE(std::filesystem::exists(path + "-wal"));
+  EXPECT_EQ(ResultsStore::OpenReadOnly(path)->LoadRuns(false).size(), 1u);
+  writer.Insert(MakeRun(2, 3));
+  EXPECT_EQ(ResultsStore::OpenReadOnly(path)->LoadRuns(false).size(), 2u);
+}
+
+// Old versions are read as they are, not migrated.
+TEST(ResultsStoreReadOnlyTest, ReadsAVersionOneStoreWithoutMigratingIt) {
+  const std::string path = FreshPath("readonly_v1");
+  WriteVersionOneStore(path);
+  const std::string before = FileBytes(path);
+  {
+    std::unique_ptr<ResultsStore> store = ResultsStore::OpenReadOnly(path);
+    EXPECT_EQ(store->schema_version(), 1);
+    const std::vector<RunRecord> runs = store->LoadRuns(true);
+    ASSERT_EQ(runs.size(), 1u);
+    ASSERT_EQ(runs[0].steps.size(), 1u);
+    EXPECT_EQ(runs[0].steps[0].estimate, "box");
+    EXPECT_TRUE(store->Attempts().empty());
+  }
+  EXPECT_EQ(FileBytes(path), before);
+}
+
+TEST(ResultsStoreReadOnlyTest, AMissingEmptyOrForeignFileIsAnError) {
+  const std::string missing = FreshPath("readonly_missing");
+  const std::string empty = FreshPath("readonly_empty");
+  std::ofstream(empty).close();
+  for (const auto& [path, what] : {std::pair{missing, "no such file"},
+                                   std::pair{empty, "empty file (0 bytes)"}}) {
+    try {
+      ResultsStore::OpenReadOnly(path);
+      FAIL() << "expected StoreError for " << path;
+    } catch (const StoreError& e) {
+      EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_FALSE(std::filesystem::exists(missing));
+  EXPECT_EQ(std::filesystem::file_size(empty), 0u);
+  const std::string foreign = FreshPath("readonly_foreign");
+  {
+    sqlite3* db = nullptr;
+    ASSERT_EQ(sqlite3_open(foreign.c_str(), &db), SQLITE_OK);
+    ASSERT_EQ(sqlite3_exec(db, "CREATE TABLE t(a)", nullptr, nullptr, nullptr), SQLITE_OK);
+    sqlite3_close(db);
+  }
+  EXPECT_THROW(ResultsStore::OpenReadOnly(foreign), StoreError);
 }
 
 }  // namespace

@@ -293,8 +293,13 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
   ResultsStore store(StorePath(options.out_dir));
   SweepSummary summary;
   std::deque<PlannedRun> queue;
-  const std::vector<std::string> stored_keys = store.RunKeys();
-  const std::set<std::string> stored(stored_keys.begin(), stored_keys.end());
+  // Kept: ok and skipped runs; failed and timed-out ones are retried (a
+  // transient kill must not be permanent) unless no_retry.
+  std::set<std::string> stored;
+  for (const StoredRun& r : store.StoredRuns()) {
+    const bool finished = r.status == RunStatus::kOk || r.status == RunStatus::kSkipped;
+    if (finished || options.no_retry) stored.insert(r.key);
+  }
   for (std::size_t i = 0; i < spec.runs.size(); ++i) {
     if (static_cast<int>(i % options.shard_count) != options.shard_index) continue;
     ++summary.planned;

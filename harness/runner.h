@@ -2,7 +2,8 @@
 // processes (one forked process per run, at most `jobs` at a time), so that a
 // run that crashes, hangs past its timeout or returns garbage is recorded as
 // failed with its reason while the sweep goes on. Each finished run is
-// written to the results store at once; runs already stored are skipped.
+// written to the results store at once; runs already stored are skipped,
+// except failed and timed-out ones, which are retried (unless no_retry).
 #ifndef ICPBENCH_HARNESS_RUNNER_H_
 #define ICPBENCH_HARNESS_RUNNER_H_
 
@@ -20,6 +21,7 @@ struct RunnerOptions {
   int shard_index = 0;  // this machine's share: runs whose index % count == index
   int shard_count = 1;
   bool force = false;   // rerun runs that are already stored
+  bool no_retry = false;  // keep stored failed/timeout runs instead of retrying them
   // Extra seconds after a run's timeout before its process is killed (the
   // run first gets the chance to stop by itself).
   double kill_grace_s = 2;

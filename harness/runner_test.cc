@@ -22,12 +22,13 @@ std::string FreshDir(const std::string& name) {
 }
 
 SweepSummary Sweep(const std::string& yaml, const std::string& dir, int jobs = 2,
-                   bool force = false) {
+                   bool force = false, bool no_retry = false) {
   Spec spec = ParseSpec(yaml, "test.yaml");
   RunnerOptions options;
   options.out_dir = dir;
   options.jobs = jobs;
   options.force = force;
+  options.no_retry = no_retry;
   options.kill_grace_s = 0.5;
   std::ostringstream progress;
   return RunSweep(spec, options, progress, false);
@@ -85,6 +86,41 @@ TEST(RunnerTest, RerunSkipsStoredRunsAndForceRerunsThem) {
   SweepSummary forced = Sweep(yaml, dir, 2, true);
   EXPECT_EQ(forced.ok, 6);
   EXPECT_EQ(ResultsStore(StorePath(dir)).LoadRuns(false).size(), 6u);
+}
+
+// A rerun retries failed and timed-out runs (a transient kill must not be
+// permanent) and keeps each earlier attempt; --no-retry keeps them as they
+// are; timeout_s stays out of the key, so a raised limit retries the same run.
+TEST(RunnerTest, RerunRetriesFailedAndTimedOutRunsUnlessNoRetry) {
+  const std::string dir = FreshDir("retry");
+  const std::string yaml = R"(
+timeout_s: 1
+algorithms:
+  - hc4
+  - {name: fault, params: {mode: [throw, hang]}}
+problems: [chain]
+)";
+  SweepSummary first = Sweep(yaml, dir);
+  EXPECT_EQ(first.ok, 1);
+  EXPECT_EQ(first.failed, 1);
+  EXPECT_EQ(first.timed_out, 1);
+  SweepSummary kept = Sweep(yaml, dir, 2, false, /*no_retry=*/true);
+  EXPECT_EQ(kept.already_stored, 3);
+  EXPECT_EQ(ResultsStore(StorePath(dir)).Attempts().size(), 0u);
+  SweepSummary retried = Sweep(yaml, dir);
+  EXPECT_EQ(retried.planned, 3);
+  EXPECT_EQ(retried.already_stored, 1);  // only the ok run is kept
+  EXPECT_EQ(retried.failed, 1);
+  EXPECT_EQ(retried.timed_out, 1);
+  ResultsStore store(StorePath(dir));
+  const std::vector<Attempt> attempts = store.Attempts();
+  ASSERT_EQ(attempts.size(), 2u);  // the first failed and timeout runs
+  for (const Attempt& a : attempts) {
+    EXPECT_EQ(a.attempt, 1);
+    EXPECT_NE(a.status, RunStatus::kOk);
+    EXPECT_FALSE(a.reason.empty());
+  }
+  EXPECT_EQ(store.LoadRuns(false).size(), 3u);
 }
 
 TEST(RunnerTest, ShardsSplitTheMatrixWithoutOverlap) {

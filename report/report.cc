@@ -529,7 +529,8 @@ std::vector<RunRecord> LoadRunsFromDirectory(const std::string& dir) {
   if (!std::filesystem::is_regular_file(path)) {
     throw std::runtime_error("no results store in '" + dir + "' (expected " + path + ")");
   }
-  std::vector<RunRecord> runs = ResultsStore(path).LoadRuns(/*with_steps=*/true);
+  // Read-only: archived or another user's stores must be reportable.
+  std::vector<RunRecord> runs = ResultsStore::OpenReadOnly(path)->LoadRuns(/*with_steps=*/true);
   for (RunRecord& r : runs) r.spec = WithoutDefaults(r.spec);
   return runs;
 }

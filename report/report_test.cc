@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -330,6 +332,58 @@ TEST(ReportTest, StoredEffectiveParametersShowAsTheirDifferenceFromTheDefaults) 
   EXPECT_TRUE(runs[0].spec.algorithm_params.empty());
   EXPECT_EQ(runs[1].spec.algorithm_params, (ParamMap{{"ratio", "0.1"}}));
   std::filesystem::remove_all(dir);
+}
+
+
+// report/plot open the store read-only: an archived store (read-only file
+// and directory) is reported and left byte for byte as it was, with no
+// -wal/-shm created (checked directly: tests may run as root, where the
+// permissions do not stop writes).
+TEST(ReportTest, ReportsAReadOnlyStoreWithoutWritingIt) {
+  namespace fs = std::filesystem;
+  const fs::path dir =
+      fs::temp_directory_path() / ("icpbench_report_readonly_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string path = StorePath(dir.string());
+  {
+    ResultsStore store(path);
+    store.Insert(MakeRun("hc4", {}, {}, 1, {1e-3}));
+  }
+  auto bytes = [&] {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  const std::string before = bytes();
+  fs::permissions(path, fs::perms::owner_read);
+  fs::permissions(dir, fs::perms::owner_read | fs::perms::owner_exec);
+  const std::string md = ReportDirectory(dir.string(), "md");
+  EXPECT_NE(md.find("| hc4 |"), std::string::npos) << md;
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  EXPECT_EQ(names, (std::vector<std::string>{"results.sqlite"}));
+  EXPECT_EQ(bytes(), before);
+  fs::permissions(dir, fs::perms::owner_all);
+  fs::remove_all(dir);
+}
+
+// A zero-byte results.sqlite is an error, not a new empty store.
+TEST(ReportTest, AZeroByteStoreIsAnError) {
+  namespace fs = std::filesystem;
+  const fs::path dir =
+      fs::temp_directory_path() / ("icpbench_report_empty_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(StorePath(dir.string())).close();
+  try {
+    LoadRunsFromDirectory(dir.string());
+    FAIL() << "expected an error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("empty file"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(fs::file_size(StorePath(dir.string())), 0u);
+  EXPECT_THROW(LoadRunsFromDirectory((dir / "missing").string()), std::runtime_error);
+  fs::remove_all(dir);
 }
 
 }  // namespace

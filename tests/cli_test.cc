@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "core/minibex_parser.h"
@@ -144,6 +146,46 @@ TEST(CliTest, BadInputExitsWithTwoAndAClearMessage) {
   EXPECT_EQ(Icpbench("solve " + sum + " --format xml").exit_code, 2);
   EXPECT_EQ(Icpbench("list everything").exit_code, 2);
   EXPECT_EQ(Icpbench("frobnicate").exit_code, 2);
+}
+
+
+// Resume, merge and report over stores (README "icpbench run", "The results
+// store"): a rerun retries the failed run unless --no-retry; merge and
+// report refuse a missing or zero-byte store with exit 2 and write nothing.
+TEST(CliTest, RetryMergeAndReportOverStores) {
+  const std::string dir = ::testing::TempDir() + "cli_stores";
+  std::filesystem::remove_all(dir);
+  const std::string spec = WriteFile("cli_stores.yaml",
+                                     "algorithms: [hc4, {name: fault, params: {mode: throw}}]\n"
+                                     "problems: [chain]\n");
+  Result r = Icpbench("run " + spec + " --out " + dir + "/a --jobs 1");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("1 ok, 1 failed"), std::string::npos) << r.out;
+  r = Icpbench("run " + spec + " --out " + dir + "/a --jobs 1 --no-retry");
+  EXPECT_NE(r.out.find("2 already stored, 0 ok, 0 failed"), std::string::npos) << r.out;
+  r = Icpbench("run " + spec + " --out " + dir + "/a --jobs 1");
+  EXPECT_NE(r.out.find("1 already stored, 0 ok, 1 failed"), std::string::npos) << r.out;
+
+  r = Icpbench("merge " + dir + "/out " + dir + "/a " + dir + "/missing");
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find(dir + "/missing/results.sqlite"), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out/results.sqlite"));
+  r = Icpbench("merge " + dir + "/out " + dir + "/a " + dir + "/a");
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(r.out.find("conflicting"), std::string::npos) << r.out;  // the same runs twice
+  EXPECT_NE(r.out.find("2 runs in"), std::string::npos) << r.out;
+
+  std::filesystem::create_directories(dir + "/empty");
+  std::ofstream(dir + "/empty/results.sqlite").close();
+  for (const std::string& command : {"report " + dir + "/empty", "plot " + dir + "/empty",
+                                     "merge " + dir + "/out2 " + dir + "/empty"}) {
+    r = Icpbench(command);
+    EXPECT_EQ(r.exit_code, 2) << command << ": " << r.out;
+    EXPECT_NE(r.out.find("empty file"), std::string::npos) << command << ": " << r.out;
+  }
+  EXPECT_EQ(std::filesystem::file_size(dir + "/empty/results.sqlite"), 0u);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out2"));
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
