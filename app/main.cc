@@ -1,10 +1,13 @@
 // icpbench: the command-line tool. Exit codes: 0 success, 2 bad input
-// (unknown algorithm or parameter, unreadable or malformed file, bad option),
-// 1 an unexpected internal error.
+// (unknown algorithm or parameter, unreadable or malformed file, bad option,
+// an output directory locked by another run), 3 the environment (disk full,
+// descriptors, processes or memory exhausted, permissions), 130/143 `run`
+// stopped by SIGINT/SIGTERM, 1 an unexpected internal error.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <new>
 
 #include <unistd.h>
 
@@ -12,6 +15,7 @@
 #include <thread>
 
 #include "experiments/registry.h"
+#include "harness/environment_error.h"
 #include "harness/list_command.h"
 #include "harness/plugin_loader.h"
 #include "report/report.h"
@@ -23,6 +27,7 @@
 
 namespace {
 constexpr int kUsageError = 2;
+constexpr int kEnvironmentError = 3;
 }
 
 int main(int argc, char** argv) {
@@ -113,6 +118,14 @@ int main(int argc, char** argv) {
       const icp::Spec spec = icp::LoadSpec(spec_file);
       std::tie(run.shard_index, run.shard_count) = icp::ParseShard(shard);
       if (run.jobs < 1) throw std::invalid_argument("--jobs must be at least 1");
+      // More workers than this only share the cores and use up processes
+      // and descriptors.
+      const int max_jobs = 4 * static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+      if (run.jobs > max_jobs) {
+        std::cerr << "icpbench: note: --jobs " << run.jobs << " capped to " << max_jobs
+                  << " (4 x the number of cores)\n";
+        run.jobs = max_jobs;
+      }
       if (run.out_dir.empty())
         run.out_dir = "results/" + std::filesystem::path(spec_file).stem().string();
       const bool terminal = isatty(STDERR_FILENO);
@@ -122,6 +135,11 @@ int main(int argc, char** argv) {
       std::cerr << "icpbench: " << s.planned << " planned, " << s.already_stored
                 << " already stored, " << s.ok << " ok, " << s.failed << " failed, "
                 << s.timed_out << " timed out, " << s.skipped << " skipped\n";
+      if (s.interrupted_by != 0) {
+        std::cerr << "icpbench: interrupted: " << s.stopped << " runs in flight were stopped, "
+                  << s.Finished() << " finished runs kept\n";
+        return 128 + s.interrupted_by;
+      }
     } else if (*report_cmd) {
       std::cout << icp::ReportDirectory(report_dir, report_format, icp::PaperTables);
     } else if (*plot_cmd) {
@@ -139,6 +157,12 @@ int main(int argc, char** argv) {
       if (!m.ConflictMessage().empty()) std::cerr << "icpbench: " << m.ConflictMessage() << "\n";
       std::cerr << "icpbench: " << m.runs << " runs in " << icp::StorePath(merge_out) << "\n";
     }
+  } catch (const icp::EnvironmentError& e) {  // disk, descriptors, processes, permissions
+    std::cerr << "icpbench: " << e.what() << "\n";
+    return kEnvironmentError;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "icpbench: out of memory (reduce --jobs or the size of the spec, or free memory)\n";
+    return kEnvironmentError;
   } catch (const std::invalid_argument& e) {  // ParamError, unknown names, options
     std::cerr << "icpbench: " << e.what() << "\n";
     return kUsageError;

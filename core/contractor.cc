@@ -22,7 +22,16 @@ WorkCounters& WorkCounters::operator+=(const WorkCounters& o) {
 
 StopCondition StopCondition::After(std::chrono::duration<double> budget) {
   StopCondition s;
-  s.deadline_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(budget);
+  const Clock::time_point now = Clock::now();
+  // Saturate: a budget past the clock's range (inf, 1e300, NaN) means no
+  // deadline; the plain sum overflows int64 and lands in the past.
+  const double room = std::chrono::duration<double>(Clock::time_point::max() - now).count();
+  if (!(budget.count() < room / 2)) return s;
+  if (budget.count() <= 0) {
+    s.deadline_ = now;
+    return s;
+  }
+  s.deadline_ = now + std::chrono::duration_cast<Clock::duration>(budget);
   return s;
 }
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <thread>
 #include <vector>
 
@@ -125,6 +126,13 @@ TEST(ContractorTest, StopConditionHonoursDeadlineAndCancelFlag) {
   EXPECT_FALSE(flag.ShouldStop());
   cancel = true;
   EXPECT_TRUE(flag.ShouldStop());
+}
+
+// timeout_s: inf (or 1e10) once overflowed the deadline into the past.
+TEST(ContractorTest, StopConditionWithAHugeBudgetNeverStops) {
+  for (double s : {std::numeric_limits<double>::infinity(), 1e10, 1e300})
+    EXPECT_FALSE(StopCondition::After(std::chrono::duration<double>(s)).ShouldStop()) << s;
+  EXPECT_TRUE(StopCondition::After(std::chrono::duration<double>(-1)).ShouldStop());
 }
 
 TEST(ContractorTest, ShrankByMoreThanUsesRelativeWidth) {

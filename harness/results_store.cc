@@ -18,6 +18,8 @@
 #include <utility>
 #include <variant>
 
+#include "harness/environment_error.h"
+
 namespace icp {
 
 namespace {
@@ -143,6 +145,16 @@ constexpr const char* kRunColumns =
 [[noreturn]] void Fail(const std::string& path, const std::string& what, sqlite3* db) {
   std::string message = "results store '" + path + "': " + what;
   if (db != nullptr) message += ": " + std::string(sqlite3_errmsg(db));
+  // The environment's failures (exit 3), with what to do about them.
+  switch (db != nullptr ? sqlite3_errcode(db) & 0xff : SQLITE_OK) {
+    case SQLITE_FULL: throw EnvironmentError(message + " (free disk space and rerun)");
+    case SQLITE_CANTOPEN:
+      throw EnvironmentError(message + " (check permissions; raise ulimit -n or reduce --jobs)");
+    case SQLITE_READONLY: throw EnvironmentError(message + " (check the permissions of the store)");
+    case SQLITE_IOERR: throw EnvironmentError(message + " (check the disk and its free space)");
+    case SQLITE_NOMEM: throw EnvironmentError(message + " (out of memory: reduce --jobs)");
+    default: break;
+  }
   throw StoreError(message);
 }
 

@@ -1,12 +1,17 @@
 #include "harness/runner.h"
 
+#include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/file.h>
+#include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstring>
 #include <deque>
 #include <filesystem>
@@ -18,6 +23,7 @@
 #include <variant>
 
 #include "algorithms/registry.h"
+#include "harness/environment_error.h"
 #include "harness/metrics.h"
 #include "harness/provenance.h"
 #include "harness/results_store.h"
@@ -205,6 +211,7 @@ struct Worker {
   std::string output;
   Clock::time_point started;
   double kill_after_s = 0;  // 0: never
+  double hard_limit_s = 0;  // the worker's own limit (alarm, CPU); 0: none
   bool killed = false;
   PlannedRun run;
 };
@@ -266,6 +273,11 @@ RunRecord Finalize(Worker& w, int wait_status) {
     r.status = RunStatus::kTimeout;
     r.reason = "killed after " + FormatDouble(w.kill_after_s) + " s (timeout " +
                FormatDouble(w.run.spec.timeout_s) + " s)";
+  } else if (WIFSIGNALED(wait_status) &&
+             (WTERMSIG(wait_status) == SIGALRM || WTERMSIG(wait_status) == SIGXCPU)) {
+    r.status = RunStatus::kTimeout;
+    r.reason = "stopped by its own hard limit of " + FormatDouble(w.hard_limit_s) + " s (timeout " +
+               FormatDouble(w.run.spec.timeout_s) + " s)";
   } else if (WIFSIGNALED(wait_status)) {
     const int sig = WTERMSIG(wait_status);
     r.status = RunStatus::kFailed;
@@ -285,11 +297,125 @@ RunRecord Finalize(Worker& w, int wait_status) {
   return r;
 }
 
+// --- Signals, worker set-up, the directory lock ----------------------------
+
+volatile std::sig_atomic_t g_stop_signal = 0;
+extern "C" void OnStopSignal(int sig) { g_stop_signal = sig; }
+
+// SIGINT/SIGTERM set g_stop_signal while a sweep runs; the previous handlers
+// come back after it.
+class StopSignals {
+ public:
+  StopSignals() {
+    g_stop_signal = 0;
+    struct sigaction sa {};
+    sa.sa_handler = OnStopSignal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old_int_);
+    sigaction(SIGTERM, &sa, &old_term_);
+  }
+  ~StopSignals() {
+    sigaction(SIGINT, &old_int_, nullptr);
+    sigaction(SIGTERM, &old_term_, nullptr);
+  }
+
+ private:
+  struct sigaction old_int_ {}, old_term_ {};
+};
+
+// Values beyond this (inf, 1e300) mean no limit: alarm() and the clocks
+// overflow long before.
+constexpr double kNoLimitAbove = 1e8;
+
+// In the forked worker: die with the parent whatever kills it (a parent that
+// died before prctl is caught by the getppid check), keep the terminal's
+// Ctrl-C for the parent (it stops the workers itself), and enforce a hard
+// limit of its own in case the parent cannot kill it.
+void SetUpWorker(pid_t parent, double hard_limit_s) {
+  prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (getppid() != parent) _exit(4);
+  setpgid(0, 0);
+  signal(SIGINT, SIG_DFL);
+  signal(SIGTERM, SIG_DFL);
+  sigset_t none;
+  sigemptyset(&none);
+  sigprocmask(SIG_SETMASK, &none, nullptr);
+  if (hard_limit_s > 0 && hard_limit_s < kNoLimitAbove) {
+    const auto s = static_cast<unsigned>(std::ceil(hard_limit_s));
+    alarm(s);
+    rlimit cpu{s, s + 1};
+    setrlimit(RLIMIT_CPU, &cpu);
+  }
+}
+
+// An exclusive flock on DIR/.lock holding the holder's PID; the kernel
+// drops it when the holder dies, so a PID left in an unlocked file is stale.
+// The file is emptied, not removed, on release (removing it would let a
+// waiting process lock a deleted file).
+class DirectoryLock {
+ public:
+  DirectoryLock(const std::string& dir, std::ostream& messages) {
+    const std::string path = (std::filesystem::path(dir) / ".lock").string();
+    fd_ = open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ < 0) ThrowErrno("cannot create the lock file " + path, errno);
+    const std::string holder = ReadPid();
+    if (flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      const int e = errno;
+      close(fd_);
+      fd_ = -1;
+      if (e != EWOULDBLOCK) ThrowErrno("cannot lock " + path, e);
+      throw DirectoryLockedError("output directory " + dir + " is in use by another run: " + path +
+                                 " is held by PID " + (holder.empty() ? "?" : holder));
+    }
+    if (!holder.empty() && holder != std::to_string(getpid()))
+      messages << "icpbench: took over stale lock of PID " << holder << " (" << path << ")\n";
+    const std::string pid = std::to_string(getpid()) + "\n";
+    if (ftruncate(fd_, 0) != 0 || pwrite(fd_, pid.data(), pid.size(), 0) < 0)
+      ThrowErrno("cannot write " + path, errno);
+  }
+  ~DirectoryLock() {
+    if (fd_ < 0) return;
+    if (ftruncate(fd_, 0) != 0) {
+    }
+    close(fd_);
+  }
+  DirectoryLock(const DirectoryLock&) = delete;
+  DirectoryLock& operator=(const DirectoryLock&) = delete;
+  int fd() const { return fd_; }
+
+ private:
+  std::string ReadPid() const {
+    char buf[32] = {};
+    const ssize_t n = pread(fd_, buf, sizeof buf - 1, 0);
+    std::string s = n > 0 ? std::string(buf, static_cast<std::size_t>(n)) : "";
+    while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+    return s;
+  }
+  int fd_ = -1;
+};
+
+// Kills and reaps the workers still running when the sweep ends early
+// (an exception, a signal), so none outlives it.
+void StopWorkers(std::vector<Worker>& workers) {
+  for (Worker& w : workers) kill(w.pid, SIGKILL);
+  for (Worker& w : workers) {
+    close(w.fd);
+    while (waitpid(w.pid, nullptr, 0) < 0 && errno == EINTR) {
+    }
+  }
+  workers.clear();
+}
+
 }  // namespace
 
 SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostream& progress_out,
                       bool terminal) {
-  std::filesystem::create_directories(options.out_dir);
+  {
+    std::error_code ec;
+    std::filesystem::create_directories(options.out_dir, ec);
+    if (ec) ThrowErrno("cannot create the output directory " + options.out_dir, ec.value());
+  }
+  const DirectoryLock lock(options.out_dir, progress_out);
   ResultsStore store(StorePath(options.out_dir));
   SweepSummary summary;
   std::deque<PlannedRun> queue;
@@ -324,9 +450,20 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
   };
 
   std::vector<Worker> workers;
+  struct Reaper {
+    std::vector<Worker>& workers;
+    ~Reaper() { StopWorkers(workers); }
+  } reaper{workers};
+  const StopSignals signals;
+  // Computed once (it runs git) while descriptors are still free: a sweep
+  // that exhausts them must not store an empty provenance.
+  CurrentProvenance();
+  std::string start_error;  // pipe() or fork() failed: start nothing more
+  int start_errno = 0;
   const int jobs = std::max(1, options.jobs);
-  while (!queue.empty() || !workers.empty()) {
-    while (static_cast<int>(workers.size()) < jobs && !queue.empty()) {
+  while ((!queue.empty() && start_errno == 0) || !workers.empty()) {
+    if (g_stop_signal != 0) break;
+    while (static_cast<int>(workers.size()) < jobs && !queue.empty() && start_errno == 0) {
       PlannedRun run = std::move(queue.front());
       queue.pop_front();
       if (!run.skip_reason.empty()) {
@@ -337,13 +474,34 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
         store_record(r, run.experiment);
         continue;
       }
+      const double kill_after_s = run.spec.timeout_s > 0 && run.spec.timeout_s < kNoLimitAbove
+                                      ? run.spec.timeout_s + options.kill_grace_s
+                                      : 0;
+      // The worker's own limit comes after the parent's kill, which is the
+      // normal way a hung run ends.
+      const double hard_limit_s = kill_after_s > 0 ? kill_after_s + 1 : 0;
       int fds[2];
-      if (pipe(fds) != 0) throw std::runtime_error(std::string("pipe: ") + strerror(errno));
+      if (pipe(fds) != 0) {  // the run is not recorded: it never started
+        start_errno = errno;
+        start_error = "cannot create a pipe for a worker";
+        queue.push_front(std::move(run));
+        break;
+      }
       std::fflush(nullptr);
+      const pid_t parent = getpid();
       const pid_t pid = fork();
-      if (pid < 0) throw std::runtime_error(std::string("fork: ") + strerror(errno));
-      if (pid == 0) {  // the worker: one run, its record on the pipe, no cleanup
+      if (pid < 0) {
+        start_errno = errno;
+        start_error = "cannot start a worker process (fork)";
         close(fds[0]);
+        close(fds[1]);
+        queue.push_front(std::move(run));
+        break;
+      }
+      if (pid == 0) {  // the worker: one run, its record on the pipe, no cleanup
+        SetUpWorker(parent, hard_limit_s);
+        close(fds[0]);
+        close(lock.fd());
         for (const Worker& w : workers) close(w.fd);
         signal(SIGPIPE, SIG_IGN);
         const bool ok = WriteAll(fds[1], Serialize(ExecuteRun(run.spec)));
@@ -354,7 +512,8 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
       w.pid = pid;
       w.fd = fds[0];
       w.started = Clock::now();
-      w.kill_after_s = run.spec.timeout_s > 0 ? run.spec.timeout_s + options.kill_grace_s : 0;
+      w.kill_after_s = kill_after_s;
+      w.hard_limit_s = hard_limit_s;
       w.run = std::move(run);
       workers.push_back(std::move(w));
     }
@@ -362,6 +521,7 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
     std::vector<pollfd> fds;
     for (const Worker& w : workers) fds.push_back({w.fd, POLLIN, 0});
     poll(fds.data(), fds.size(), 100);
+    if (g_stop_signal != 0) break;
     for (std::size_t i = 0; i < workers.size();) {
       Worker& w = workers[i];
       bool eof = false;
@@ -391,7 +551,16 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
       workers.erase(workers.begin() + static_cast<std::ptrdiff_t>(i));
     }
   }
+  if (g_stop_signal != 0) {
+    summary.interrupted_by = g_stop_signal;
+    summary.stopped = static_cast<int>(workers.size());
+    StopWorkers(workers);
+  }
   progress.Finish();
+  if (start_errno != 0 && summary.interrupted_by == 0)
+    ThrowErrno(start_error + " (" + std::to_string(summary.Finished()) + " finished runs kept, " +
+                   std::to_string(queue.size()) + " not started)",
+               start_errno);
   return summary;
 }
 

@@ -8,6 +8,7 @@
 #define ICPBENCH_HARNESS_RUNNER_H_
 
 #include <iosfwd>
+#include <stdexcept>
 #include <string>
 
 #include "harness/run_record.h"
@@ -34,10 +35,26 @@ struct SweepSummary {
   int failed = 0;
   int timed_out = 0;
   int skipped = 0;      // incompatible algorithm/problem pairs
+  // Set when SIGINT or SIGTERM stopped the sweep: the signal, and the runs
+  // then in flight (killed, not recorded). Finished runs stay stored.
+  int interrupted_by = 0;
+  int stopped = 0;
+  int Finished() const { return ok + failed + timed_out + skipped; }
+};
+
+// Another `run` holds the output directory's lock (bad input: exit 2).
+class DirectoryLockedError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
 };
 
 // Runs the sweep; progress goes to `progress` (a bar on a terminal, plain
-// lines otherwise). Throws StoreError if the store cannot be opened.
+// lines otherwise). Holds an exclusive lock on OUT_DIR/.lock meanwhile
+// (throws DirectoryLockedError if another process holds it). Workers die
+// with the calling process, whatever kills it. SIGINT/SIGTERM stop the
+// workers and return with interrupted_by set. Throws StoreError if the store
+// cannot be opened, EnvironmentError when the environment fails (no pipe or
+// fork: the runs in flight are finished and stored first).
 SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostream& progress,
                       bool progress_is_terminal);
 

@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -80,6 +81,14 @@ class Reader {
     return node.Scalar();
   }
 
+  // A timeout in seconds; inf (YAML's .inf too) or any huge value means no
+  // limit (the runner and StopCondition treat them so).
+  double Timeout(const YAML::Node& node, const std::string& key) const {
+    const std::string text = Scalar(node, key);
+    if (text == ".inf" || text == ".Inf" || text == ".INF") return kInf;
+    return Positive(node, key);
+  }
+
   double Positive(const YAML::Node& node, const std::string& key) const {
     const std::string text = Scalar(node, key);
     char* end = nullptr;
@@ -149,6 +158,10 @@ class Reader {
         } else {
           values.push_back(Scalar(kv.second, at));
         }
+        // Checked before expanding: a huge grid must not exhaust memory first.
+        if (grid.size() * values.size() > kMaxRuns)
+          Fail(kv.second, at, "the parameter grid has more than " + std::to_string(kMaxRuns) +
+                                  " points (the limit of a run matrix)");
         std::vector<ParamMap> next;
         for (const ParamMap& base : grid)
           for (const std::string& v : values) {
@@ -239,6 +252,18 @@ class Reader {
       }
       a.grid = ResolveGrid(a.node, a.at, a.name, a.grid, info.resolve);
     }
+    {  // the size of this experiment's matrix, before expanding it
+      std::size_t a_points = 0, p_points = 0;
+      for (const Entry& a : algs) a_points += a.grid.size();
+      for (const Entry& p : probs) p_points += p.grid.size();
+      const double runs = static_cast<double>(a_points) * static_cast<double>(p_points) *
+                              static_cast<double>(seeds.size()) +
+                          static_cast<double>(spec->runs.size());
+      if (runs > static_cast<double>(kMaxRuns))
+        Fail(node, where, "the run matrix has " +
+                              std::to_string(static_cast<unsigned long long>(std::min(runs, 1e18))) + " runs, more than the limit of " +
+                              std::to_string(kMaxRuns) + "; split the spec or use --shard");
+    }
     for (const Entry& p : probs) {
       const ProblemInfo& pinfo = FindProblem(p.name);
       for (const Entry& a : algs) {
@@ -282,7 +307,7 @@ Spec ParseSpecText(const std::string& text, const std::string& source) {
   reader.CheckKeys(root, "",
                    {"name", "description", "timeout_s", "seeds", "repetitions", "experiments",
                     "algorithms", "problems"});
-  const double timeout = root["timeout_s"] ? reader.Positive(root["timeout_s"], "timeout_s") : 600;
+  const double timeout = root["timeout_s"] ? reader.Timeout(root["timeout_s"], "timeout_s") : 600;
   const std::vector<std::uint64_t> seeds = reader.Seeds(root, "", {1});
   Spec spec;
   spec.file = source;
@@ -306,7 +331,7 @@ Spec ParseSpecText(const std::string& text, const std::string& source) {
       if (!inserted)
         reader.Fail(e["name"] ? e["name"] : e, where + ".name",
                     "experiment '" + name + "' is already the name of " + it->second);
-      const double t = e["timeout_s"] ? reader.Positive(e["timeout_s"], where + ".timeout_s") : timeout;
+      const double t = e["timeout_s"] ? reader.Timeout(e["timeout_s"], where + ".timeout_s") : timeout;
       reader.Experiment(e, where, name, t, reader.Seeds(e, where, seeds), &spec, &seen);
     }
   } else {

@@ -32,6 +32,10 @@ class SpecError : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+// The most runs a spec may expand to (its whole matrix, every experiment
+// together); a larger one is a SpecError before it is expanded.
+inline constexpr std::size_t kMaxRuns = 1'000'000;
+
 struct PlannedRun {
   RunSpec spec;
   std::string experiment;

@@ -1,0 +1,362 @@
+// The runner's process handling (issue 13): workers die with their parent,
+// SIGINT/SIGTERM stop a sweep cleanly, a lock per output directory, no
+// overflow on an infinite timeout, bounds on the matrix and --jobs, and the
+// environment's failures as exit code 3.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/file.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "harness/results_store.h"
+#include "harness/runner.h"
+#include "tests/cli_helpers.h"
+
+namespace icp {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string FreshDir(const std::string& name) {
+  const std::string dir = ::testing::TempDir() + "runner_process_" + name;
+  std::filesystem::remove_all(dir);
+  return dir;
+}
+
+// The state letter and parent of a process from /proc; 0 when it is gone.
+char State(pid_t pid, pid_t* parent = nullptr) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto close = text.rfind(')');
+  if (close == std::string::npos) return 0;
+  std::istringstream rest(text.substr(close + 1));
+  char state = 0;
+  pid_t ppid = 0;
+  rest >> state >> ppid;
+  if (parent) *parent = ppid;
+  return state;
+}
+
+// Alive: present and not a zombie (an orphan's zombie may wait for a PID 1
+// that never reaps it).
+bool Alive(pid_t pid) {
+  const char s = State(pid);
+  return s != 0 && s != 'Z' && s != 'X';
+}
+
+std::string Command(pid_t pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/comm");
+  std::string name;
+  std::getline(in, name);
+  return name;
+}
+
+// The workers of a sweep: its live children running the same program (not
+// the git or shell the provenance starts).
+std::vector<pid_t> LiveChildrenOf(pid_t parent) {
+  const std::string program = Command(parent);
+  std::vector<pid_t> out;
+  for (const auto& entry : std::filesystem::directory_iterator("/proc")) {
+    const std::string name = entry.path().filename().string();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    const pid_t pid = std::stoi(name);
+    pid_t ppid = 0;
+    const char s = State(pid, &ppid);
+    if (ppid == parent && s != 0 && s != 'Z' && s != 'X' && Command(pid) == program)
+      out.push_back(pid);
+  }
+  return out;
+}
+
+// Polls until pred() or the time is up; returns pred().
+template <class Pred>
+bool WaitFor(Pred pred, double seconds) {
+  const auto end = Clock::now() + std::chrono::duration<double>(seconds);
+  while (Clock::now() < end) {
+    if (pred()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return pred();
+}
+
+// Forks a process that runs the sweep of yaml into dir and writes
+// "interrupted_by stopped finished" to the returned pipe when it returns.
+pid_t StartSweep(const std::string& yaml, const std::string& dir, int jobs, double grace,
+                 int* result_fd) {
+  int fds[2];
+  if (pipe(fds) != 0) return -1;
+  const pid_t pid = fork();
+  if (pid == 0) {
+    close(fds[0]);
+    std::ostringstream progress;
+    std::string line = "error";
+    try {
+      RunnerOptions options;
+      options.out_dir = dir;
+      options.jobs = jobs;
+      options.kill_grace_s = grace;
+      const SweepSummary s = RunSweep(ParseSpec(yaml, "test.yaml"), options, progress, false);
+      line = std::to_string(s.interrupted_by) + " " + std::to_string(s.stopped) + " " +
+             std::to_string(s.Finished());
+    } catch (const std::exception& e) {
+      line = std::string("error ") + e.what();
+    }
+    if (write(fds[1], line.data(), line.size()) < 0) _exit(2);
+    _exit(0);
+  }
+  close(fds[1]);
+  *result_fd = fds[0];
+  return pid;
+}
+
+std::string ReadAll(int fd) {
+  std::string out;
+  char buf[512];
+  ssize_t n;
+  while ((n = read(fd, buf, sizeof buf)) > 0) out.append(buf, static_cast<std::size_t>(n));
+  close(fd);
+  return out;
+}
+
+constexpr const char* kTwoHangs = R"(
+timeout_s: 60
+seeds: [1, 2]
+algorithms:
+  - {name: fault, params: {mode: hang}}
+problems: [chain]
+)";
+
+TEST(RunnerProcessTest, WorkersDieWithAParentKilledBySigkill) {
+  int result_fd = -1;
+  const pid_t sweep = StartSweep(kTwoHangs, FreshDir("sigkill"), 2, 2, &result_fd);
+  ASSERT_GT(sweep, 0);
+  std::vector<pid_t> workers;
+  ASSERT_TRUE(WaitFor([&] { return (workers = LiveChildrenOf(sweep)).size() == 2; }, 5));
+  kill(sweep, SIGKILL);
+  waitpid(sweep, nullptr, 0);
+  close(result_fd);
+  for (pid_t w : workers) {
+    EXPECT_TRUE(WaitFor([&] { return !Alive(w); }, 2)) << "worker " << w << " outlived its parent";
+    if (Alive(w)) kill(w, SIGKILL);
+  }
+}
+
+TEST(RunnerProcessTest, AWorkerEnforcesItsOwnLimitWhenItsParentCannot) {
+  // A stopped parent cannot kill its hung worker (its kill is due at 0.5 +
+  // 0.5 s); the worker's own limit (one second after that) ends it.
+  int result_fd = -1;
+  const pid_t sweep = StartSweep(R"(
+timeout_s: 0.5
+algorithms:
+  - {name: fault, params: {mode: hang}}
+problems: [chain]
+)",
+                                 FreshDir("hard_limit"), 1, 0.5, &result_fd);
+  ASSERT_GT(sweep, 0);
+  std::vector<pid_t> workers;
+  ASSERT_TRUE(WaitFor([&] { return (workers = LiveChildrenOf(sweep)).size() == 1; }, 5));
+  kill(sweep, SIGSTOP);
+  const auto t0 = Clock::now();
+  EXPECT_TRUE(WaitFor([&] { return !Alive(workers[0]); }, 4))
+      << "worker still running while its parent is stopped";
+  EXPECT_GT(std::chrono::duration<double>(Clock::now() - t0).count(), 0.3);
+  kill(sweep, SIGKILL);
+  waitpid(sweep, nullptr, 0);
+  close(result_fd);
+  if (Alive(workers[0])) kill(workers[0], SIGKILL);
+}
+
+TEST(RunnerProcessTest, SigtermStopsTheWorkersAndKeepsFinishedRuns) {
+  const std::string dir = FreshDir("sigterm");
+  int result_fd = -1;
+  const pid_t sweep = StartSweep(R"(
+timeout_s: 60
+experiments:
+  - {name: quick, algorithms: [hc4], problems: [chain]}
+  - {name: hung, algorithms: [{name: fault, params: {mode: hang}}], problems: [chain], seeds: [1, 2]}
+)",
+                                 dir, 3, 2, &result_fd);
+  ASSERT_GT(sweep, 0);
+  std::vector<pid_t> workers;
+  // The quick run has finished when only the two hung workers are left.
+  ASSERT_TRUE(WaitFor([&] { return (workers = LiveChildrenOf(sweep)).size() == 2; }, 5));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  workers = LiveChildrenOf(sweep);
+  ASSERT_EQ(workers.size(), 2u);
+  const auto t0 = Clock::now();
+  kill(sweep, SIGTERM);
+  const std::string result = ReadAll(result_fd);
+  int status = 0;
+  waitpid(sweep, &status, 0);
+  EXPECT_LT(std::chrono::duration<double>(Clock::now() - t0).count(), 2);
+  EXPECT_EQ(result, std::to_string(SIGTERM) + " 2 1");
+  for (pid_t w : workers) EXPECT_FALSE(Alive(w));
+  ResultsStore store(StorePath(dir));
+  const std::vector<RunRecord> runs = store.LoadRuns(false);
+  ASSERT_EQ(runs.size(), 1u);  // the hung runs are not recorded as failed
+  EXPECT_EQ(runs[0].status, RunStatus::kOk);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/.lock") &&
+               std::filesystem::file_size(dir + "/.lock") > 0)
+      << "the lock file still names a holder";
+}
+
+SweepSummary QuickSweep(const std::string& dir, std::string* progress_text = nullptr,
+                        const std::string& timeout = "10") {
+  RunnerOptions options;
+  options.out_dir = dir;
+  std::ostringstream progress;
+  const SweepSummary s = RunSweep(
+      ParseSpec("timeout_s: " + timeout + "\nalgorithms: [hc4]\nproblems: [chain]\n", "t.yaml"),
+      options, progress, false);
+  if (progress_text) *progress_text = progress.str();
+  return s;
+}
+
+TEST(RunnerProcessTest, ASecondSweepOnALockedDirectoryNamesTheLockAndItsHolder) {
+  const std::string dir = FreshDir("locked");
+  std::filesystem::create_directories(dir);
+  const int fd = open((dir + "/.lock").c_str(), O_RDWR | O_CREAT, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(flock(fd, LOCK_EX | LOCK_NB), 0);
+  ASSERT_EQ(write(fd, "4242\n", 5), 5);
+  try {
+    QuickSweep(dir);
+    ADD_FAILURE() << "no DirectoryLockedError";
+  } catch (const DirectoryLockedError& e) {
+    EXPECT_NE(std::string(e.what()).find(dir + "/.lock"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("PID 4242"), std::string::npos) << e.what();
+  }
+  close(fd);
+  EXPECT_FALSE(std::filesystem::exists(StorePath(dir))) << "the locked sweep opened the store";
+}
+
+TEST(RunnerProcessTest, AStaleLockIsTakenOverWithAMessage) {
+  const std::string dir = FreshDir("stale");
+  std::filesystem::create_directories(dir);
+  // A holder that died without emptying the file (SIGKILL): its flock went
+  // with it, its PID stayed.
+  const pid_t gone = fork();
+  if (gone == 0) _exit(0);
+  waitpid(gone, nullptr, 0);
+  std::ofstream(dir + "/.lock") << gone << "\n";
+  std::string progress;
+  const SweepSummary s = QuickSweep(dir, &progress);
+  EXPECT_EQ(s.ok, 1);
+  EXPECT_NE(progress.find("took over stale lock of PID " + std::to_string(gone)), std::string::npos)
+      << progress;
+  // Released: the next sweep takes it without a message.
+  QuickSweep(dir, &progress);
+  EXPECT_EQ(progress.find("stale"), std::string::npos) << progress;
+}
+
+TEST(RunnerProcessTest, AnInfiniteOrHugeTimeoutMeansNoLimit) {
+  for (const std::string t : {"inf", ".inf", "1e10", "1e300"}) {
+    const Spec spec = ParseSpec("timeout_s: " + t + "\nalgorithms: [hc4]\nproblems: [chain]\n", "t");
+    ASSERT_EQ(spec.runs.size(), 1u);
+    RunRecord r = ExecuteRun(spec.runs[0].spec);
+    EXPECT_EQ(r.status, RunStatus::kOk) << t << ": " << r.reason;
+    const SweepSummary s = QuickSweep(FreshDir("inf"), nullptr, t);
+    EXPECT_EQ(s.ok, 1) << t;
+  }
+  EXPECT_TRUE(std::isinf(ParseSpec("timeout_s: .inf\nalgorithms: [hc4]\nproblems: [chain]\n", "t")
+                             .runs[0]
+                             .spec.timeout_s));
+}
+
+TEST(RunnerProcessTest, AMatrixAboveTheLimitIsRejectedBeforeItIsExpanded) {
+  const auto t0 = Clock::now();
+  try {
+    ParseSpec(R"(
+repetitions: 100000
+algorithms:
+  - {name: fault, params: {after_calls: [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10]}}
+problems: [chain]
+)",
+              "big.yaml");
+    ADD_FAILURE() << "accepted 1.1 million runs";
+  } catch (const SpecError& e) {
+    EXPECT_NE(std::string(e.what()).find("1100000 runs"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("limit of 1000000"), std::string::npos) << e.what();
+  }
+  EXPECT_LT(std::chrono::duration<double>(Clock::now() - t0).count(), 2);
+}
+
+// --- The command line --------------------------------------------------------
+
+testing::Result Icpbench(const std::string& args) {
+  return testing::RunCommand(ICPBENCH_BINARY, args);
+}
+
+TEST(RunnerProcessTest, CliSigintStopsTheSweepWithItsMessageAndCode) {
+  const std::string dir = FreshDir("cli_sigint");
+  const std::string spec = testing::WriteFile("process_hang.yaml", kTwoHangs);
+  const std::string log = ::testing::TempDir() + "process_sigint.log";
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(fd, STDERR_FILENO);
+    execl(ICPBENCH_BINARY, ICPBENCH_BINARY, "run", spec.c_str(), "--out", dir.c_str(), "--jobs", "2",
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  std::vector<pid_t> workers;
+  ASSERT_TRUE(WaitFor([&] { return (workers = LiveChildrenOf(pid)).size() == 2; }, 5));
+  kill(pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  std::ifstream in(log);
+  const std::string out((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(out.find("icpbench: interrupted: 2 runs in flight were stopped, 0 finished runs kept"),
+            std::string::npos)
+      << out;
+  for (pid_t w : workers) EXPECT_FALSE(Alive(w));
+}
+
+TEST(RunnerProcessTest, CliJobsAreCappedAndMustBePositive) {
+  const std::string spec =
+      testing::WriteFile("process_quick.yaml", "algorithms: [hc4]\nproblems: [chain]\n");
+  testing::Result r = Icpbench("run " + spec + " --out " + FreshDir("cli_jobs") + " --jobs 100000");
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("--jobs 100000 capped to"), std::string::npos) << r.out;
+  r = Icpbench("run " + spec + " --out " + FreshDir("cli_jobs0") + " --jobs 0");
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+}
+
+TEST(RunnerProcessTest, CliAnUnwritableOutputDirectoryIsTheEnvironment) {
+  // /sys refuses new files even to root: a real permission error.
+  const std::string spec =
+      testing::WriteFile("process_quick.yaml", "algorithms: [hc4]\nproblems: [chain]\n");
+  const testing::Result r = Icpbench("run " + spec + " --out /sys/kernel");
+  EXPECT_EQ(r.exit_code, 3) << r.out;
+  EXPECT_NE(r.out.find("permissions"), std::string::npos) << r.out;
+}
+
+TEST(RunnerProcessTest, CliDescriptorExhaustionIsTheEnvironmentAndLeavesNoWorker) {
+  const std::string dir = FreshDir("cli_fds");
+  const std::string spec = testing::WriteFile(
+      "process_fds.yaml", "repetitions: 16\nalgorithms: [hc4]\nproblems: [chain]\n");
+  const testing::Result r = testing::RunCommand(
+      "ulimit -n 14 && " + std::string(ICPBENCH_BINARY), "run " + spec + " --out " + dir + " --jobs 8");
+  EXPECT_EQ(r.exit_code, 3) << r.out;
+  EXPECT_NE(r.out.find("ulimit -n"), std::string::npos) << r.out;
+  // What was stored is true: every stored run is ok.
+  if (std::filesystem::exists(StorePath(dir))) {
+    ResultsStore store(StorePath(dir));
+    for (const RunRecord& run : store.LoadRuns(false)) EXPECT_EQ(run.status, RunStatus::kOk) << run.reason;
+  }
+}
+
+}  // namespace
+}  // namespace icp
