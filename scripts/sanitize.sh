@@ -21,4 +21,8 @@ cmake --build build-asan -j"${ICPBENCH_JOBS:-2}"
 # processes and the icpbench commands the CLI tests start are checked.
 export ASAN_OPTIONS="handle_segv=0:handle_abort=0:exitcode=86:strict_string_checks=1:detect_stack_use_after_return=1"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
-ctest --test-dir build-asan --output-on-failure -j"${ICPBENCH_JOBS:-2}" ${ICPBENCH_ASAN_EXCLUDE:+-E "$ICPBENCH_ASAN_EXCLUDE"}
+# -E Oracle: the MPFR oracle suites (core/interval_oracle_test, 1e5 samples
+# each) ran past 180 s under ASan on 2 loaded cores; the Release suite runs
+# them. ICPBENCH_ASAN_EXCLUDE="" runs everything.
+exclude="${ICPBENCH_ASAN_EXCLUDE-Oracle}"
+ctest --test-dir build-asan --output-on-failure -j"${ICPBENCH_JOBS:-2}" ${exclude:+-E "$exclude"}
