@@ -8,8 +8,12 @@
 #include <chrono>
 #include <filesystem>
 #include <sstream>
+#include <stdexcept>
 #include <thread>
+#include <vector>
 
+#include "algorithms/fault/fault.h"
+#include "algorithms/registry.h"
 #include "harness/results_store.h"
 
 namespace icp {
@@ -74,6 +78,38 @@ problems: [chain]
   EXPECT_FALSE(by_mode["hc4"].provenance.git_revision.empty());
   EXPECT_FALSE(by_mode["hc4"].provenance.date.empty());
 }
+
+#if defined(__SANITIZE_ADDRESS__)
+// Only in the sanitizer build (scripts/sanitize.sh): a report in a forked
+// worker makes it exit with ASAN_OPTIONS' exitcode (86 there), and the harness
+// must record that run as failed, not as a finished one.
+class HeapOverflowEstimator : public Estimator {
+ public:
+  StepResult Step(const Views&, const StopCondition&) override {
+    std::vector<int> v(4);
+    volatile int* p = v.data();
+    const int past_the_end = p[v.size()];  // heap-buffer-overflow: ASan reports it
+    throw std::runtime_error("not reported: " + std::to_string(past_the_end));
+  }
+};
+std::unique_ptr<Estimator> MakeHeapOverflow(const ParamMap&, std::uint64_t) {
+  return std::make_unique<HeapOverflowEstimator>();
+}
+
+TEST(RunnerTest, ASanReportInAWorkerFailsItsRun) {
+  RegisterAlgorithm({"asan-overflow", "a heap-buffer-overflow (sanitizer build only)",
+                     &MakeHeapOverflow, &DefaultParams<FaultParams>, &ResolveParams<FaultParams>,
+                     View::kCsp, {"asan-overflow", 900, "#7f7f7f"}, nullptr, true});
+  const std::string dir = FreshDir("asan");
+  SweepSummary s = Sweep("algorithms: [asan-overflow]\nproblems: [chain]\n", dir);
+  EXPECT_EQ(s.failed, 1);
+  EXPECT_EQ(s.ok, 0);
+  std::vector<RunRecord> runs = ResultsStore(StorePath(dir)).LoadRuns(false);
+  ASSERT_EQ(runs.size(), 1u);
+  EXPECT_EQ(runs[0].status, RunStatus::kFailed);
+  EXPECT_NE(runs[0].reason.find("worker exited with code"), std::string::npos) << runs[0].reason;
+}
+#endif
 
 TEST(RunnerTest, RerunSkipsStoredRunsAndForceRerunsThem) {
   const std::string dir = FreshDir("resume");

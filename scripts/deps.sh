@@ -9,6 +9,7 @@ packages=(
   libboost-iostreams-dev libboost-filesystem-dev libboost-system-dev
   libgtest-dev libgmock-dev libbenchmark-dev libmpfr-dev libgmp-dev
   gnuplot-nox libgnuplot-iostream-dev
+  clang libclang-rt-14-dev  # scripts/fuzz.sh: clang++ and its libFuzzer/ASan runtimes
 )
 missing=()
 for p in "${packages[@]}"; do
