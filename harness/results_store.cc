@@ -243,7 +243,12 @@ sqlite3* Open(const std::string& path, int flags) {
   if (sqlite3_open_v2(path.c_str(), &db, flags, nullptr) != SQLITE_OK) {
     std::string message = "cannot open: ";
     message += db != nullptr ? sqlite3_errmsg(db) : "out of memory";
+    // The OS's reason: descriptors, permissions or memory are the environment.
+    const int os_error = db != nullptr ? sqlite3_system_errno(db) : ENOMEM;
     sqlite3_close_v2(db);
+    if (IsEnvironmentErrno(os_error))
+      throw EnvironmentError("results store '" + path + "': " + message + ": " +
+                             std::strerror(os_error) + " (" + EnvironmentAdvice(os_error) + ")");
     std::error_code ec;
     std::filesystem::path parent = std::filesystem::path(path).parent_path();
     if (!parent.empty() && !std::filesystem::is_directory(parent, ec)) {

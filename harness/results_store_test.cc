@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sqlite3.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -22,6 +23,7 @@
 #include <thread>
 #include <vector>
 
+#include "harness/environment_error.h"
 #include "harness/metrics.h"
 
 namespace icp {
@@ -433,6 +435,34 @@ TEST(ResultsStoreTest, MergeFromMissingStoreFailsAndCreatesNothing) {
     EXPECT_NE(std::string(e.what()).find(missing), std::string::npos) << e.what();
   }
   EXPECT_FALSE(std::filesystem::exists(missing));
+}
+
+// Out of file descriptors when the store is opened: the environment (exit
+// code 3 in the CLI), not bad input. Run in a child, whose limit is lowered
+// to the descriptors it already has.
+TEST(ResultsStoreTest, NoDescriptorLeftToOpenIsTheEnvironment) {
+  const std::string path = FreshPath("no_fd");
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    // Less one: the listing's own descriptor, closed once it is read.
+    const auto open_now = std::distance(std::filesystem::directory_iterator("/proc/self/fd"),
+                                        std::filesystem::directory_iterator{}) - 1;
+    const rlimit limit{static_cast<rlim_t>(open_now), static_cast<rlim_t>(open_now)};
+    setrlimit(RLIMIT_NOFILE, &limit);
+    try {
+      ResultsStore store(path);
+    } catch (const EnvironmentError& e) {
+      _exit(std::string(e.what()).find("ulimit -n") != std::string::npos ? 0 : 2);
+    } catch (...) {
+      _exit(3);
+    }
+    _exit(4);
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "2: no advice, 3: another error, 4: opened";
 }
 
 TEST(ResultsStoreTest, BadPathsSayWhatAndWhere) {
