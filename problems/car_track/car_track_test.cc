@@ -503,6 +503,9 @@ TEST(CarTrackTest, RegistryRejectsBadParameters) {
   const std::string directory = ErrorOf([&] { info.resolve("car-track", {{"log", "/tmp"}}); });
   EXPECT_NE(directory.find("/tmp: is a directory, not a log file"), std::string::npos)
       << directory;
+  // A device would be read without end (found while fuzzing specs).
+  const std::string device = ErrorOf([&] { info.resolve("car-track", {{"log", "/dev/zero"}}); });
+  EXPECT_NE(device.find("/dev/zero: is not a regular file"), std::string::npos) << device;
   EXPECT_EQ(info.make({{"steps", "30"}}, 1)->NumSteps(), 30);
   EXPECT_EQ(info.offers, std::vector<View>{View::kCsp});
   // The run key holds every effective parameter, in canonical spelling.
