@@ -225,10 +225,12 @@ void Exec(sqlite3* db, const std::string& path, const char* sql) {
   }
 }
 
-// Runs body inside BEGIN IMMEDIATE ... COMMIT, rolling back if it throws.
+// Runs body inside BEGIN IMMEDIATE (a writer; or `begin`) ... COMMIT, rolling
+// back if it throws.
 template <class Body>
-void InTransaction(sqlite3* db, const std::string& path, Body&& body) {
-  Exec(db, path, "BEGIN IMMEDIATE");
+void InTransaction(sqlite3* db, const std::string& path, Body&& body,
+                   const char* begin = "BEGIN IMMEDIATE") {
+  Exec(db, path, begin);
   try {
     body();
     Exec(db, path, "COMMIT");
@@ -475,6 +477,23 @@ Attempt AttemptOf(const RunRecord& run) {
   return a;
 }
 
+// Reads status, reason, wall_time_s, timeout_s, steps, date, git_revision
+// and machine from columns first, first + 1, ... into a (a.run_key is set).
+void ReadAttemptFields(const Statement& q, int first, const std::string& path, Attempt* a) {
+  try {
+    a->status = ParseRunStatus(q.ColumnText(first));
+  } catch (const std::invalid_argument& e) {
+    throw StoreError("results store '" + path + "': run '" + a->run_key + "': " + e.what());
+  }
+  a->reason = q.ColumnText(first + 1);
+  a->wall_time_s = q.ColumnDouble(first + 2);
+  a->timeout_s = q.ColumnDouble(first + 3);
+  a->steps = static_cast<int>(q.ColumnInt(first + 4));
+  a->date = q.ColumnText(first + 5);
+  a->git_revision = q.ColumnText(first + 6);
+  a->machine = q.ColumnText(first + 7);
+}
+
 // The summary of the stored run with this key, and its id; nullopt if none.
 std::optional<std::pair<std::int64_t, Attempt>> StoredSummary(sqlite3* db, const std::string& path,
                                                               const std::string& key) {
@@ -485,18 +504,7 @@ std::optional<std::pair<std::int64_t, Attempt>> StoredSummary(sqlite3* db, const
   if (!find.Step()) return std::nullopt;
   Attempt a;
   a.run_key = key;
-  try {
-    a.status = ParseRunStatus(find.ColumnText(1));
-  } catch (const std::invalid_argument& e) {
-    throw StoreError("results store '" + path + "': run '" + key + "': " + e.what());
-  }
-  a.reason = find.ColumnText(2);
-  a.wall_time_s = find.ColumnDouble(3);
-  a.timeout_s = find.ColumnDouble(4);
-  a.steps = static_cast<int>(find.ColumnInt(5));
-  a.date = find.ColumnText(6);
-  a.git_revision = find.ColumnText(7);
-  a.machine = find.ColumnText(8);
+  ReadAttemptFields(find, 1, path, &a);
   return std::make_pair(find.ColumnInt(0), a);
 }
 
@@ -766,18 +774,7 @@ std::vector<Attempt> ReadAttempts(sqlite3* db, const std::string& path, int vers
     Attempt a;
     a.run_key = q.ColumnText(0);
     a.attempt = static_cast<int>(q.ColumnInt(1));
-    try {
-      a.status = ParseRunStatus(q.ColumnText(2));
-    } catch (const std::invalid_argument& e) {
-      throw StoreError("results store '" + path + "': attempt of '" + a.run_key + "': " + e.what());
-    }
-    a.reason = q.ColumnText(3);
-    a.wall_time_s = q.ColumnDouble(4);
-    a.timeout_s = q.ColumnDouble(5);
-    a.steps = static_cast<int>(q.ColumnInt(6));
-    a.date = q.ColumnText(7);
-    a.git_revision = q.ColumnText(8);
-    a.machine = q.ColumnText(9);
+    ReadAttemptFields(q, 2, path, &a);
     attempts.push_back(std::move(a));
   }
   return attempts;
@@ -786,14 +783,7 @@ std::vector<Attempt> ReadAttempts(sqlite3* db, const std::string& path, int vers
 // Runs body inside one read transaction (one snapshot for all its queries).
 template <class Body>
 void InReadTransaction(sqlite3* db, const std::string& path, Body&& body) {
-  Exec(db, path, "BEGIN");
-  try {
-    body();
-    Exec(db, path, "COMMIT");
-  } catch (...) {
-    sqlite3_exec(db, "ROLLBACK", nullptr, nullptr, nullptr);
-    throw;
-  }
+  InTransaction(db, path, std::forward<Body>(body), "BEGIN");
 }
 
 // Opens an existing store file for reading only. Without a -wal file no
