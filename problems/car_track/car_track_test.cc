@@ -157,7 +157,9 @@ TEST(CarTrackTest, WindowGrowsToWStepsThenSlides) {
     EXPECT_EQ(step.views.space.y, 1);
     EXPECT_EQ(step.views.space.Period(2), 2 * kPi);
     // The oldest heading is unknown, [-pi, pi], once the window slides.
-    if (oldest > 0) EXPECT_NEAR(Csp(step).domains()[2].Width(), 2 * kPi, 1e-9);
+    if (oldest > 0) {
+      EXPECT_NEAR(Csp(step).domains()[2].Width(), 2 * kPi, 1e-9);
+    }
     EXPECT_FALSE(n > 0 && Csp(step).domains()[5].IsBounded());
     ++k;
   }
