@@ -1,5 +1,8 @@
 #include "core/view.h"
 
+#include <algorithm>
+#include <stdexcept>
+
 namespace icp {
 
 std::string_view ToString(View view) {
@@ -9,6 +12,20 @@ std::string_view ToString(View view) {
     case View::kProbabilistic: return "probabilistic";
   }
   return "?";
+}
+
+Box NewestState(const CspView& view, const Box& box, int size) {
+  Box newest(static_cast<std::size_t>(size));
+  std::vector<bool> found(newest.size(), false);
+  for (std::size_t i = 0; i < view.states.size(); ++i) {
+    const StateRef& s = view.states[i];
+    if (s.time != view.newest) continue;
+    newest[s.component] = box[i];
+    found[s.component] = true;
+  }
+  if (std::find(found.begin(), found.end(), false) != found.end())
+    throw std::invalid_argument("the CSP view lacks a variable for some component of the newest state");
+  return newest;
 }
 
 bool Views::Offers(View view) const {

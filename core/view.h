@@ -49,6 +49,12 @@ struct CspView {
   int newest = 0;
 };
 
+// The newest state's components of box, a box over view.csp's variables:
+// one interval per component of a `size`-component state space. Throws
+// std::invalid_argument when the view lacks a newest-state variable for some
+// component (a problem's bug).
+Box NewestState(const CspView& view, const Box& box, int size);
+
 struct MeasurementSetView {
   // The search box: every component of the state.
   Box prior;

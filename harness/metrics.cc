@@ -96,15 +96,9 @@ double Representative(double truth, double period, const Interval& x) {
 
 // The box every estimate of the step lies in.
 Box Domains(const Views& views) {
-  Box region(static_cast<std::size_t>(views.space.size()));
-  if (views.csp) {
-    const CspView& v = *views.csp;
-    for (std::size_t i = 0; i < v.states.size(); ++i)
-      if (v.states[i].time == v.newest) region[v.states[i].component] = v.csp.domains()[i];
-  } else if (views.measurement_set) {
-    region = views.measurement_set->prior;
-  }
-  return region;
+  if (views.csp) return NewestState(*views.csp, views.csp->csp.domains(), views.space.size());
+  if (views.measurement_set) return views.measurement_set->prior;
+  return Box(static_cast<std::size_t>(views.space.size()));
 }
 }  // namespace
 

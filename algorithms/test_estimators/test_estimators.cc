@@ -25,14 +25,6 @@ namespace {
 using Convert = std::function<std::unique_ptr<Estimate>(const Box& box, const Box& domains,
                                                          const StateSpace& space)>;
 
-Box NewestDomains(const Views& views) {
-  const CspView& view = *views.csp;
-  Box domains(static_cast<std::size_t>(views.space.size()));
-  for (std::size_t i = 0; i < view.states.size(); ++i)
-    if (view.states[i].time == view.newest) domains[view.states[i].component] = view.csp.domains()[i];
-  return domains;
-}
-
 // HC4 over the window, then the box converted to another kind of estimate.
 class ConvertingEstimator : public Estimator {
  public:
@@ -46,7 +38,8 @@ class ConvertingEstimator : public Estimator {
         throw std::invalid_argument("test estimators need a planar position (x, y)");
       if (!(box[views.space.x].Width() < kInf) || !(box[views.space.y].Width() < kInf))
         throw std::runtime_error("unbounded x-y box at step " + std::to_string(views.step));
-      result.estimate = convert_(box, NewestDomains(views), views.space);
+      result.estimate = convert_(box, NewestState(*views.csp, views.csp->csp.domains(), views.space.size()),
+                                  views.space);
     }
     return result;
   }

@@ -96,16 +96,7 @@ StepResult WindowEstimator::Step(const Views& views, const StopCondition& stop) 
   total_work_ += result.summary.work;
   result.properties = WorkProperties(result.summary.work);
 
-  Box newest(static_cast<std::size_t>(views.space.size()));
-  std::vector<bool> found(newest.size(), false);
-  for (std::size_t i = 0; i < view.states.size(); ++i) {
-    const StateRef& s = view.states[i];
-    if (s.time != view.newest) continue;
-    newest[s.component] = box[i];
-    found[s.component] = true;
-  }
-  if (std::find(found.begin(), found.end(), false) != found.end())
-    throw std::invalid_argument("the CSP view lacks a variable for some component of the newest state");
+  Box newest = NewestState(view, box, views.space.size());
   if (box.IsEmpty()) newest.SetEmpty();
   result.estimate = std::make_unique<BoxEstimate>(std::move(newest));
 
