@@ -64,6 +64,16 @@ struct MeasurementSetView {
   // Which measurements are outliers (inconsistent with the truth), when the
   // truth is known; empty otherwise. For metrics, never for estimators.
   std::vector<bool> outliers;
+  // Which source (robot, sensor) made each measurement, numbered from 0, for
+  // solvers that fuse per-source results (the distributed accumulator of
+  // paper 003 §5.2.3); empty: one source.
+  std::vector<int> sources;
+  // For a stream of steps (a moving robot): a box enclosing every state of
+  // this step reachable from a state of `previous`, a box of the previous
+  // step's states (sound bounded-error motion); unset at the first step and
+  // for static problems. A solver running as a filter intersects prior with
+  // predict(its previous hull).
+  std::function<Box(const Box& previous)> predict;
 };
 
 struct ProbabilisticView {

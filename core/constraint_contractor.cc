@@ -1,0 +1,50 @@
+#include "core/constraint_contractor.h"
+
+namespace icp {
+
+namespace {
+// Repeating HC4Revise past this shrink ratio buys little; 50 passes bound
+// the slow geometric convergence of a constraint with repeated variables.
+constexpr double kRatio = 1e-3;
+constexpr int kMaxPasses = 50;
+}  // namespace
+
+ConstraintContractor::ConstraintContractor(std::shared_ptr<const CompiledSystem> system,
+                                           int constraint)
+    : system_(std::move(system)), constraint_(constraint),
+      slots_(static_cast<std::size_t>(system_->tape(constraint).size())) {}
+
+ContractSummary ConstraintContractor::Contract(Box& box, ContractContext&) {
+  ContractSummary summary;
+  if (box.IsEmpty()) {
+    summary.status = ContractStatus::kEmpty;
+    return summary;
+  }
+  const Box before = box;
+  const Tape& tape = system_->tape(constraint_);
+  for (int pass = 0; pass < kMaxPasses; ++pass) {
+    const Box start = box;
+    bool idempotent = false;
+    ++summary.work.revise_calls;
+    if (!tape.Revise(box, slots_, &idempotent)) {
+      box.SetEmpty();
+      break;
+    }
+    if (idempotent) break;
+    bool shrank = false;
+    for (int v : tape.variables()) shrank = shrank || ShrankByMoreThan(start[v], box[v], kRatio);
+    if (!shrank) break;
+  }
+  summary.status = StatusOf(before, box);
+  return summary;
+}
+
+std::vector<std::shared_ptr<Contractor>> ConstraintContractors(const ConstraintSystem& csp) {
+  auto system = std::make_shared<const CompiledSystem>(csp);
+  std::vector<std::shared_ptr<Contractor>> out;
+  for (int c = 0; c < system->num_constraints(); ++c)
+    out.push_back(std::make_shared<ConstraintContractor>(system, c));
+  return out;
+}
+
+}  // namespace icp
