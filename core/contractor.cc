@@ -45,43 +45,4 @@ ContractStatus StatusOf(const Box& before, const Box& after) {
   return before == after ? ContractStatus::kFixpoint : ContractStatus::kContracted;
 }
 
-namespace {
-// Adds a part's summary to the total; true when the part ended the
-// contraction (empty box or stop), with the total's status set.
-bool Absorb(const ContractSummary& part, Box& box, ContractSummary& total) {
-  total.work += part.work;
-  if (part.status == ContractStatus::kEmpty) box.SetEmpty();
-  if (part.status != ContractStatus::kEmpty && part.status != ContractStatus::kStopped) return false;
-  total.status = part.status;
-  total.message = part.message;
-  return true;
-}
-}  // namespace
-
-ContractSummary SequenceContractor::Contract(Box& box, ContractContext& context) {
-  const Box before = box;
-  ContractSummary summary;
-  ContractContext fresh(context.stop());
-  for (std::size_t i = 0; i < parts_.size(); ++i)
-    if (Absorb(parts_[i]->Contract(box, i == 0 ? context : fresh), box, summary)) return summary;
-  summary.status = StatusOf(before, box);
-  return summary;
-}
-
-ContractSummary FixpointContractor::Contract(Box& box, ContractContext& context) {
-  const Box start = box;
-  ContractSummary summary;
-  ContractContext fresh(context.stop());
-  for (int it = 0; it < max_iterations_; ++it) {
-    const Box before = box;
-    if (Absorb(inner_->Contract(box, it == 0 ? context : fresh), box, summary)) return summary;
-    bool shrank = false;
-    for (std::size_t i = 0; i < box.size() && !shrank; ++i)
-      shrank = ShrankByMoreThan(before[i], box[i], ratio_);
-    if (!shrank) break;
-  }
-  summary.status = StatusOf(start, box);
-  return summary;
-}
-
 }  // namespace icp

@@ -111,36 +111,6 @@ inline bool ShrankByMoreThan(const Interval& before, const Interval& after, doub
   return wb - wa > ratio * wb;
 }
 
-// Applies each contractor once, in order; stops early on an empty box. Only
-// the first part is told the context's changed variables: the later ones
-// also see what the earlier parts changed, so they are told that all did.
-class SequenceContractor : public Contractor {
- public:
-  explicit SequenceContractor(std::vector<std::unique_ptr<Contractor>> parts)
-      : parts_(std::move(parts)) {}
-  std::string_view Name() const override { return "sequence"; }
-  ContractSummary Contract(Box& box, ContractContext& context) override;
-
- private:
-  std::vector<std::unique_ptr<Contractor>> parts_;
-};
-
-// Repeats an inner contractor until no component shrinks by more than ratio
-// (relative width), the box is empty, or max_iterations is reached. Only the
-// first iteration is told the context's changed variables.
-class FixpointContractor : public Contractor {
- public:
-  FixpointContractor(std::unique_ptr<Contractor> inner, double ratio, int max_iterations)
-      : inner_(std::move(inner)), ratio_(ratio), max_iterations_(max_iterations) {}
-  std::string_view Name() const override { return "fixpoint"; }
-  ContractSummary Contract(Box& box, ContractContext& context) override;
-
- private:
-  std::unique_ptr<Contractor> inner_;
-  double ratio_;
-  int max_iterations_;
-};
-
 }  // namespace icp
 
 #endif  // ICPBENCH_CORE_CONTRACTOR_H_

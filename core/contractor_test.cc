@@ -1,4 +1,5 @@
 #include "core/contractor.h"
+#include "core/contractor_algebra.h"
 
 #include <gtest/gtest.h>
 
@@ -62,7 +63,7 @@ TEST(ContractorTest, AFreshContextSaysEveryVariableChanged) {
 // The later parts of a sequence see what the earlier ones changed as well.
 TEST(ContractorTest, SequenceTellsOnlyItsFirstPartWhatChanged) {
   std::vector<bool> seen;
-  std::vector<std::unique_ptr<Contractor>> parts;
+  SharedContractors parts;
   parts.push_back(std::make_unique<RecordAllChanged>(&seen));
   parts.push_back(std::make_unique<RecordAllChanged>(&seen));
   SequenceContractor seq(std::move(parts));
@@ -75,7 +76,7 @@ TEST(ContractorTest, SequenceTellsOnlyItsFirstPartWhatChanged) {
 }
 
 TEST(ContractorTest, SequenceAppliesEachPartOnceAndAddsTheirWork) {
-  std::vector<std::unique_ptr<Contractor>> parts;
+  SharedContractors parts;
   parts.push_back(std::make_unique<HalveUpper>(0));
   parts.push_back(std::make_unique<HalveUpper>(1));
   SequenceContractor seq(std::move(parts));
@@ -89,7 +90,7 @@ TEST(ContractorTest, SequenceAppliesEachPartOnceAndAddsTheirWork) {
 }
 
 TEST(ContractorTest, SequenceStopsAtAnEmptyBox) {
-  std::vector<std::unique_ptr<Contractor>> parts;
+  SharedContractors parts;
   parts.push_back(std::make_unique<MakeEmpty>());
   parts.push_back(std::make_unique<HalveUpper>(0));
   SequenceContractor seq(std::move(parts));

@@ -8,7 +8,7 @@
 
 #include "algorithms/hc4/hc4.h"
 #include "algorithms/registry.h"
-#include "core/contractor.h"
+#include "core/contractor_algebra.h"
 #include "core/plugin.h"
 
 namespace {
@@ -17,7 +17,7 @@ namespace {
 // ContractorFactory, as the in-tree algorithms have.
 std::unique_ptr<icp::Contractor> MakeHC4Twice(const icp::ParamMap& params,
                                               const icp::ConstraintSystem& csp) {
-  std::vector<std::unique_ptr<icp::Contractor>> passes;
+  icp::SharedContractors passes;
   passes.push_back(icp::MakeHC4(params, csp));
   passes.push_back(icp::MakeHC4(params, csp));
   return std::make_unique<icp::SequenceContractor>(std::move(passes));

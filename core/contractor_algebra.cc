@@ -1,0 +1,122 @@
+#include "core/contractor_algebra.h"
+
+#include <stdexcept>
+#include <string>
+
+#include "core/relaxed_intersection.h"
+
+namespace icp {
+
+namespace {
+// Adds a part's summary to the total; true when the part ended the
+// contraction (empty box or stop), with the total's status set.
+bool Absorb(const ContractSummary& part, Box& box, ContractSummary& total) {
+  total.work += part.work;
+  if (part.status == ContractStatus::kEmpty) box.SetEmpty();
+  if (part.status != ContractStatus::kEmpty && part.status != ContractStatus::kStopped) return false;
+  total.status = part.status;
+  total.message = part.message;
+  return true;
+}
+
+// Each part applied to its own copy of box; a part the stop condition cut
+// short, or never reached, leaves its copy as it was (sound). Sets
+// *stopped when that happened.
+std::vector<Box> ApplyEach(const SharedContractors& parts, const Box& box,
+                           ContractContext& context, WorkCounters& work, bool* stopped) {
+  std::vector<Box> out(parts.size(), box);
+  *stopped = false;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    if (context.stop().ShouldStop()) {
+      *stopped = true;
+      break;
+    }
+    ContractContext fresh(context.stop());
+    const ContractSummary s = parts[i]->Contract(out[i], fresh);
+    work += s.work;
+    if (s.status == ContractStatus::kEmpty) out[i].SetEmpty();
+    if (s.status == ContractStatus::kStopped) *stopped = true;
+  }
+  return out;
+}
+
+// Writes result (a subset of box, by construction) into box and sets the
+// summary's status.
+void Finish(const Box& result, bool stopped, Box& box, ContractSummary& summary) {
+  const Box before = box;
+  box = result;
+  if (box.IsEmpty()) box.SetEmpty();
+  summary.status = stopped && !box.IsEmpty() ? ContractStatus::kStopped : StatusOf(before, box);
+  if (summary.status == ContractStatus::kStopped) summary.message = "stopped before every part ran";
+}
+}  // namespace
+
+ContractSummary SequenceContractor::Contract(Box& box, ContractContext& context) {
+  const Box before = box;
+  ContractSummary summary;
+  ContractContext fresh(context.stop());
+  for (std::size_t i = 0; i < parts_.size(); ++i)
+    if (Absorb(parts_[i]->Contract(box, i == 0 ? context : fresh), box, summary)) return summary;
+  summary.status = StatusOf(before, box);
+  return summary;
+}
+
+ContractSummary FixpointContractor::Contract(Box& box, ContractContext& context) {
+  const Box start = box;
+  ContractSummary summary;
+  ContractContext fresh(context.stop());
+  for (int it = 0; it < max_iterations_; ++it) {
+    const Box before = box;
+    if (Absorb(inner_->Contract(box, it == 0 ? context : fresh), box, summary)) return summary;
+    bool shrank = false;
+    for (std::size_t i = 0; i < box.size() && !shrank; ++i)
+      shrank = ShrankByMoreThan(before[i], box[i], ratio_);
+    if (!shrank) break;
+  }
+  summary.status = StatusOf(start, box);
+  return summary;
+}
+
+ContractSummary IntersectionContractor::Contract(Box& box, ContractContext& context) {
+  ContractSummary summary;
+  if (box.IsEmpty()) return {ContractStatus::kEmpty, "", {}};
+  bool stopped = false;
+  Box result = box;
+  for (const Box& b : ApplyEach(parts_, box, context, summary.work, &stopped))
+    for (std::size_t d = 0; d < result.size(); ++d) result[d] = Intersect(result[d], b[d]);
+  Finish(result, stopped, box, summary);
+  return summary;
+}
+
+ContractSummary UnionContractor::Contract(Box& box, ContractContext& context) {
+  ContractSummary summary;
+  if (box.IsEmpty()) return {ContractStatus::kEmpty, "", {}};
+  bool stopped = false;
+  Box result(box.size());
+  result.SetEmpty();
+  for (const Box& b : ApplyEach(parts_, box, context, summary.work, &stopped)) {
+    if (b.IsEmpty()) continue;
+    for (std::size_t d = 0; d < result.size(); ++d) result[d] = Hull(result[d], b[d]);
+  }
+  Finish(result, stopped, box, summary);
+  return summary;
+}
+
+QIntersectionContractor::QIntersectionContractor(SharedContractors parts, int q)
+    : parts_(std::move(parts)), q_(q) {
+  if (q < 0) throw std::invalid_argument("q-intersection: q = " + std::to_string(q) + " must be >= 0");
+}
+
+ContractSummary QIntersectionContractor::Contract(Box& box, ContractContext& context) {
+  ContractSummary summary;
+  if (box.IsEmpty()) return {ContractStatus::kEmpty, "", {}};
+  if (q_ >= static_cast<int>(parts_.size())) return summary;
+  bool stopped = false;
+  const std::vector<Box> contracted = ApplyEach(parts_, box, context, summary.work, &stopped);
+  Box result = RelaxedIntersection(contracted, q_, box.size());
+  for (std::size_t d = 0; d < result.size(); ++d) result[d] = Intersect(result[d], box[d]);
+  Finish(result, stopped, box, summary);
+  return summary;
+}
+
+}  // namespace icp
