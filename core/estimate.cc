@@ -65,82 +65,58 @@ double PavingEstimate::Area(int x, int y) const {
 }
 
 Properties PavingEstimate::Extras() const {
-  return {{"inner_boxes", static_cast<std::int64_t>(inner_.size())},
+  return {{"boxes", static_cast<std::int64_t>(inner_.size() + boundary_.size())},
+          {"inner_boxes", static_cast<std::int64_t>(inner_.size())},
           {"boundary_boxes", static_cast<std::int64_t>(boundary_.size())}};
 }
 
 AccumulatorEstimate::AccumulatorEstimate(cv::Mat counts, Box search, int x, int y, int threshold)
-    : counts_(std::move(counts)), search_(std::move(search)), x_(x), y_(y), threshold_(threshold) {
+    : counts_(std::move(counts)),
+      grid_(std::move(search), x, y, std::max(counts_.cols, 1), std::max(counts_.rows, 1)),
+      threshold_(threshold) {
   if (counts_.type() != CV_32S || counts_.dims != 2 || counts_.empty())
     throw std::invalid_argument("AccumulatorEstimate: counts must be a non-empty CV_32S matrix");
-  if (search_.IsEmpty() || !(search_[x_].Width() < kInf) || !(search_[y_].Width() < kInf))
-    throw std::invalid_argument("AccumulatorEstimate: the search box must be bounded in x and y");
-}
-
-// Cell bounds are computed outward, so the cells cover the search box.
-Interval AccumulatorEstimate::CellX(int col) const {
-  const Interval& sx = search_[x_];
-  const Interval step = (Interval(sx.hi()) - Interval(sx.lo())) / Interval(counts_.cols);
-  return Interval(sx.lo()) + step * Interval(col, col + 1.0);
-}
-
-Interval AccumulatorEstimate::CellY(int row) const {
-  const Interval& sy = search_[y_];
-  const Interval step = (Interval(sy.hi()) - Interval(sy.lo())) / Interval(counts_.rows);
-  return Interval(sy.lo()) + step * Interval(row, row + 1.0);
-}
-
-bool AccumulatorEstimate::CellOf(double px, double py, int* row, int* col) const {
-  const Interval& sx = search_[x_];
-  const Interval& sy = search_[y_];
-  if (!sx.Contains(px) || !sy.Contains(py)) return false;
-  *col = std::min(counts_.cols - 1,
-                  static_cast<int>((px - sx.lo()) / (sx.hi() - sx.lo()) * counts_.cols));
-  *row = std::min(counts_.rows - 1,
-                  static_cast<int>((py - sy.lo()) / (sy.hi() - sy.lo()) * counts_.rows));
-  // The division may land a point on a border in the neighbouring cell.
-  while (*col > 0 && px < CellX(*col).lo()) --*col;
-  while (*col + 1 < counts_.cols && px > CellX(*col).hi()) ++*col;
-  while (*row > 0 && py < CellY(*row).lo()) --*row;
-  while (*row + 1 < counts_.rows && py > CellY(*row).hi()) ++*row;
-  return true;
 }
 
 Box AccumulatorEstimate::Hull() const {
-  Box hull = search_;
+  Box hull = grid_.search();
   Interval hx = Interval::Empty(), hy = Interval::Empty();
   for (int r = 0; r < counts_.rows; ++r)
     for (int c = 0; c < counts_.cols; ++c)
       if (counts_.at<std::int32_t>(r, c) >= threshold_) {
-        hx = icp::Hull(hx, CellX(c));
-        hy = icp::Hull(hy, CellY(r));
+        hx = icp::Hull(hx, grid_.CellX(c));
+        hy = icp::Hull(hy, grid_.CellY(r));
       }
-  hull[x_] = Intersect(hx, search_[x_]);
-  hull[y_] = Intersect(hy, search_[y_]);
-  if (hull[x_].IsEmpty()) hull.SetEmpty();
+  hull[grid_.x()] = hx;
+  hull[grid_.y()] = hy;
+  if (hx.IsEmpty()) hull.SetEmpty();
   return hull;
 }
 
 bool AccumulatorEstimate::Contains(const std::vector<double>& point) const {
-  for (int i = 0; i < static_cast<int>(search_.size()); ++i)
-    if (i != x_ && i != y_ && !search_[i].Contains(point[i])) return false;
-  int row = 0, col = 0;
-  if (!CellOf(point[x_], point[y_], &row, &col)) return false;
-  // A point on a cell border belongs to both cells.
-  for (int r = std::max(0, row - 1); r <= std::min(counts_.rows - 1, row + 1); ++r)
-    for (int c = std::max(0, col - 1); c <= std::min(counts_.cols - 1, col + 1); ++c)
-      if (counts_.at<std::int32_t>(r, c) >= threshold_ && CellX(c).Contains(point[x_]) &&
-          CellY(r).Contains(point[y_]))
-        return true;
+  const Box& search = grid_.search();
+  const int x = grid_.x(), y = grid_.y();
+  for (int i = 0; i < static_cast<int>(search.size()); ++i)
+    if (i != x && i != y && !search[i].Contains(point[i])) return false;
+  // A point on a cell border belongs to every cell it touches.
+  const auto [c0, c1] = grid_.ColsMeeting(Interval(point[x]));
+  const auto [r0, r1] = grid_.RowsMeeting(Interval(point[y]));
+  for (int r = r0; r < r1; ++r)
+    for (int c = c0; c < c1; ++c)
+      if (counts_.at<std::int32_t>(r, c) >= threshold_) return true;
   return false;
 }
 
 double AccumulatorEstimate::Area(int x, int y) const {
-  if (!((x == x_ && y == y_) || (x == y_ && y == x_)))
+  if (!((x == grid_.x() && y == grid_.y()) || (x == grid_.y() && y == grid_.x())))
     throw std::invalid_argument("AccumulatorEstimate: area over components other than its grid's");
-  const double cells = cv::countNonZero(counts_ >= threshold_);
   ExactRounding rnd;
-  return rnd.mul_up(cells, rnd.mul_up(CellX(0).Width(), CellY(0).Width()));
+  double area = 0;
+  for (int r = 0; r < counts_.rows; ++r)
+    for (int c = 0; c < counts_.cols; ++c)
+      if (counts_.at<std::int32_t>(r, c) >= threshold_)
+        area = rnd.add_up(area, rnd.mul_up(grid_.CellX(c).Width(), grid_.CellY(r).Width()));
+  return area;
 }
 
 Properties AccumulatorEstimate::Extras() const {

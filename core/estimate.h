@@ -19,6 +19,7 @@
 #include <opencv2/core.hpp>
 
 #include "core/box.h"
+#include "core/grid.h"
 
 namespace icp {
 
@@ -112,16 +113,12 @@ class AccumulatorEstimate : public Estimate {
   double Area(int x, int y) const override;
   Properties Extras() const override;
   const cv::Mat& counts() const { return counts_; }
+  const Grid& grid() const { return grid_; }
+  int threshold() const { return threshold_; }
 
  private:
-  // The cell of (px, py), or false when outside the grid.
-  bool CellOf(double px, double py, int* row, int* col) const;
-  Interval CellX(int col) const;
-  Interval CellY(int row) const;
-
   cv::Mat counts_;
-  Box search_;  // every component; x and y are the grid's extent
-  int x_, y_;
+  Grid grid_;
   int threshold_;
 };
 

@@ -1,0 +1,91 @@
+#include "core/accumulator.h"
+
+#include <atomic>
+#include <mutex>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+namespace icp {
+
+namespace {
+struct Raster {
+  const Grid& grid;
+  Contractor& contractor;
+  const StopCondition& stop;
+  cv::Mat& counts;  // CV_32S, this task's own
+  WorkCounters work;
+  bool stopped = false;
+
+  void Count(int r0, int r1, int c0, int c1) {
+    for (int r = r0; r < r1; ++r)
+      for (int c = c0; c < c1; ++c) ++counts.at<std::int32_t>(r, c);
+  }
+
+  // Marks the cells of block [r0, r1) x [c0, c1) that the contractor cannot reject.
+  void Mark(int r0, int r1, int c0, int c1) {
+    if (stopped || stop.ShouldStop()) {
+      stopped = true;
+      Count(r0, r1, c0, c1);
+      return;
+    }
+    Box box = grid.Block(r0, r1, c0, c1);
+    ContractContext context(stop);
+    const ContractSummary s = contractor.Contract(box, context);
+    work += s.work;
+    if (s.status == ContractStatus::kEmpty || box.IsEmpty()) return;
+    // Only the cells meeting the contracted box can hold a point it keeps.
+    const auto [nc0, nc1] = grid.ColsMeeting(box[grid.x()]);
+    const auto [nr0, nr1] = grid.RowsMeeting(box[grid.y()]);
+    c0 = std::max(c0, nc0), c1 = std::min(c1, nc1);
+    r0 = std::max(r0, nr0), r1 = std::min(r1, nr1);
+    if (r0 >= r1 || c0 >= c1) return;
+    if (r1 - r0 == 1 && c1 - c0 == 1) {
+      ++counts.at<std::int32_t>(r0, c0);
+      return;
+    }
+    if (s.status == ContractStatus::kStopped) {
+      stopped = true;
+      Count(r0, r1, c0, c1);
+      return;
+    }
+    if (r1 - r0 >= c1 - c0) {
+      const int mid = r0 + (r1 - r0) / 2;
+      Mark(r0, mid, c0, c1);
+      Mark(mid, r1, c0, c1);
+    } else {
+      const int mid = c0 + (c1 - c0) / 2;
+      Mark(r0, r1, c0, mid);
+      Mark(r0, r1, mid, c1);
+    }
+  }
+};
+}  // namespace
+
+cv::Mat Accumulate(const Grid& grid, const SharedContractors& measurements,
+                   const StopCondition& stop, WorkCounters* work, bool* stopped) {
+  tbb::enumerable_thread_specific<cv::Mat> partial(
+      [&] { return cv::Mat(grid.rows(), grid.cols(), CV_32S, cv::Scalar(0)); });
+  std::mutex work_mutex;
+  WorkCounters total;
+  std::atomic<bool> any_stopped = false;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, measurements.size(), 1),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      cv::Mat& counts = partial.local();
+                      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                        Raster raster{grid, *measurements[i], stop, counts, {}};
+                        raster.Mark(0, grid.rows(), 0, grid.cols());
+                        if (raster.stopped) any_stopped = true;
+                        std::lock_guard<std::mutex> lock(work_mutex);
+                        total += raster.work;
+                      }
+                    });
+  cv::Mat counts(grid.rows(), grid.cols(), CV_32S, cv::Scalar(0));
+  for (const cv::Mat& p : partial) counts += p;
+  if (work) *work += total;
+  if (stopped) *stopped = any_stopped;
+  return counts;
+}
+
+}  // namespace icp

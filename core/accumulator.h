@@ -1,0 +1,31 @@
+// The discrete accumulator (paper 003 §5.2.2): over a grid of the search
+// box, the number of measurements whose contractor cannot reject each cell,
+// the upper bound [A*]^+ of eq. 5.28. Every point that satisfies k
+// measurements lies in a cell counting at least k (prop. 32), so the cells
+// counting >= m - q enclose the q-relaxed solution set.
+//
+// A measurement's band is rasterised by its own contractor instead of
+// testing every cell: a block of cells is contracted, shrunk to the cells
+// meeting what is left, and split in two until single cells remain, so the
+// cost grows with the cells the band crosses, not with the grid.
+// Measurements are counted in parallel (TBB), one contractor per task.
+#ifndef ICPBENCH_CORE_ACCUMULATOR_H_
+#define ICPBENCH_CORE_ACCUMULATOR_H_
+
+#include <opencv2/core.hpp>
+
+#include "core/contractor_algebra.h"
+#include "core/grid.h"
+
+namespace icp {
+
+// Counts (CV_32S, grid.rows() x grid.cols()) of measurements that cannot
+// reject each cell. When stop fires, the blocks not yet examined are counted
+// for every measurement they were pending for (sound) and *stopped is set.
+cv::Mat Accumulate(const Grid& grid, const SharedContractors& measurements,
+                   const StopCondition& stop, WorkCounters* work = nullptr,
+                   bool* stopped = nullptr);
+
+}  // namespace icp
+
+#endif  // ICPBENCH_CORE_ACCUMULATOR_H_

@@ -1,0 +1,116 @@
+#include "core/box_polynomial.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "core/random.h"
+
+namespace icp {
+namespace {
+
+// The minimal contractor of a fixed box.
+class ClipTo : public Contractor {
+ public:
+  explicit ClipTo(Box set) : set_(std::move(set)) {}
+  std::string_view Name() const override { return "clip"; }
+  ContractSummary Contract(Box& box, ContractContext&) override {
+    const Box before = box;
+    for (std::size_t d = 0; d < box.size(); ++d) box[d] = Intersect(box[d], set_[d]);
+    if (box.IsEmpty()) box.SetEmpty();
+    return {StatusOf(before, box), "", {1, 0, 0, 0}};
+  }
+
+ private:
+  Box set_;
+};
+
+Box HullOf(const Box& a, const Box& b) {
+  if (a.IsEmpty()) return b;
+  if (b.IsEmpty()) return a;
+  Box out(a.size());
+  for (std::size_t d = 0; d < a.size(); ++d) out[d] = Hull(a[d], b[d]);
+  return out;
+}
+
+// Coefficient j of the expanded sort transform (eq. 5.7): the hull over the
+// subsets of j contractors of their composition applied to x.
+std::vector<Box> BruteForce(const Box& x, const SharedContractors& cs) {
+  const int n = static_cast<int>(cs.size());
+  std::vector<Box> out(n + 1, Box(x.size()));
+  for (Box& b : out) b.SetEmpty();
+  for (int mask = 0; mask < (1 << n); ++mask) {
+    Box box = x;
+    for (int i = 0; i < n && !box.IsEmpty(); ++i)
+      if (mask & (1 << i)) {
+        ContractContext context;
+        cs[i]->Contract(box, context);
+      }
+    const int j = __builtin_popcount(mask);
+    out[j] = HullOf(out[j], box);
+  }
+  return out;
+}
+
+Box RandomBoxAround(RandomEngine& rng, const std::vector<double>& centre, double spread) {
+  Box b(centre.size());
+  for (std::size_t d = 0; d < centre.size(); ++d)
+    b[d] = Interval(centre[d] - UniformReal(rng, 0, spread), centre[d] + UniformReal(rng, 0, spread));
+  return b;
+}
+
+TEST(BoxPolynomialTest, ByHandOnIntervals) {
+  // Sets [0, 2], [1, 3], [5, 6] on x = [-10, 10] (Fig. 5.1): degree 1 is
+  // their hull, degree 2 the overlap [1, 2], degree 3 nothing.
+  const SharedContractors cs = {std::make_shared<ClipTo>(Box{{0, 2}}),
+                                std::make_shared<ClipTo>(Box{{1, 3}}),
+                                std::make_shared<ClipTo>(Box{{5, 6}})};
+  const std::vector<Box> p = HornerSortTransform(Box{{-10, 10}}, cs, StopCondition());
+  ASSERT_EQ(p.size(), 4u);
+  EXPECT_EQ(p[0], (Box{{-10, 10}}));
+  EXPECT_EQ(p[1], (Box{{0, 6}}));
+  EXPECT_EQ(p[2], (Box{{1, 2}}));
+  EXPECT_TRUE(p[3].IsEmpty());
+}
+
+TEST(BoxPolynomialTest, EqualsTheBruteForceUnionWhenTheSetsShareAPoint) {
+  // When every subset's intersection is non-empty, clipping distributes over
+  // the hull and the Horner scheme is exactly the expanded polynomial.
+  RandomEngine rng(3);
+  for (int trial = 0; trial < 50; ++trial) {
+    const int n = UniformInt(rng, 1, 7);
+    SharedContractors cs;
+    for (int i = 0; i < n; ++i)
+      cs.push_back(std::make_shared<ClipTo>(RandomBoxAround(rng, {1.0, -2.0}, 3)));
+    const Box x{{-10, 10}, {-10, 10}};
+    EXPECT_EQ(HornerSortTransform(x, cs, StopCondition()), BruteForce(x, cs)) << trial;
+  }
+}
+
+TEST(BoxPolynomialTest, EnclosesTheBruteForceUnionAlways) {
+  RandomEngine rng(4);
+  for (int trial = 0; trial < 50; ++trial) {
+    const int n = UniformInt(rng, 1, 7);
+    SharedContractors cs;
+    for (int i = 0; i < n; ++i)
+      cs.push_back(std::make_shared<ClipTo>(
+          RandomBoxAround(rng, {UniformReal(rng, -5, 5), UniformReal(rng, -5, 5)}, 2)));
+    const Box x{{-10, 10}, {-10, 10}};
+    const std::vector<Box> horner = HornerSortTransform(x, cs, StopCondition());
+    const std::vector<Box> brute = BruteForce(x, cs);
+    for (int j = 0; j <= n; ++j) EXPECT_TRUE(brute[j].IsSubsetOf(horner[j])) << trial << " " << j;
+  }
+}
+
+TEST(BoxPolynomialTest, ASkippedContractorCountsAsTheIdentity) {
+  const SharedContractors cs = {std::make_shared<ClipTo>(Box{{0, 2}})};
+  bool stopped = false;
+  const std::vector<Box> p =
+      HornerSortTransform(Box{{-10, 10}}, cs, StopCondition::After(std::chrono::seconds(0)),
+                          nullptr, &stopped);
+  EXPECT_TRUE(stopped);
+  EXPECT_EQ(p[1], (Box{{-10, 10}}));
+}
+
+}  // namespace
+}  // namespace icp
