@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <stdexcept>
+#include <vector>
 
 #include "core/contractor.h"
 #include "core/estimate.h"
@@ -27,6 +28,9 @@ struct StepResult {
   // leave out setup (WindowEstimator: compiling the step's CSP); negative:
   // the harness times the whole Step.
   double solve_time_s = -1;
+  // For relaxed solvers that compute every number of outliers at once (the
+  // contractor polynomial): the hull of the solution set for q = 0..m.
+  std::vector<Box> hulls_by_q;
 };
 
 // Thrown by an estimator that finds its own result broken (a contractor that

@@ -2,11 +2,14 @@
 
 #include <stdexcept>
 
+#include "algorithms/accumulator/accumulator.h"
 #include "algorithms/bc3/bc3.h"
 #include "algorithms/bc4/bc4.h"
 #include "algorithms/fault/fault.h"
 #include "algorithms/hc3/hc3.h"
 #include "algorithms/hc4/hc4.h"
+#include "algorithms/polynomial/polynomial.h"
+#include "algorithms/q_relaxed/q_relaxed.h"
 #include "algorithms/test_estimators/test_estimators.h"
 #include "algorithms/three_b/three_b.h"
 
@@ -33,6 +36,15 @@ std::vector<AlgorithmInfo>& Table() {
       CspAlgorithm<ThreeBParams<HC4Params>, &MakeThreeBHC4>(
           "3b-hc4", "3B consistency: bounds shaved in slices refuted by HC4",
           {"3B-HC4", 60, "#9467bd"}),
+      {"q-relaxed", "q-relaxed intersection of the measurement contractors, to a fixpoint or paved (RSIVIA)",
+       &MakeQRelaxed, &DefaultParams<QRelaxedParams>, &ResolveParams<QRelaxedParams>,
+       View::kMeasurementSet, {"q-relaxed", 100, "#17a2b8"}},
+      {"polynomial", "contractor polynomial by the Horner scheme: the set for every number of outliers",
+       &MakePolynomial, &DefaultParams<PolynomialParams>, &ResolveParams<PolynomialParams>,
+       View::kMeasurementSet, {"polynomial", 110, "#6f42c1"}},
+      {"accumulator", "grid accumulator of the measurements (OpenCV, TBB); cells with the highest count",
+       &MakeAccumulator, &DefaultParams<AccumulatorParams>, &ResolveParams<AccumulatorParams>,
+       View::kMeasurementSet, {"accumulator", 120, "#e83e8c"}},
       {"fault", "not an algorithm: injects a crash, hang, exception or bad box (harness tests)",
        &MakeFault, &DefaultParams<FaultParams>, &ResolveParams<FaultParams>, View::kCsp,
        {"fault", 900, "#7f7f7f"}, nullptr, true},

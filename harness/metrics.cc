@@ -121,6 +121,11 @@ StepRecord MeasureStep(const Step& step, const Estimate& estimate) {
     r.vars.push_back(v);
   }
   r.contained = known ? (!empty && estimate.Contains(truth) ? 1 : 0) : -1;
+  // The truth's outlier count, to compare with the q a relaxed solver found.
+  if (step.views.measurement_set && !step.views.measurement_set->outliers.empty()) {
+    const auto& o = step.views.measurement_set->outliers;
+    r.properties.push_back({"true_outliers", static_cast<std::int64_t>(std::count(o.begin(), o.end(), true))});
+  }
   r.area = kNaN;
   r.centre_error = kNaN;
   if (space.x >= 0 && space.y >= 0 && !empty) {

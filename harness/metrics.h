@@ -16,7 +16,9 @@ namespace icp {
 // (paper 004 eq. 31), the x-y area and the centre error. A periodic
 // component's truth is moved by the multiple of its period nearest to the
 // hull's midpoint, so a heading estimated in another frame (2 pi apart) is
-// judged exactly. status, solve time and properties are left to the caller.
+// judged exactly. With a measurement-set view whose outliers are known, the
+// property `true_outliers` (their number). status, solve time and the
+// estimator's properties are left to the caller.
 StepRecord MeasureStep(const Step& step, const Estimate& estimate);
 
 // Why an estimate cannot be the answer to the step, or "" when it can: a

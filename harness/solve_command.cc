@@ -5,9 +5,12 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <type_traits>
+#include <variant>
 
 #include "algorithms/registry.h"
 #include "core/minibex_parser.h"
+#include "problems/registry.h"
 
 namespace icp {
 
@@ -40,20 +43,44 @@ SolveResult Solve(const SolveOptions& options) {
   SolveResult result;
   result.algorithm = info.name;
   result.csp = ParseMinibexFile(options.file);
-  if (info.contractor == nullptr)
-    throw std::invalid_argument("solve: '" + info.name + "' is not a CSP contractor (it runs through `icpbench run`)");
   const ParamMap params = ParseKeyValues(options.params);
   info.resolve(info.name, params);  // every key checked, `carry` included
-  std::unique_ptr<Contractor> contractor = info.contractor(ContractorParams(params), result.csp);
   std::vector<double> times;
-  for (int r = 0; r < options.repeat; ++r) {
-    Box box = result.csp.domains();
-    ContractContext context;
-    auto start = std::chrono::steady_clock::now();
-    ContractSummary summary = contractor->Contract(box, context);
-    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    result.box = box;
-    result.summary = summary;
+  if (info.contractor != nullptr) {
+    std::unique_ptr<Contractor> contractor = info.contractor(ContractorParams(params), result.csp);
+    for (int r = 0; r < options.repeat; ++r) {
+      Box box = result.csp.domains();
+      ContractContext context;
+      auto start = std::chrono::steady_clock::now();
+      ContractSummary summary = contractor->Contract(box, context);
+      times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      result.box = box;
+      result.summary = summary;
+    }
+  } else if (info.needs == View::kMeasurementSet) {
+    // The file as the minibex-file problem offers it: one measurement per constraint.
+    Step step;
+    FindProblem("minibex-file").make({{"file", options.file}}, 0)->Next(&step);
+    if (!step.views.Offers(info.needs))
+      throw std::invalid_argument("solve: the minibex-file problem offers no measurement-set view");
+    for (int r = 0; r < options.repeat; ++r) {
+      std::unique_ptr<Estimator> estimator = info.make(params, 0);
+      auto start = std::chrono::steady_clock::now();
+      StepResult step_result = estimator->Step(step.views, StopCondition());
+      times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      result.box = step_result.estimate->Hull();
+      result.summary = step_result.summary;
+      result.relaxed = true;
+      for (const Property& p : step_result.properties)
+        if (p.name == "q") result.q = static_cast<int>(std::get<std::int64_t>(p.value));
+      result.estimate_kind = std::string(step_result.estimate->Kind());
+      result.estimate_extras = step_result.estimate->Extras();
+      result.hulls_by_q = std::move(step_result.hulls_by_q);
+    }
+  } else {
+    throw std::invalid_argument("solve: '" + info.name + "' needs the " +
+                                std::string(ToString(info.needs)) +
+                                " view, which a Minibex file does not offer (run it through `icpbench run`)");
   }
   std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
   result.time_s = times[times.size() / 2];
@@ -64,22 +91,44 @@ SolveResult Solve(const SolveOptions& options) {
   return result;
 }
 
+namespace {
+// {name: [lo, hi]}, infinite bounds null; {} for an empty box.
+nlohmann::ordered_json BoxToJson(const Box& box, const std::vector<std::string>& names) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  if (box.IsEmpty()) return out;
+  auto bound = [](double v) -> nlohmann::ordered_json {
+    if (std::isinf(v)) return nullptr;
+    return v;
+  };
+  for (std::size_t i = 0; i < names.size(); ++i)
+    out[names[i]] = {bound(box[i].lo()), bound(box[i].hi())};
+  return out;
+}
+
+const char* StatusOf(const Box& box) { return box.IsEmpty() ? "empty" : "nonempty"; }
+}  // namespace
+
 std::string SolveResultToJson(const SolveResult& r) {
   nlohmann::ordered_json out;
-  const bool empty = r.box.IsEmpty();
   out["algorithm"] = r.algorithm;
-  out["status"] = empty ? "empty" : "nonempty";
-  out["box"] = nlohmann::ordered_json::object();
-  if (!empty) {
-    for (int i = 0; i < r.csp.num_variables(); ++i) {
-      auto bound = [](double v) -> nlohmann::ordered_json {
-        if (std::isinf(v)) return nullptr;
-        return v;
-      };
-      out["box"][r.csp.names()[i]] = {bound(r.box[i].lo()), bound(r.box[i].hi())};
+  out["status"] = StatusOf(r.box);
+  out["box"] = BoxToJson(r.box, r.csp.names());
+  out["time_s"] = r.time_s;
+  if (r.relaxed) {
+    out["q"] = r.q;
+    nlohmann::ordered_json estimate;
+    estimate["kind"] = r.estimate_kind;
+    for (const Property& p : r.estimate_extras)
+      std::visit([&](const auto& v) { estimate[p.name] = v; }, p.value);
+    out["estimate"] = estimate;
+    if (!r.hulls_by_q.empty()) {
+      out["by_q"] = nlohmann::ordered_json::array();
+      for (std::size_t q = 0; q < r.hulls_by_q.size(); ++q)
+        out["by_q"].push_back({{"q", q},
+                               {"status", StatusOf(r.hulls_by_q[q])},
+                               {"box", BoxToJson(r.hulls_by_q[q], r.csp.names())}});
     }
   }
-  out["time_s"] = r.time_s;
   return out.dump();
 }
 
@@ -96,6 +145,16 @@ std::string SolveResultToText(const SolveResult& r) {
       name.resize(width, ' ');
       text += "  " + name + " in [" + Bound(r.box[i].lo()) + ", " + Bound(r.box[i].hi()) + "]\n";
     }
+  }
+  if (r.relaxed) {
+    text += "q: " + std::to_string(r.q) + " (outliers allowed)\n";
+    text += "estimate: " + r.estimate_kind;
+    for (const Property& p : r.estimate_extras)
+      std::visit([&](const auto& v) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::string>) text += ", " + p.name + " " + v;
+        else text += ", " + p.name + " " + FormatDouble(static_cast<double>(v));
+      }, p.value);
+    text += "\n";
   }
   text += "revise_calls: " + std::to_string(r.summary.work.revise_calls) + "\n";
   text += "time_s: " + Bound(r.time_s) + "\n";

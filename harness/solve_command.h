@@ -1,5 +1,8 @@
 // `icpbench solve FILE --algorithm NAME [--param k=v ...] [--format text|json]
-// [--repeat N]`: contracts the initial box of a Minibex file.
+// [--repeat N]`: contracts the initial box of a Minibex file with a CSP
+// contractor, or solves it as a relaxed CSP (q-relaxed, polynomial,
+// accumulator: each constraint is one measurement, the file's domains the
+// prior; see problems/minibex_file).
 #ifndef ICPBENCH_HARNESS_SOLVE_COMMAND_H_
 #define ICPBENCH_HARNESS_SOLVE_COMMAND_H_
 
@@ -10,6 +13,7 @@
 #include "core/box.h"
 #include "core/constraint_system.h"
 #include "core/contractor.h"
+#include "core/estimate.h"
 
 namespace icp {
 
@@ -27,6 +31,14 @@ struct SolveResult {
   Box box;
   ContractSummary summary;
   double time_s = 0;  // median over the repeats
+  // Relaxed solvers only (`relaxed` set): the q used or found, the
+  // estimate's kind and what it reports (Estimate::Extras), and for the
+  // polynomial the hull for every q = 0..m.
+  bool relaxed = false;
+  int q = 0;
+  std::string estimate_kind;
+  Properties estimate_extras;
+  std::vector<Box> hulls_by_q;
 };
 
 // Runs the contraction. Throws std::invalid_argument (bad algorithm,
@@ -35,6 +47,10 @@ SolveResult Solve(const SolveOptions& options);
 
 // The JSON contract: {"algorithm", "status": "empty"|"nonempty", "box":
 // {name: [lo, hi]}, "time_s"}; infinite bounds are null, an empty box is {}.
+// Relaxed solvers add "q", "estimate": {"kind": "box"|"paving"|
+// "accumulator", ...the estimate's extras ("boxes" for a paving, "max_count"
+// for an accumulator)}, and, when computed, "by_q": [{"q", "status", "box"}]
+// for q = 0..m. "box" is then the hull of the solution set.
 std::string SolveResultToJson(const SolveResult& result);
 std::string SolveResultToText(const SolveResult& result);
 

@@ -9,8 +9,8 @@
 // meeting what is left, and split in two until single cells remain, so the
 // cost grows with the cells the band crosses, not with the grid.
 // Measurements are counted in parallel (TBB), one contractor per task.
-#ifndef ICPBENCH_CORE_ACCUMULATOR_H_
-#define ICPBENCH_CORE_ACCUMULATOR_H_
+#ifndef ICPBENCH_CORE_ACCUMULATE_H_
+#define ICPBENCH_CORE_ACCUMULATE_H_
 
 #include <opencv2/core.hpp>
 
@@ -28,4 +28,4 @@ cv::Mat Accumulate(const Grid& grid, const SharedContractors& measurements,
 
 }  // namespace icp
 
-#endif  // ICPBENCH_CORE_ACCUMULATOR_H_
+#endif  // ICPBENCH_CORE_ACCUMULATE_H_

@@ -1,4 +1,4 @@
-#include "core/accumulator.h"
+#include "core/accumulate.h"
 
 #include <atomic>
 #include <mutex>

@@ -1,0 +1,91 @@
+#include "algorithms/accumulator/accumulator.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "core/accumulate.h"
+
+namespace icp {
+
+void Describe(AccumulatorParams& p, ParamSet& set) {
+  Describe(p.relaxed, set);
+  set.Add("cells", &p.cells, "grid cells per axis over the prior's x-y box", Range::Closed(1, 20000));
+}
+
+Grid AccumulatorGrid(const Box& prior, const StateSpace& space, int cells) {
+  int x = space.x, y = space.y;
+  if (x < 0 || y < 0) {
+    if (prior.size() < 2)
+      throw std::invalid_argument("accumulator: the state needs two components to grid");
+    x = 0, y = 1;
+  }
+  if (!(prior[x].Width() < kInf) || !(prior[y].Width() < kInf))
+    throw std::invalid_argument("accumulator: the prior must be bounded in the gridded components");
+  return Grid(prior, x, y, cells, cells);
+}
+
+std::vector<cv::Mat> SourceAccumulators(const Grid& grid, const MeasurementSetView& view,
+                                        const StopCondition& stop, WorkCounters* work,
+                                        bool* stopped) {
+  const int sources =
+      view.sources.empty() ? 1 : 1 + *std::max_element(view.sources.begin(), view.sources.end());
+  std::vector<SharedContractors> by_source(sources);
+  for (std::size_t i = 0; i < view.measurements.size(); ++i)
+    by_source[view.sources.empty() ? 0 : view.sources[i]].push_back(view.measurements[i]);
+  std::vector<cv::Mat> out;
+  cv::Mat sum(grid.rows(), grid.cols(), CV_32S, cv::Scalar(0));
+  *stopped = false;
+  for (const SharedContractors& ms : by_source) {
+    bool s = false;
+    out.push_back(Accumulate(grid, ms, stop, work, &s));
+    *stopped = *stopped || s;
+    sum += out.back();
+  }
+  out.push_back(sum);
+  return out;
+}
+
+namespace {
+
+class AccumulatorEstimator : public RelaxedEstimator {
+ public:
+  explicit AccumulatorEstimator(const AccumulatorParams& p) : RelaxedEstimator(p.relaxed), p_(p) {}
+
+ protected:
+  RelaxedSolution Solve(const Box& prior, const MeasurementSetView& view, const StateSpace& space,
+                        const StopCondition& stop) override {
+    RelaxedSolution out;
+    const Grid grid = AccumulatorGrid(prior, space, p_.cells);
+    bool stopped = false;
+    std::vector<cv::Mat> counts = SourceAccumulators(grid, view, stop, &out.summary.work, &stopped);
+    if (stopped) out.summary.status = ContractStatus::kStopped;
+    const int m = static_cast<int>(view.measurements.size());
+    double max_count = 0;
+    cv::minMaxLoc(counts.back(), nullptr, &max_count);
+    // The cells counting m - q' are non-empty exactly when q' >= m - max.
+    out.q = ChooseQ(params().q, params().auto_q, m,
+                    [&](int q) { return m - q <= static_cast<int>(max_count); });
+    if (counts.size() > 2)
+      for (std::size_t s = 0; s + 1 < counts.size(); ++s) {
+        double source_max = 0;
+        cv::minMaxLoc(counts[s], nullptr, &source_max);
+        out.properties.push_back({"max_count_source_" + std::to_string(s),
+                                  static_cast<std::int64_t>(source_max)});
+      }
+    out.estimate = std::make_unique<AccumulatorEstimate>(counts.back(), grid.search(), grid.x(),
+                                                         grid.y(), std::max(0, m - out.q));
+    return out;
+  }
+
+ private:
+  AccumulatorParams p_;
+};
+
+}  // namespace
+
+std::unique_ptr<Estimator> MakeAccumulator(const ParamMap& params, std::uint64_t) {
+  return std::make_unique<AccumulatorEstimator>(ParseParams<AccumulatorParams>("accumulator", params));
+}
+
+}  // namespace icp

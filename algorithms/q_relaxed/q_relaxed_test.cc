@@ -1,0 +1,91 @@
+#include "algorithms/q_relaxed/q_relaxed.h"
+
+#include <gtest/gtest.h>
+
+#include "algorithms/relaxed/relaxed_testing.h"
+
+namespace icp {
+namespace {
+
+using testing::Lines;
+
+std::int64_t IntProperty(const Properties& ps, const std::string& name) {
+  for (const Property& p : ps)
+    if (p.name == name) return std::get<std::int64_t>(p.value);
+  ADD_FAILURE() << "no property " << name;
+  return -1;
+}
+
+TEST(QRelaxedTest, QZeroIsTheRepeatedIntersection) {
+  const auto c = Lines(1, 6, 0);
+  auto solver = MakeQRelaxed({{"auto_q", "false"}}, 0);
+  const StepResult r = solver->Step(c.views, StopCondition());
+  FixpointContractor plain(std::make_shared<IntersectionContractor>(c.views.measurement_set->measurements),
+                           1e-3, 1000);
+  Box box = c.views.measurement_set->prior;
+  ContractContext context;
+  plain.Contract(box, context);
+  EXPECT_EQ(r.estimate->Hull(), box);
+  EXPECT_TRUE(r.estimate->Contains(c.truth));
+  EXPECT_LT(box.MaxWidth(), 0.5);
+}
+
+TEST(QRelaxedTest, OutliersEmptyTheIntersectionButNotTheRelaxedOne) {
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const auto c = Lines(seed, 20, 7);
+    const StepResult strict = MakeQRelaxed({{"auto_q", "false"}}, 0)->Step(c.views, StopCondition());
+    EXPECT_TRUE(strict.estimate->Hull().IsEmpty()) << seed;
+    const StepResult fixed = MakeQRelaxed({{"auto_q", "false"}, {"q", "7"}}, 0)->Step(c.views, StopCondition());
+    EXPECT_TRUE(fixed.estimate->Contains(c.truth)) << seed;
+    EXPECT_EQ(IntProperty(fixed.properties, "q"), 7);
+    const StepResult found = MakeQRelaxed({}, 0)->Step(c.views, StopCondition());
+    EXPECT_LE(IntProperty(found.properties, "q"), 7) << seed;
+    EXPECT_TRUE(found.estimate->Contains(c.truth)) << seed;
+    EXPECT_TRUE(found.estimate->Hull().IsSubsetOf(fixed.estimate->Hull())) << seed;
+  }
+}
+
+TEST(QRelaxedTest, PavingKeepsTheTruthInNarrowBoxes) {
+  const auto c = Lines(3, 8, 2);
+  const StepResult r =
+      MakeQRelaxed({{"mode", "pave"}, {"epsilon", "0.02"}}, 0)->Step(c.views, StopCondition());
+  ASSERT_EQ(r.estimate->Kind(), "paving");
+  EXPECT_TRUE(r.estimate->Contains(c.truth));
+  const auto& paving = dynamic_cast<const PavingEstimate&>(*r.estimate);
+  EXPECT_GE(paving.boundary().size(), 1u);
+  for (const Box& b : paving.boundary()) EXPECT_LT(b.MaxWidth(), 0.02);
+  // Tighter than the contracted box of the same q.
+  const int q = static_cast<int>(IntProperty(r.properties, "q"));
+  const StepResult box = MakeQRelaxed({{"q", std::to_string(q)}, {"auto_q", "false"}}, 0)
+                             ->Step(c.views, StopCondition());
+  EXPECT_LE(r.estimate->Area(0, 1), box.estimate->Area(0, 1));
+  EXPECT_TRUE(r.estimate->Hull().IsSubsetOf(box.estimate->Hull()));
+}
+
+TEST(QRelaxedTest, AsAFilterStartsFromThePrediction) {
+  auto c = Lines(4, 10, 3);
+  // A motion model that says the state did not move by more than 0.5.
+  c.views.measurement_set->predict = [](const Box& previous) {
+    Box out = previous;
+    for (std::size_t d = 0; d < out.size(); ++d) out[d] = out[d] + Interval(-0.5, 0.5);
+    return out;
+  };
+  auto solver = MakeQRelaxed({{"q", "5"}, {"auto_q", "false"}}, 0);
+  const StepResult first = solver->Step(c.views, StopCondition());
+  const StepResult second = solver->Step(c.views, StopCondition());
+  EXPECT_TRUE(second.estimate->Contains(c.truth));
+  EXPECT_TRUE(second.estimate->Hull().IsSubsetOf(first.estimate->Hull()));
+  EXPECT_EQ(IntProperty(second.properties, "reset"), 0);
+  auto unfiltered = MakeQRelaxed({{"q", "5"}, {"auto_q", "false"}, {"filter", "false"}}, 0);
+  unfiltered->Step(c.views, StopCondition());
+  EXPECT_EQ(unfiltered->Step(c.views, StopCondition()).estimate->Hull(), first.estimate->Hull());
+}
+
+TEST(QRelaxedTest, RejectsBadParameters) {
+  EXPECT_THROW(MakeQRelaxed({{"q", "-1"}}, 0), ParamError);
+  EXPECT_THROW(MakeQRelaxed({{"mode", "sivia"}}, 0), ParamError);
+  EXPECT_THROW(MakeQRelaxed({{"epsilon", "0"}}, 0), ParamError);
+}
+
+}  // namespace
+}  // namespace icp

@@ -1,0 +1,63 @@
+#include "algorithms/relaxed/relaxed_estimator.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace icp {
+
+void Describe(RelaxedParams& p, ParamSet& set) {
+  set.Add("q", &p.q,
+          "outliers allowed: a point is kept when it satisfies m - q of the m measurements "
+          "(IBEX's CtcQInter counts the other way: its q is m minus this one)",
+          Range::AtLeast(0));
+  set.Add("auto_q", &p.auto_q,
+          "use the smallest q' >= q whose solution set is non-empty, and report it as `q`");
+  set.Add("filter", &p.filter,
+          "on a stream of steps, start each from prior ∩ predict(previous hull)");
+}
+
+int ChooseQ(int q, bool auto_q, int m, const std::function<bool(int)>& nonempty) {
+  if (!auto_q) return q;
+  for (int candidate = q; candidate < m; ++candidate)
+    if (nonempty(candidate)) return candidate;
+  return std::max(q, m);
+}
+
+StepResult RelaxedEstimator::Step(const Views& views, const StopCondition& stop) {
+  const MeasurementSetView& view = *views.measurement_set;
+  Box prior = view.prior;
+  bool reset = false;
+  if (params_.filter && view.predict && !previous_hull_.IsEmpty() &&
+      previous_hull_.size() == prior.size()) {
+    const Box predicted = view.predict(previous_hull_);
+    Box filtered = prior;
+    for (std::size_t d = 0; d < prior.size(); ++d) filtered[d] = Intersect(prior[d], predicted[d]);
+    if (filtered.IsEmpty()) {
+      reset = true;
+      ++resets_;
+    } else {
+      prior = filtered;
+    }
+  }
+  RelaxedSolution solution = Solve(prior, view, views.space, stop);
+  total_work_ += solution.summary.work;
+  previous_hull_ = solution.estimate->Hull();
+  StepResult result;
+  result.estimate = std::move(solution.estimate);
+  result.summary = solution.summary;
+  result.hulls_by_q = std::move(solution.hulls_by_q);
+  result.properties = {{"q", static_cast<std::int64_t>(solution.q)},
+                       {"measurements", static_cast<std::int64_t>(view.measurements.size())},
+                       {"reset", static_cast<std::int64_t>(reset ? 1 : 0)}};
+  for (Property& p : solution.properties) result.properties.push_back(std::move(p));
+  for (Property& p : WorkProperties(solution.summary.work)) result.properties.push_back(std::move(p));
+  return result;
+}
+
+Properties RelaxedEstimator::RunProperties() const {
+  Properties out = WorkProperties(total_work_);
+  out.push_back({"resets", resets_});
+  return out;
+}
+
+}  // namespace icp
