@@ -10,44 +10,58 @@
 namespace icp {
 
 namespace {
+constexpr int kSmallBlock = 32;
+
 struct Raster {
+  Raster(const Grid& g, Contractor& c, const StopCondition& s, cv::Mat& m)
+      : grid(g), contractor(c), stop(s), counts(m), box(g.search()) {}
   const Grid& grid;
   Contractor& contractor;
   const StopCondition& stop;
   cv::Mat& counts;  // CV_32S, this task's own
   WorkCounters work;
   bool stopped = false;
+  int calls = 0;
+  Box box;  // the block being contracted; the other components are the search box's
 
   void Count(int r0, int r1, int c0, int c1) {
     for (int r = r0; r < r1; ++r)
       for (int c = c0; c < c1; ++c) ++counts.at<std::int32_t>(r, c);
   }
 
-  // Marks the cells of block [r0, r1) x [c0, c1) that the contractor cannot reject.
-  void Mark(int r0, int r1, int c0, int c1) {
-    if (stopped || stop.ShouldStop()) {
+  // Contracts the block [r0, r1) x [c0, c1) into box; false when the
+  // contractor rejects it. Past the stop condition, counts the block.
+  bool Contract(int r0, int r1, int c0, int c1) {
+    // The clock is read every 256 blocks: a block costs well under a microsecond.
+    if (stopped || ((calls++ & 255) == 0 && stop.ShouldStop())) {
       stopped = true;
       Count(r0, r1, c0, c1);
-      return;
+      return false;
     }
-    Box box = grid.Block(r0, r1, c0, c1);
+    box = grid.search();  // a contraction may have narrowed the other components
+    box[grid.x()] = Interval(grid.CellX(c0).lo(), grid.CellX(c1 - 1).hi());
+    box[grid.y()] = Interval(grid.CellY(r0).lo(), grid.CellY(r1 - 1).hi());
     ContractContext context(stop);
     const ContractSummary s = contractor.Contract(box, context);
     work += s.work;
-    if (s.status == ContractStatus::kEmpty || box.IsEmpty()) return;
+    return s.status != ContractStatus::kEmpty && !box.IsEmpty();
+  }
+
+  // Marks the cells of block [r0, r1) x [c0, c1) that the contractor cannot reject.
+  void Mark(int r0, int r1, int c0, int c1) {
+    if (!Contract(r0, r1, c0, c1)) return;
     // Only the cells meeting the contracted box can hold a point it keeps.
     const auto [nc0, nc1] = grid.ColsMeeting(box[grid.x()]);
     const auto [nr0, nr1] = grid.RowsMeeting(box[grid.y()]);
     c0 = std::max(c0, nc0), c1 = std::min(c1, nc1);
     r0 = std::max(r0, nr0), r1 = std::min(r1, nr1);
     if (r0 >= r1 || c0 >= c1) return;
-    if (r1 - r0 == 1 && c1 - c0 == 1) {
-      ++counts.at<std::int32_t>(r0, c0);
-      return;
-    }
-    if (s.status == ContractStatus::kStopped) {
-      stopped = true;
-      Count(r0, r1, c0, c1);
+    if (r1 - r0 == 1 || c1 - c0 == 1 || (r1 - r0) * (c1 - c0) <= kSmallBlock) {
+      // A strip or a small block: each cell is tested on its own, which
+      // costs fewer contractions than splitting further.
+      for (int r = r0; r < r1; ++r)
+        for (int c = c0; c < c1; ++c)
+          if (Contract(r, r + 1, c, c + 1)) ++counts.at<std::int32_t>(r, c);
       return;
     }
     if (r1 - r0 >= c1 - c0) {
@@ -74,7 +88,7 @@ cv::Mat Accumulate(const Grid& grid, const SharedContractors& measurements,
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       cv::Mat& counts = partial.local();
                       for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                        Raster raster{grid, *measurements[i], stop, counts, {}};
+                        Raster raster(grid, *measurements[i], stop, counts);
                         raster.Mark(0, grid.rows(), 0, grid.cols());
                         if (raster.stopped) any_stopped = true;
                         std::lock_guard<std::mutex> lock(work_mutex);

@@ -20,22 +20,29 @@ ContractSummary ConstraintContractor::Contract(Box& box, ContractContext&) {
     summary.status = ContractStatus::kEmpty;
     return summary;
   }
-  const Box before = box;
+  // Only the tape's variables can change: they alone are saved and compared
+  // (this runs once per grid cell in the accumulator).
   const Tape& tape = system_->tape(constraint_);
+  const std::vector<int>& vars = tape.variables();
+  start_.resize(vars.size());
+  bool changed = false;
   for (int pass = 0; pass < kMaxPasses; ++pass) {
-    const Box start = box;
+    for (std::size_t i = 0; i < vars.size(); ++i) start_[i] = box[vars[i]];
     bool idempotent = false;
     ++summary.work.revise_calls;
     if (!tape.Revise(box, slots_, &idempotent)) {
       box.SetEmpty();
-      break;
+      summary.status = ContractStatus::kEmpty;
+      return summary;
     }
-    if (idempotent) break;
     bool shrank = false;
-    for (int v : tape.variables()) shrank = shrank || ShrankByMoreThan(start[v], box[v], kRatio);
-    if (!shrank) break;
+    for (std::size_t i = 0; i < vars.size(); ++i) {
+      changed = changed || !(start_[i] == box[vars[i]]);
+      shrank = shrank || ShrankByMoreThan(start_[i], box[vars[i]], kRatio);
+    }
+    if (idempotent || !shrank) break;
   }
-  summary.status = StatusOf(before, box);
+  summary.status = changed ? ContractStatus::kContracted : ContractStatus::kFixpoint;
   return summary;
 }
 

@@ -27,6 +27,7 @@ class ConstraintContractor : public Contractor {
   std::shared_ptr<const CompiledSystem> system_;
   int constraint_;
   std::vector<Interval> slots_;
+  std::vector<Interval> start_;  // the tape's variables before a pass
 };
 
 // One contractor per constraint of csp, in order, over csp's variables.

@@ -13,51 +13,55 @@ Grid::Grid(Box search, int x, int y, int cols, int rows)
     throw std::invalid_argument("grid: x and y must be components of the search box");
   if (search_.IsEmpty() || !(search_[x].Width() < kInf) || !(search_[y].Width() < kInf))
     throw std::invalid_argument("grid: the search box must be non-empty and bounded in x and y");
+  Cells(search_[x_], cols_, &col_lo_, &col_hi_);
+  Cells(search_[y_], rows_, &row_lo_, &row_hi_);
 }
 
-Interval Grid::Cell(const Interval& extent, int n, int i) const {
-  if (i == 0 && n == 1) return extent;
+void Grid::Cells(const Interval& extent, int n, std::vector<double>* lo, std::vector<double>* hi) {
   const Interval step = (Interval(extent.hi()) - Interval(extent.lo())) / Interval(n);
-  const Interval cell = Interval(extent.lo()) + step * Interval(i, i + 1.0);
-  // The outer cells end exactly on the search box.
-  return Interval(i == 0 ? extent.lo() : cell.lo(), i == n - 1 ? extent.hi() : cell.hi());
+  for (int i = 0; i < n; ++i) {
+    const Interval cell = Interval(extent.lo()) + step * Interval(i, i + 1.0);
+    // The outer cells end exactly on the search box.
+    lo->push_back(i == 0 ? extent.lo() : cell.lo());
+    hi->push_back(i == n - 1 ? extent.hi() : cell.hi());
+  }
 }
 
-Interval Grid::CellX(int col) const { return Cell(search_[x_], cols_, col); }
-Interval Grid::CellY(int row) const { return Cell(search_[y_], rows_, row); }
+Interval Grid::CellX(int col) const { return Interval(col_lo_[col], col_hi_[col]); }
+Interval Grid::CellY(int row) const { return Interval(row_lo_[row], row_hi_[row]); }
 
 Box Grid::Block(int row0, int row1, int col0, int col1) const {
   Box box = search_;
-  box[x_] = Interval(CellX(col0).lo(), CellX(col1 - 1).hi());
-  box[y_] = Interval(CellY(row0).lo(), CellY(row1 - 1).hi());
+  box[x_] = Interval(col_lo_[col0], col_hi_[col1 - 1]);
+  box[y_] = Interval(row_lo_[row0], row_hi_[row1 - 1]);
   return box;
 }
 
-std::pair<int, int> Grid::Meeting(const Interval& extent, int n, const Interval& v,
-                                  bool columns) const {
-  const Interval w = Intersect(v, extent);
-  if (w.IsEmpty()) return {0, 0};
-  auto cell = [&](int i) { return columns ? CellX(i) : CellY(i); };
+std::pair<int, int> Grid::Meeting(const std::vector<double>& lo, const std::vector<double>& hi,
+                                  const Interval& v) {
+  if (v.IsEmpty()) return {0, 0};
+  const int n = static_cast<int>(lo.size());
+  // The cells are of equal width up to rounding: a division guesses the
+  // index, the exact bounds correct it by a step or two.
+  const double start = lo[0], width = (hi[n - 1] - lo[0]) / n;
   auto guess = [&](double t) {
-    const double f = (t - extent.lo()) / (extent.hi() - extent.lo()) * n;
-    return std::clamp(static_cast<int>(std::floor(f)), 0, n - 1);
+    const double f = std::floor((t - start) / width);
+    return f < 0 ? 0 : f >= n ? n - 1 : static_cast<int>(f);
   };
-  // The division may be off by one cell either way; the exact cell bounds decide.
-  int first = guess(w.lo());
-  while (first > 0 && cell(first - 1).hi() >= w.lo()) --first;
-  while (first < n - 1 && cell(first).hi() < w.lo()) ++first;
-  int last = guess(w.hi());
-  while (last < n - 1 && cell(last + 1).lo() <= w.hi()) ++last;
-  while (last > 0 && cell(last).lo() > w.hi()) --last;
-  return {first, last + 1};
+  // The first cell ending at or after v.lo, and one past the last cell
+  // starting at or before v.hi (both bound lists ascend).
+  int first = guess(v.lo());
+  while (first > 0 && hi[first - 1] >= v.lo()) --first;
+  while (first < n && hi[first] < v.lo()) ++first;
+  int last = guess(v.hi());
+  while (last < n && lo[last] <= v.hi()) ++last;
+  while (last > 0 && lo[last - 1] > v.hi()) --last;
+  if (first >= last) return {0, 0};
+  return {first, last};
 }
 
-std::pair<int, int> Grid::ColsMeeting(const Interval& v) const {
-  return Meeting(search_[x_], cols_, v, true);
-}
-std::pair<int, int> Grid::RowsMeeting(const Interval& v) const {
-  return Meeting(search_[y_], rows_, v, false);
-}
+std::pair<int, int> Grid::ColsMeeting(const Interval& v) const { return Meeting(col_lo_, col_hi_, v); }
+std::pair<int, int> Grid::RowsMeeting(const Interval& v) const { return Meeting(row_lo_, row_hi_, v); }
 
 bool Grid::CellOf(double px, double py, int* row, int* col) const {
   if (!search_[x_].Contains(px) || !search_[y_].Contains(py)) return false;

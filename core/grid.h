@@ -7,6 +7,7 @@
 #define ICPBENCH_CORE_GRID_H_
 
 #include <utility>
+#include <vector>
 
 #include "core/box.h"
 
@@ -37,12 +38,16 @@ class Grid {
   bool CellOf(double px, double py, int* row, int* col) const;
 
  private:
-  Interval Cell(const Interval& extent, int n, int i) const;
-  std::pair<int, int> Meeting(const Interval& extent, int n, const Interval& v, bool columns) const;
+  // Bounds of the n cells over extent: [lo[i], hi[i]].
+  static void Cells(const Interval& extent, int n, std::vector<double>* lo, std::vector<double>* hi);
+  static std::pair<int, int> Meeting(const std::vector<double>& lo, const std::vector<double>& hi,
+                                     const Interval& v);
 
   Box search_;
   int x_, y_;
   int cols_, rows_;
+  // Computed once: the accumulator asks for them millions of times.
+  std::vector<double> col_lo_, col_hi_, row_lo_, row_hi_;
 };
 
 }  // namespace icp

@@ -64,13 +64,6 @@ std::string Golden(const std::string& algorithm, const RunRecord& r) {
   return head + samples.str();
 }
 
-std::vector<std::string> IcpAlgorithms() {
-  std::vector<std::string> names;
-  for (const AlgorithmInfo& a : Algorithms())
-    if (!a.test_only) names.push_back(a.name);
-  return names;
-}
-
 RunRecord Drive(const std::string& algorithm) {
   return ExecuteRun(RunSpec{algorithm, {}, "car-track", {{"log", kLog}, {"steps", "300"}}, 1, 0});
 }
@@ -90,7 +83,7 @@ TEST(CarTrackGolden, Update) {
   if (!std::getenv("ICPBENCH_UPDATE_GOLDEN")) GTEST_SKIP() << "set ICPBENCH_UPDATE_GOLDEN=1 to rewrite";
   std::ofstream out(kGolden);
   out << "# tests/car_track_golden_test.cc: newest-state boxes on car_track_300.csv, carry=first\n";
-  for (const std::string& a : IcpAlgorithms()) out << Golden(a, Drive(a));
+  for (const std::string& a : testing::AlgorithmsNeeding(View::kCsp)) out << Golden(a, Drive(a));
 }
 
 class CarTrackGoldenTest : public ::testing::TestWithParam<std::string> {};
@@ -105,7 +98,7 @@ TEST_P(CarTrackGoldenTest, SameBoxesAsTheGoldenFile) {
   EXPECT_EQ(Golden(GetParam(), r), golden.at(GetParam()));
 }
 
-INSTANTIATE_TEST_SUITE_P(AllAlgorithms, CarTrackGoldenTest, ::testing::ValuesIn(IcpAlgorithms()),
+INSTANTIATE_TEST_SUITE_P(AllAlgorithms, CarTrackGoldenTest, ::testing::ValuesIn(testing::AlgorithmsNeeding(View::kCsp)),
                          testing::RegistryName());
 
 }  // namespace

@@ -29,14 +29,7 @@ TEST_P(LapTest, KeepsTheTruthAtEveryStep) {
   EXPECT_LT(r.metrics.mean_area, 25.0);
 }
 
-std::vector<std::string> IcpAlgorithms() {
-  std::vector<std::string> names;
-  for (const AlgorithmInfo& a : Algorithms())
-    if (!a.test_only && a.needs == View::kCsp) names.push_back(a.name);
-  return names;
-}
-
-INSTANTIATE_TEST_SUITE_P(AllAlgorithms, LapTest, ::testing::ValuesIn(IcpAlgorithms()),
+INSTANTIATE_TEST_SUITE_P(AllAlgorithms, LapTest, ::testing::ValuesIn(testing::AlgorithmsNeeding(View::kCsp)),
                          testing::RegistryName());
 
 }  // namespace

@@ -1,9 +1,13 @@
-// GoogleTest parameter names from registry names ("3b-bc4" -> "3b_bc4").
+// GoogleTest parameter names from registry names ("3b-bc4" -> "3b_bc4"), and
+// the registered algorithms a suite runs over.
 #ifndef ICPBENCH_TESTS_TEST_NAMES_H_
 #define ICPBENCH_TESTS_TEST_NAMES_H_
 
 #include <cctype>
 #include <string>
+#include <vector>
+
+#include "algorithms/registry.h"
 
 namespace icp::testing {
 
@@ -16,6 +20,14 @@ struct RegistryName {
     return name;
   }
 };
+
+// The registered algorithms that need the given view, test-only ones left out.
+inline std::vector<std::string> AlgorithmsNeeding(View view) {
+  std::vector<std::string> names;
+  for (const AlgorithmInfo& a : Algorithms())
+    if (!a.test_only && a.needs == view) names.push_back(a.name);
+  return names;
+}
 
 }  // namespace icp::testing
 
