@@ -4,6 +4,7 @@
 
 #include "problems/car_track/car_track.h"
 #include "problems/chain/chain.h"
+#include "problems/line_intersection/line_intersection.h"
 #include "problems/minibex_file/minibex_file.h"
 
 namespace icp {
@@ -17,6 +18,9 @@ std::vector<ProblemInfo>& Table() {
        &MakeChain, &DefaultParams<ChainParams>, &ResolveParams<ChainParams>, {View::kCsp}},
       {"minibex-file", "one CSP read from a Minibex file (IBEX benchmark syntax)",
        &MakeMinibexFile, &DefaultParams<MinibexFileParams>, &ResolveMinibexFile, {View::kCsp}},
+      {"line-intersection", "m lines through one point, k of them outliers, paper 003 §5.1.4 (Fig. 5.2)",
+       &MakeLineIntersection, &DefaultParams<LineIntersectionParams>, &ResolveLineIntersection,
+       {View::kCsp, View::kMeasurementSet}},
   };
   return table;
 }
