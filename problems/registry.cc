@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "problems/beacon_ranges/beacon_ranges.h"
 #include "problems/car_track/car_track.h"
 #include "problems/chain/chain.h"
 #include "problems/line_intersection/line_intersection.h"
@@ -20,6 +21,9 @@ std::vector<ProblemInfo>& Table() {
        &MakeMinibexFile, &DefaultParams<MinibexFileParams>, &ResolveMinibexFile, {View::kCsp}},
       {"line-intersection", "m lines through one point, k of them outliers, paper 003 §5.1.4 (Fig. 5.2)",
        &MakeLineIntersection, &DefaultParams<LineIntersectionParams>, &ResolveLineIntersection,
+       {View::kCsp, View::kMeasurementSet}},
+      {"beacon-ranges", "ranges to known beacons, some outliers, paper 003 §5.2.3 (eq. 5.39, Figs. 5.5-5.7)",
+       &MakeBeaconRanges, &DefaultParams<BeaconRangesParams>, &ResolveBeaconRanges,
        {View::kCsp, View::kMeasurementSet}},
   };
   return table;
