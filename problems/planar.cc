@@ -1,6 +1,7 @@
 #include "problems/planar.h"
 
 #include <stdexcept>
+#include <utility>
 
 #include "core/constraint_contractor.h"
 
@@ -35,6 +36,19 @@ Step MakePlanarStep(int time, const ConstraintSystem& csp, std::vector<double> t
   step.csp_truth = truth;
   step.truth = std::move(truth);
   return step;
+}
+
+// A partial Fisher-Yates shuffle, through core/random.h (portable seeds).
+std::vector<bool> DrawOutliers(int n, int k, RandomEngine& rng) {
+  std::vector<int> order(n);
+  for (int i = 0; i < n; ++i) order[i] = i;
+  std::vector<bool> flags(n, false);
+  for (int i = 0; i < k; ++i) {
+    const int j = static_cast<int>(UniformInt(rng, i, n - 1));
+    std::swap(order[i], order[j]);
+    flags[order[i]] = true;
+  }
+  return flags;
 }
 
 }  // namespace icp

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/constraint_system.h"
+#include "core/random.h"
 #include "problems/problem.h"
 
 namespace icp {
@@ -23,6 +24,9 @@ StateSpace PlanarStateSpace();
 // constraint, or empty). predict is left unset.
 Step MakePlanarStep(int time, const ConstraintSystem& csp, std::vector<double> truth,
                     std::vector<bool> outliers, std::vector<int> sources);
+
+// Which of n measurements are outliers: k distinct ones, drawn uniformly.
+std::vector<bool> DrawOutliers(int n, int k, RandomEngine& rng);
 
 }  // namespace icp
 

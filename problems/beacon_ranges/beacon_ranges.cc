@@ -1,8 +1,10 @@
 #include "problems/beacon_ranges/beacon_ranges.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -144,19 +146,6 @@ Step RangeStep(int time, const Box& box, const std::vector<double>& truth,
   }
   if (!several_sources) sources.clear();
   return MakePlanarStep(time, csp, truth, std::move(outliers), std::move(sources));
-}
-
-// k distinct flags among n, by a partial Fisher-Yates shuffle.
-std::vector<bool> DrawOutliers(int n, int k, RandomEngine& rng) {
-  std::vector<int> order(n);
-  for (int i = 0; i < n; ++i) order[i] = i;
-  std::vector<bool> flags(n, false);
-  for (int i = 0; i < k; ++i) {
-    const int j = static_cast<int>(UniformInt(rng, i, n - 1));
-    std::swap(order[i], order[j]);
-    flags[order[i]] = true;
-  }
-  return flags;
 }
 
 // A reading of the distance from p to beacon b: within ±e/2 of the truth

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <numbers>
-#include <utility>
 #include <vector>
 
 #include "core/constraint_system.h"
@@ -33,21 +32,6 @@ ParamMap ResolveLineIntersection(const std::string& owner, const ParamMap& value
   ParseLineIntersection(owner, values);
   return ResolveParams<LineIntersectionParams>(owner, values);
 }
-
-namespace {
-// k distinct indices of [0, n), drawn by a partial Fisher-Yates shuffle.
-std::vector<bool> DrawOutliers(int n, int k, RandomEngine& rng) {
-  std::vector<int> order(n);
-  for (int i = 0; i < n; ++i) order[i] = i;
-  std::vector<bool> flags(n, false);
-  for (int i = 0; i < k; ++i) {
-    const int j = static_cast<int>(UniformInt(rng, i, n - 1));
-    std::swap(order[i], order[j]);
-    flags[order[i]] = true;
-  }
-  return flags;
-}
-}  // namespace
 
 Step MakeLineIntersectionStep(const LineIntersectionParams& p, std::uint64_t seed) {
   RandomEngine rng(seed);
