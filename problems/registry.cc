@@ -2,8 +2,10 @@
 
 #include <stdexcept>
 
+#include "problems/beacon_ranges/beacon_ranges.h"
 #include "problems/car_track/car_track.h"
 #include "problems/chain/chain.h"
+#include "problems/line_intersection/line_intersection.h"
 #include "problems/minibex_file/minibex_file.h"
 
 namespace icp {
@@ -16,7 +18,14 @@ std::vector<ProblemInfo>& Table() {
       {"chain", "car-track-shaped window CSP (paper 000 eq. 14) with a simulated truth",
        &MakeChain, &DefaultParams<ChainParams>, &ResolveParams<ChainParams>, {View::kCsp}},
       {"minibex-file", "one CSP read from a Minibex file (IBEX benchmark syntax)",
-       &MakeMinibexFile, &DefaultParams<MinibexFileParams>, &ResolveMinibexFile, {View::kCsp}},
+       &MakeMinibexFile, &DefaultParams<MinibexFileParams>, &ResolveMinibexFile,
+       {View::kCsp, View::kMeasurementSet}},
+      {"line-intersection", "m lines through one point, k of them outliers, paper 003 §5.1.4 (Fig. 5.2)",
+       &MakeLineIntersection, &DefaultParams<LineIntersectionParams>, &ResolveLineIntersection,
+       {View::kCsp, View::kMeasurementSet}},
+      {"beacon-ranges", "ranges to known beacons, some outliers, paper 003 §5.2.3 (eq. 5.39, Figs. 5.5-5.7)",
+       &MakeBeaconRanges, &DefaultParams<BeaconRangesParams>, &ResolveBeaconRanges,
+       {View::kCsp, View::kMeasurementSet}},
   };
   return table;
 }

@@ -1,5 +1,6 @@
 #include "problems/minibex_file/minibex_file.h"
 
+#include "core/constraint_contractor.h"
 #include "core/minibex_parser.h"
 
 namespace icp {
@@ -23,6 +24,12 @@ class MinibexFileProblem : public Problem {
     view.csp = csp_;
     for (int i = 0; i < csp_.num_variables(); ++i) view.states.push_back({0, i});
     step->views.csp = std::move(view);
+    // Each constraint, once the file's loops are expanded, is one
+    // measurement; which are outliers is unknown.
+    MeasurementSetView set;
+    set.prior = csp_.domains();
+    set.measurements = ConstraintContractors(csp_);
+    step->views.measurement_set = std::move(set);
     return true;
   }
 

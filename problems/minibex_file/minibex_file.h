@@ -1,4 +1,6 @@
-// A single CSP read from a Minibex file; the truth is unknown.
+// A single CSP read from a Minibex file; the truth is unknown. Its one step
+// offers the CSP view (the whole system) and the measurement-set view (the
+// domains as prior, one contractor per constraint, outliers unknown).
 #ifndef ICPBENCH_PROBLEMS_MINIBEX_FILE_MINIBEX_FILE_H_
 #define ICPBENCH_PROBLEMS_MINIBEX_FILE_MINIBEX_FILE_H_
 
