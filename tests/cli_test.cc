@@ -33,6 +33,66 @@ TEST(CliTest, SolveJsonFollowsTheContract) {
   EXPECT_EQ(j.size(), 4u);
 }
 
+// Five lines through (1, 2) and two that miss it: a relaxed CSP with two
+// outliers, each constraint one measurement.
+std::string RelaxedLinesFile() {
+  return WriteFile("lines.bch",
+                   "Variables x in [-10, 10]; y in [-10, 10];\n"
+                   "Constraints\n"
+                   "  x + y = 3; x - y = -1; 2*x + y = 4; x + 3*y = 7; x = 1;\n"
+                   "  x + y = 8; y = -5;\n"
+                   "end\n");
+}
+
+TEST(CliTest, RelaxedSolversAddQAndTheEstimate) {
+  const std::string file = RelaxedLinesFile();
+  for (const std::string algorithm : {"q-relaxed", "polynomial", "accumulator"}) {
+    Result r = Icpbench("solve " + file + " --algorithm " + algorithm + " --format json");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["algorithm"], algorithm);
+    EXPECT_EQ(j["status"], "nonempty");
+    EXPECT_LE(j["box"]["x"][0].get<double>(), 1.0) << algorithm;
+    EXPECT_GE(j["box"]["x"][1].get<double>(), 1.0) << algorithm;
+    EXPECT_LE(j["box"]["y"][0].get<double>(), 2.0) << algorithm;
+    EXPECT_GE(j["box"]["y"][1].get<double>(), 2.0) << algorithm;
+    EXPECT_EQ(j["q"], 2) << algorithm;  // the fewest outliers any point has
+    EXPECT_GE(j["time_s"].get<double>(), 0.0);
+    EXPECT_EQ(j["estimate"]["kind"], algorithm == "accumulator" ? "accumulator" : "box");
+    if (algorithm == "accumulator") EXPECT_EQ(j["estimate"]["max_count"], 5);
+    if (algorithm == "polynomial") {
+      ASSERT_EQ(j["by_q"].size(), 8u);
+      for (int q = 0; q <= 7; ++q) EXPECT_EQ(j["by_q"][q]["q"], q);
+      EXPECT_EQ(j["by_q"][0]["status"], "empty");
+      EXPECT_TRUE(j["by_q"][0]["box"].empty());
+      EXPECT_EQ(j["by_q"][2]["status"], "nonempty");
+      EXPECT_EQ(j["by_q"][2]["box"], j["box"]);
+    } else {
+      EXPECT_FALSE(j.contains("by_q"));
+    }
+  }
+}
+
+TEST(CliTest, RelaxedSolversWithTooSmallAQAreEmpty) {
+  Result r = Icpbench("solve " + RelaxedLinesFile() +
+                      " --algorithm q-relaxed --param q=1 --param auto_q=false --format json");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "empty");
+  EXPECT_TRUE(j["box"].empty());
+  EXPECT_EQ(j["q"], 1);
+  r = Icpbench("solve " + RelaxedLinesFile() +
+               " --algorithm q-relaxed --param mode=pave --param epsilon=0.01 --format json");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["estimate"]["kind"], "paving");
+  EXPECT_GE(j["estimate"]["boxes"].get<int>(), 1);
+  EXPECT_EQ(j["q"], 2);
+  r = Icpbench("solve " + RelaxedLinesFile() + " --algorithm accumulator --param q=-1");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("accumulator.q = -1"), std::string::npos) << r.out;
+}
+
 TEST(CliTest, BoundsRoundTripAndEncloseTheSolution) {
   // x^2 = 2: the printed bounds, read back as doubles, still hold sqrt(2)
   // and are the very doubles the solver produced.

@@ -1,4 +1,4 @@
-// Property tests: every registered algorithm keeps a known solution of random
+// Property tests: every registered CSP algorithm keeps a known solution of random
 // CSPs, and its result lies inside the initial box.
 #include <gtest/gtest.h>
 
@@ -50,14 +50,7 @@ TEST_P(SoundnessTest, EmptiesTheBoxOfInconsistentSystems) {
   }
 }
 
-std::vector<std::string> AlgorithmNames() {
-  std::vector<std::string> names;
-  for (const AlgorithmInfo& a : Algorithms())
-    if (!a.test_only) names.push_back(a.name);
-  return names;
-}
-
-INSTANTIATE_TEST_SUITE_P(AllAlgorithms, SoundnessTest, ::testing::ValuesIn(AlgorithmNames()),
+INSTANTIATE_TEST_SUITE_P(AllAlgorithms, SoundnessTest, ::testing::ValuesIn(testing::AlgorithmsNeeding(View::kCsp)),
                          testing::RegistryName());
 
 }  // namespace
