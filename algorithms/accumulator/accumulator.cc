@@ -1,6 +1,7 @@
 #include "algorithms/accumulator/accumulator.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -13,16 +14,20 @@ void Describe(AccumulatorParams& p, ParamSet& set) {
   set.Add("cells", &p.cells, "grid cells per axis over the prior's x-y box", Range::Closed(1, 20000));
 }
 
-Grid AccumulatorGrid(const Box& prior, const StateSpace& space, int cells) {
+Grid AccumulatorGrid(const Box& prior, const Box& search, const StateSpace& space, int cells) {
   int x = space.x, y = space.y;
   if (x < 0 || y < 0) {
     if (prior.size() < 2)
       throw std::invalid_argument("accumulator: the state needs two components to grid");
     x = 0, y = 1;
   }
-  if (!(prior[x].Width() < kInf) || !(prior[y].Width() < kInf))
-    throw std::invalid_argument("accumulator: the prior must be bounded in the gridded components");
-  return Grid(prior, x, y, cells, cells);
+  if (!(search[x].Width() < kInf) || !(search[y].Width() < kInf))
+    throw std::invalid_argument("accumulator: the search box must be bounded in the gridded components");
+  auto count = [&](int c) {
+    const double n = std::ceil(prior[c].Width() / search[c].Width() * cells);
+    return std::clamp(static_cast<int>(n), 1, cells);
+  };
+  return Grid(prior, x, y, count(x), count(y));
 }
 
 std::vector<cv::Mat> SourceAccumulators(const Grid& grid, const MeasurementSetView& view,
@@ -56,7 +61,7 @@ class AccumulatorEstimator : public RelaxedEstimator {
   RelaxedSolution Solve(const Box& prior, const MeasurementSetView& view, const StateSpace& space,
                         const StopCondition& stop) override {
     RelaxedSolution out;
-    const Grid grid = AccumulatorGrid(prior, space, p_.cells);
+    const Grid grid = AccumulatorGrid(prior, view.prior, space, p_.cells);
     bool stopped = false;
     std::vector<cv::Mat> counts = SourceAccumulators(grid, view, stop, &out.summary.work, &stopped);
     if (stopped) out.summary.status = ContractStatus::kStopped;

@@ -1,6 +1,8 @@
 // accumulator: the discrete accumulator of the measurements (paper 003
-// §2.6, §5.2): a grid of `cells` x `cells` over the x-y components of the
-// prior (the first two components when the state names no position), each
+// §2.6, §5.2): a grid over the x-y components of the prior (the first two
+// components when the state names no position) with cells of the view's
+// search box over `cells` (so `cells` x `cells` over the search box, and
+// the same cell size over the smaller prior of a filtering step), each
 // cell counting the measurements that cannot reject it (eq. 5.28, upper
 // bound). The estimate is the set of cells counting at least m - q: with
 // auto_q and q = 0, the cells with the highest count, m - q being that
@@ -35,9 +37,10 @@ struct AccumulatorParams {
 void Describe(AccumulatorParams& p, ParamSet& set);
 
 // The grid over prior that the accumulator uses for a state space: its x-y
-// components, or the first two; throws std::invalid_argument for a state of
-// one component or a prior unbounded there.
-Grid AccumulatorGrid(const Box& prior, const StateSpace& space, int cells);
+// components, or the first two, in cells of search's extent over `cells`
+// (prior lies in search); throws std::invalid_argument for a state of one
+// component or a search box unbounded there.
+Grid AccumulatorGrid(const Box& prior, const Box& search, const StateSpace& space, int cells);
 
 // The counts of each source's measurements apart (sources numbered from 0;
 // empty `sources`: one source), then their sum as the last element.
