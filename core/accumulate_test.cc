@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/constraint_contractor.h"
+#include "core/contractor_testing.h"
 #include "core/random.h"
 
 namespace icp {
@@ -38,18 +39,6 @@ ConstraintSystem Lines(RandomEngine& rng, int m, int inliers, const std::vector<
   return csp;
 }
 
-// The number of lines whose contractor keeps the point q.
-int Satisfied(const SharedContractors& cs, const std::vector<double>& q) {
-  int n = 0;
-  for (const auto& c : cs) {
-    Box point{Interval(q[0]), Interval(q[1])};
-    ContractContext context;
-    c->Contract(point, context);
-    n += point.IsEmpty() ? 0 : 1;
-  }
-  return n;
-}
-
 TEST(AccumulatorTest, CountsEveryLineThroughEachCellAndPeaksAtTheTruth) {
   RandomEngine rng(5);
   const std::vector<double> p = {1.3, -2.7};
@@ -76,7 +65,7 @@ TEST(AccumulatorTest, CountsEveryLineThroughEachCellAndPeaksAtTheTruth) {
   for (int i = 0; i < 3000; ++i) {
     const std::vector<double> q = {UniformReal(rng, -10, 10), UniformReal(rng, -10, 10)};
     ASSERT_TRUE(grid.CellOf(q[0], q[1], &r, &c));
-    EXPECT_GE(counts.at<std::int32_t>(r, c), Satisfied(cs, q));
+    EXPECT_GE(counts.at<std::int32_t>(r, c), testing::KeptBy(cs, q));
   }
 }
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/contractor_testing.h"
+
 #include <memory>
 
 #include "core/random.h"
@@ -9,21 +11,7 @@
 namespace icp {
 namespace {
 
-// The minimal contractor of a fixed box.
-class ClipTo : public Contractor {
- public:
-  explicit ClipTo(Box set) : set_(std::move(set)) {}
-  std::string_view Name() const override { return "clip"; }
-  ContractSummary Contract(Box& box, ContractContext&) override {
-    const Box before = box;
-    for (std::size_t d = 0; d < box.size(); ++d) box[d] = Intersect(box[d], set_[d]);
-    if (box.IsEmpty()) box.SetEmpty();
-    return {StatusOf(before, box), "", {1, 0, 0, 0}};
-  }
-
- private:
-  Box set_;
-};
+using testing::ClipTo;
 
 Box HullOf(const Box& a, const Box& b) {
   if (a.IsEmpty()) return b;

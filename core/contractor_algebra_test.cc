@@ -2,29 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include "core/contractor_testing.h"
+
 #include <memory>
 
 namespace icp {
 namespace {
 
-// Intersects the box with a fixed box: the minimal contractor of that box.
-class ClipTo : public Contractor {
- public:
-  explicit ClipTo(Box set) : set_(std::move(set)) {}
-  std::string_view Name() const override { return "clip"; }
-  ContractSummary Contract(Box& box, ContractContext&) override {
-    const Box before = box;
-    for (std::size_t d = 0; d < box.size(); ++d) box[d] = Intersect(box[d], set_[d]);
-    if (box.IsEmpty()) box.SetEmpty();
-    ContractSummary s;
-    s.status = StatusOf(before, box);
-    s.work.revise_calls = 1;
-    return s;
-  }
-
- private:
-  Box set_;
-};
+using testing::ClipTo;
 
 SharedContractors Clips(std::initializer_list<Interval> sets) {
   SharedContractors out;

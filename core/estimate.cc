@@ -15,6 +15,13 @@ std::string_view TypeName(const Property& p) {
   }
 }
 
+std::optional<std::int64_t> IntProperty(const Properties& properties, std::string_view name) {
+  for (const Property& p : properties)
+    if (p.name == name && std::holds_alternative<std::int64_t>(p.value))
+      return std::get<std::int64_t>(p.value);
+  return std::nullopt;
+}
+
 std::vector<double> Estimate::Centre() const {
   const Box hull = Hull();
   if (hull.IsEmpty()) return {};

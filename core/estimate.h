@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -46,6 +47,9 @@ struct Property {
 using Properties = std::vector<Property>;
 // "int", "real" or "text".
 std::string_view TypeName(const Property& p);
+// The value of the integer property called name; nullopt when there is none
+// (or it is not an integer).
+std::optional<std::int64_t> IntProperty(const Properties& properties, std::string_view name);
 
 class Estimate {
  public:

@@ -71,8 +71,7 @@ SolveResult Solve(const SolveOptions& options) {
       result.box = step_result.estimate->Hull();
       result.summary = step_result.summary;
       result.relaxed = true;
-      for (const Property& p : step_result.properties)
-        if (p.name == "q") result.q = static_cast<int>(std::get<std::int64_t>(p.value));
+      result.q = static_cast<int>(IntProperty(step_result.properties, "q").value_or(0));
       result.estimate_kind = std::string(step_result.estimate->Kind());
       result.estimate_extras = step_result.estimate->Extras();
       result.hulls_by_q = std::move(step_result.hulls_by_q);

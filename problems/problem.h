@@ -5,7 +5,10 @@
 #ifndef ICPBENCH_PROBLEMS_PROBLEM_H_
 #define ICPBENCH_PROBLEMS_PROBLEM_H_
 
+#include <functional>
+#include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/view.h"
@@ -33,6 +36,26 @@ class Problem {
   virtual bool Next(Step* step) = 0;
   // Number of steps the stream will yield, for progress reports.
   virtual int NumSteps() const = 0;
+};
+
+// A static problem: one step, made when it is asked for.
+class SingleStepProblem : public Problem {
+ public:
+  SingleStepProblem(std::string name, std::function<Step()> make)
+      : name_(std::move(name)), make_(std::move(make)) {}
+  std::string_view Name() const override { return name_; }
+  int NumSteps() const override { return 1; }
+  bool Next(Step* step) override {
+    if (done_) return false;
+    done_ = true;
+    *step = make_();
+    return true;
+  }
+
+ private:
+  std::string name_;
+  std::function<Step()> make_;
+  bool done_ = false;
 };
 
 }  // namespace icp

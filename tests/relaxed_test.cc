@@ -10,6 +10,7 @@
 
 #include "algorithms/accumulator/accumulator.h"
 #include "algorithms/registry.h"
+#include "core/contractor_testing.h"
 #include "core/random.h"
 #include "harness/runner.h"
 #include "problems/registry.h"
@@ -17,13 +18,6 @@
 
 namespace icp {
 namespace {
-
-std::int64_t IntProperty(const Properties& ps, const std::string& name) {
-  for (const Property& p : ps)
-    if (p.name == name) return std::get<std::int64_t>(p.value);
-  ADD_FAILURE() << "no property " << name;
-  return -1;
-}
 
 Step FirstStep(const std::string& problem, const ParamMap& params, std::uint64_t seed) {
   Step step;
@@ -68,12 +62,12 @@ TEST_P(RelaxedSolverTest, KeepsTheTruthWithEnoughOutliersAllowed) {
       fixed["auto_q"] = "false";
       const StepResult r = Solve(GetParam(), fixed, step);
       EXPECT_TRUE(r.estimate->Contains(step.truth)) << problem << " seed " << seed;
-      EXPECT_EQ(IntProperty(r.properties, "q"), k);
+      EXPECT_EQ(IntProperty(r.properties, "q").value(), k);
       const StepResult automatic = Solve(GetParam(), Quick(GetParam()), step);
       EXPECT_TRUE(automatic.estimate->Contains(step.truth)) << problem << " seed " << seed;
-      EXPECT_LE(IntProperty(automatic.properties, "q"), k) << problem << " seed " << seed;
+      EXPECT_LE(IntProperty(automatic.properties, "q").value(), k) << problem << " seed " << seed;
       EXPECT_TRUE(automatic.estimate->Hull().IsSubsetOf(r.estimate->Hull()) ||
-                  IntProperty(automatic.properties, "q") == k)
+                  IntProperty(automatic.properties, "q").value() == k)
           << problem << " seed " << seed;
     }
 }
@@ -85,7 +79,7 @@ TEST_P(RelaxedSolverTest, KeepsTheTruthAtEveryStepAsAFilter) {
   ASSERT_EQ(run.steps.size(), 8u);
   for (const StepRecord& s : run.steps) {
     EXPECT_EQ(s.contained, 1) << "step " << s.step;
-    EXPECT_LE(IntProperty(s.properties, "q"), IntProperty(s.properties, "true_outliers"));
+    EXPECT_LE(IntProperty(s.properties, "q").value(), IntProperty(s.properties, "true_outliers").value());
   }
 }
 
@@ -111,19 +105,6 @@ TEST(RelaxedNestingTest, PavingInsideFixpointInsideRepeatedIntersection) {
   }
 }
 
-// How many of the measurements keep the point p (contractors on the
-// degenerate box).
-int Satisfied(const MeasurementSetView& view, const std::vector<double>& p) {
-  int n = 0;
-  for (const auto& m : view.measurements) {
-    Box point{Interval(p[0]), Interval(p[1])};
-    ContractContext context;
-    m->Contract(point, context);
-    n += point.IsEmpty() ? 0 : 1;
-  }
-  return n;
-}
-
 TEST(RelaxedNestingTest, AccumulatorAndQRelaxedEncloseTheSameSolutionSet) {
   // Both enclose S_q, the points satisfying m - q measurements (§2.4, §2.6).
   // Their outer approximations differ: a cell can meet m - q bands without
@@ -139,7 +120,7 @@ TEST(RelaxedNestingTest, AccumulatorAndQRelaxedEncloseTheSameSolutionSet) {
     for (int i = 0; i < 20000; ++i) {
       const std::vector<double> p = {step.truth[0] + UniformReal(rng, -0.3, 0.3),
                                      step.truth[1] + UniformReal(rng, -0.3, 0.3)};
-      if (Satisfied(view, p) < 13) continue;
+      if (testing::KeptBy(view.measurements, p) < 13) continue;
       ++in_s_q;
       EXPECT_TRUE(acc.estimate->Contains(p)) << seed;
       EXPECT_TRUE(relaxed.estimate->Contains(p)) << seed;

@@ -10,13 +10,6 @@ namespace {
 
 using testing::Lines;
 
-std::int64_t IntProperty(const Properties& ps, const std::string& name) {
-  for (const Property& p : ps)
-    if (p.name == name) return std::get<std::int64_t>(p.value);
-  ADD_FAILURE() << "no property " << name;
-  return -1;
-}
-
 TEST(AccumulatorTest, TheHighestCountHoldsTheTruth) {
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     const auto c = Lines(seed, 20, 7);
@@ -26,8 +19,8 @@ TEST(AccumulatorTest, TheHighestCountHoldsTheTruth) {
     int row = 0, col = 0;
     ASSERT_TRUE(acc.grid().CellOf(c.truth[0], c.truth[1], &row, &col));
     EXPECT_GE(acc.counts().at<std::int32_t>(row, col), 13) << seed;
-    EXPECT_LE(IntProperty(r.properties, "q"), 7) << seed;
-    EXPECT_EQ(IntProperty(r.estimate->Extras(), "max_count"), 20 - IntProperty(r.properties, "q"));
+    EXPECT_LE(IntProperty(r.properties, "q").value(), 7) << seed;
+    EXPECT_EQ(IntProperty(r.estimate->Extras(), "max_count").value(), 20 - IntProperty(r.properties, "q").value());
   }
 }
 
@@ -36,7 +29,7 @@ TEST(AccumulatorTest, AGivenQKeepsEveryCellCountingMMinusQ) {
   const StepResult r = MakeAccumulator({{"cells", "100"}, {"q", "7"}, {"auto_q", "false"}}, 0)
                            ->Step(c.views, StopCondition());
   EXPECT_TRUE(r.estimate->Contains(c.truth));
-  EXPECT_EQ(IntProperty(r.estimate->Extras(), "threshold"), 13);
+  EXPECT_EQ(IntProperty(r.estimate->Extras(), "threshold").value(), 13);
 }
 
 TEST(AccumulatorTest, TheSumOfTheSourcesIsTheAccumulatorOfAll) {
@@ -48,8 +41,8 @@ TEST(AccumulatorTest, TheSumOfTheSourcesIsTheAccumulatorOfAll) {
   const auto& a = dynamic_cast<const AccumulatorEstimate&>(*all.estimate);
   const auto& b = dynamic_cast<const AccumulatorEstimate&>(*split.estimate);
   EXPECT_EQ(cv::countNonZero(a.counts() != b.counts()), 0);
-  EXPECT_GE(IntProperty(split.properties, "max_count_source_0"), 1);
-  EXPECT_GE(IntProperty(split.properties, "max_count_source_1"), 1);
+  EXPECT_GE(IntProperty(split.properties, "max_count_source_0").value(), 1);
+  EXPECT_GE(IntProperty(split.properties, "max_count_source_1").value(), 1);
 }
 
 TEST(AccumulatorTest, RejectsWhatItCannotGrid) {

@@ -9,13 +9,6 @@ namespace {
 
 using testing::Lines;
 
-std::int64_t IntProperty(const Properties& ps, const std::string& name) {
-  for (const Property& p : ps)
-    if (p.name == name) return std::get<std::int64_t>(p.value);
-  ADD_FAILURE() << "no property " << name;
-  return -1;
-}
-
 TEST(QRelaxedTest, QZeroIsTheRepeatedIntersection) {
   const auto c = Lines(1, 6, 0);
   auto solver = MakeQRelaxed({{"auto_q", "false"}}, 0);
@@ -37,9 +30,9 @@ TEST(QRelaxedTest, OutliersEmptyTheIntersectionButNotTheRelaxedOne) {
     EXPECT_TRUE(strict.estimate->Hull().IsEmpty()) << seed;
     const StepResult fixed = MakeQRelaxed({{"auto_q", "false"}, {"q", "7"}}, 0)->Step(c.views, StopCondition());
     EXPECT_TRUE(fixed.estimate->Contains(c.truth)) << seed;
-    EXPECT_EQ(IntProperty(fixed.properties, "q"), 7);
+    EXPECT_EQ(IntProperty(fixed.properties, "q").value(), 7);
     const StepResult found = MakeQRelaxed({}, 0)->Step(c.views, StopCondition());
-    EXPECT_LE(IntProperty(found.properties, "q"), 7) << seed;
+    EXPECT_LE(IntProperty(found.properties, "q").value(), 7) << seed;
     EXPECT_TRUE(found.estimate->Contains(c.truth)) << seed;
     EXPECT_TRUE(found.estimate->Hull().IsSubsetOf(fixed.estimate->Hull())) << seed;
   }
@@ -55,7 +48,7 @@ TEST(QRelaxedTest, PavingKeepsTheTruthInNarrowBoxes) {
   EXPECT_GE(paving.boundary().size(), 1u);
   for (const Box& b : paving.boundary()) EXPECT_LT(b.MaxWidth(), 0.02);
   // Tighter than the contracted box of the same q.
-  const int q = static_cast<int>(IntProperty(r.properties, "q"));
+  const int q = static_cast<int>(IntProperty(r.properties, "q").value());
   const StepResult box = MakeQRelaxed({{"q", std::to_string(q)}, {"auto_q", "false"}}, 0)
                              ->Step(c.views, StopCondition());
   EXPECT_LE(r.estimate->Area(0, 1), box.estimate->Area(0, 1));
@@ -75,7 +68,7 @@ TEST(QRelaxedTest, AsAFilterStartsFromThePrediction) {
   const StepResult second = solver->Step(c.views, StopCondition());
   EXPECT_TRUE(second.estimate->Contains(c.truth));
   EXPECT_TRUE(second.estimate->Hull().IsSubsetOf(first.estimate->Hull()));
-  EXPECT_EQ(IntProperty(second.properties, "reset"), 0);
+  EXPECT_EQ(IntProperty(second.properties, "reset").value(), 0);
   auto unfiltered = MakeQRelaxed({{"q", "5"}, {"auto_q", "false"}, {"filter", "false"}}, 0);
   unfiltered->Step(c.views, StopCondition());
   EXPECT_EQ(unfiltered->Step(c.views, StopCondition()).estimate->Hull(), first.estimate->Hull());

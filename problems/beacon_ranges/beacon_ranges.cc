@@ -175,23 +175,6 @@ std::vector<double> UniformPoint(double half_width, RandomEngine& rng) {
 
 Box SearchBox(double radius) { return Box({Interval(-radius, radius), Interval(-radius, radius)}); }
 
-class TwoRobotsProblem : public Problem {
- public:
-  explicit TwoRobotsProblem(BeaconScene scene) : scene_(std::move(scene)) {}
-  std::string_view Name() const override { return "beacon-ranges"; }
-  int NumSteps() const override { return 1; }
-  bool Next(Step* step) override {
-    if (done_) return false;
-    done_ = true;
-    *step = RangeStep(0, scene_.box, scene_.truth, scene_.ranges);
-    return true;
-  }
-
- private:
-  BeaconScene scene_;
-  bool done_ = false;
-};
-
 // random (one step) and moving (a drive along a circle) share the beacons
 // and the measurement model.
 class SimulatedProblem : public Problem {
@@ -256,7 +239,10 @@ class SimulatedProblem : public Problem {
 std::unique_ptr<Problem> MakeBeaconRanges(const ParamMap& params, std::uint64_t seed) {
   const BeaconRangesParams p = ParseBeaconRanges("beacon-ranges", params);
   if (p.scenario == "two-robots")
-    return std::make_unique<TwoRobotsProblem>(ReadBeaconScene(TwoRobotsScenePath()));
+    return std::make_unique<SingleStepProblem>(
+        "beacon-ranges", [scene = ReadBeaconScene(TwoRobotsScenePath())] {
+          return RangeStep(0, scene.box, scene.truth, scene.ranges);
+        });
   return std::make_unique<SimulatedProblem>(p, seed);
 }
 

@@ -62,28 +62,9 @@ Step MakeChainStep(const ChainParams& p, std::uint64_t seed) {
   return step;
 }
 
-namespace {
-class ChainProblem : public Problem {
- public:
-  ChainProblem(const ChainParams& params, std::uint64_t seed) : params_(params), seed_(seed) {}
-  std::string_view Name() const override { return "chain"; }
-  int NumSteps() const override { return 1; }
-  bool Next(Step* step) override {
-    if (done_) return false;
-    done_ = true;
-    *step = MakeChainStep(params_, seed_);
-    return true;
-  }
-
- private:
-  ChainParams params_;
-  std::uint64_t seed_;
-  bool done_ = false;
-};
-}  // namespace
-
 std::unique_ptr<Problem> MakeChain(const ParamMap& params, std::uint64_t seed) {
-  return std::make_unique<ChainProblem>(ParseParams<ChainParams>("chain", params), seed);
+  return std::make_unique<SingleStepProblem>(
+      "chain", [p = ParseParams<ChainParams>("chain", params), seed] { return MakeChainStep(p, seed); });
 }
 
 }  // namespace icp

@@ -57,30 +57,11 @@ Step MakeLineIntersectionStep(const LineIntersectionParams& p, std::uint64_t see
   return MakePlanarStep(0, csp, truth, outliers, {});
 }
 
-namespace {
-class LineIntersectionProblem : public Problem {
- public:
-  LineIntersectionProblem(const LineIntersectionParams& params, std::uint64_t seed)
-      : params_(params), seed_(seed) {}
-  std::string_view Name() const override { return "line-intersection"; }
-  int NumSteps() const override { return 1; }
-  bool Next(Step* step) override {
-    if (done_) return false;
-    done_ = true;
-    *step = MakeLineIntersectionStep(params_, seed_);
-    return true;
-  }
-
- private:
-  LineIntersectionParams params_;
-  std::uint64_t seed_;
-  bool done_ = false;
-};
-}  // namespace
-
 std::unique_ptr<Problem> MakeLineIntersection(const ParamMap& params, std::uint64_t seed) {
-  return std::make_unique<LineIntersectionProblem>(
-      ParseLineIntersection("line-intersection", params), seed);
+  return std::make_unique<SingleStepProblem>(
+      "line-intersection", [p = ParseLineIntersection("line-intersection", params), seed] {
+        return MakeLineIntersectionStep(p, seed);
+      });
 }
 
 }  // namespace icp

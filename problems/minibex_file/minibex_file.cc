@@ -10,33 +10,21 @@ void Describe(MinibexFileParams& p, ParamSet& set) {
 }
 
 namespace {
-class MinibexFileProblem : public Problem {
- public:
-  explicit MinibexFileProblem(ConstraintSystem csp) : csp_(std::move(csp)) {}
-  std::string_view Name() const override { return "minibex-file"; }
-  int NumSteps() const override { return 1; }
-  bool Next(Step* step) override {
-    if (done_) return false;
-    done_ = true;
-    *step = Step();
-    step->views.space.names = csp_.names();
-    CspView view;
-    view.csp = csp_;
-    for (int i = 0; i < csp_.num_variables(); ++i) view.states.push_back({0, i});
-    step->views.csp = std::move(view);
-    // Each constraint, once the file's loops are expanded, is one
-    // measurement; which are outliers is unknown.
-    MeasurementSetView set;
-    set.prior = csp_.domains();
-    set.measurements = ConstraintContractors(csp_);
-    step->views.measurement_set = std::move(set);
-    return true;
-  }
-
- private:
-  ConstraintSystem csp_;
-  bool done_ = false;
-};
+Step MinibexFileStep(const ConstraintSystem& csp) {
+  Step step;
+  step.views.space.names = csp.names();
+  CspView view;
+  view.csp = csp;
+  for (int i = 0; i < csp.num_variables(); ++i) view.states.push_back({0, i});
+  step.views.csp = std::move(view);
+  // Each constraint, once the file's loops are expanded, is one
+  // measurement; which are outliers is unknown.
+  MeasurementSetView set;
+  set.prior = csp.domains();
+  set.measurements = ConstraintContractors(csp);
+  step.views.measurement_set = std::move(set);
+  return step;
+}
 }  // namespace
 
 namespace {
@@ -53,7 +41,10 @@ ParamMap ResolveMinibexFile(const std::string& owner, const ParamMap& values) {
 }
 
 std::unique_ptr<Problem> MakeMinibexFile(const ParamMap& params, std::uint64_t) {
-  return std::make_unique<MinibexFileProblem>(ParseMinibexFile(Parse("minibex-file", params).file));
+  return std::make_unique<SingleStepProblem>(
+      "minibex-file", [csp = ParseMinibexFile(Parse("minibex-file", params).file)] {
+        return MinibexFileStep(csp);
+      });
 }
 
 }  // namespace icp
