@@ -3,10 +3,12 @@
 #ifndef ICPBENCH_PROBLEMS_MEASUREMENT_CHECKS_H_
 #define ICPBENCH_PROBLEMS_MEASUREMENT_CHECKS_H_
 
+#include <string>
 #include <vector>
 
 #include "core/box.h"
 #include "core/contractor.h"
+#include "problems/problem.h"
 
 namespace icp {
 
@@ -33,6 +35,16 @@ inline bool RejectsTruth(Contractor& contractor, const std::vector<double>& trut
   ContractContext context;
   contractor.Contract(box, context);
   return box.IsEmpty();
+}
+
+// The constraints of a step's CSP view in Minibex syntax, to compare
+// instances.
+inline std::vector<std::string> Constraints(const Step& step) {
+  std::vector<std::string> out;
+  const ConstraintSystem& csp = step.views.csp->csp;
+  for (int c = 0; c < static_cast<int>(csp.constraints().size()); ++c)
+    out.push_back(csp.ConstraintToString(c));
+  return out;
 }
 
 }  // namespace icp

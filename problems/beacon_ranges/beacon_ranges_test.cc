@@ -38,14 +38,6 @@ void ExpectOutliersAreTheOnesMissingTheTruth(const Step& step) {
   }
 }
 
-std::vector<std::string> Constraints(const Step& step) {
-  std::vector<std::string> out;
-  const ConstraintSystem& csp = step.views.csp->csp;
-  for (int c = 0; c < static_cast<int>(csp.constraints().size()); ++c)
-    out.push_back(csp.ConstraintToString(c));
-  return out;
-}
-
 int Count(const std::vector<bool>& flags) {
   int n = 0;
   for (bool f : flags) n += f;

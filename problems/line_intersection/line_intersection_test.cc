@@ -12,14 +12,6 @@
 namespace icp {
 namespace {
 
-std::vector<std::string> Constraints(const Step& step) {
-  std::vector<std::string> out;
-  const ConstraintSystem& csp = step.views.csp->csp;
-  for (int c = 0; c < static_cast<int>(csp.constraints().size()); ++c)
-    out.push_back(csp.ConstraintToString(c));
-  return out;
-}
-
 TEST(LineIntersectionTest, OffersBothViewsOverTheSearchBox) {
   const LineIntersectionParams p;
   const Step step = MakeLineIntersectionStep(p, 3);
