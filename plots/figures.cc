@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 #include <utility>
 
@@ -339,6 +340,83 @@ void PlotTimingFigure(const FigureText& text, const std::vector<const GroupSumma
   f.name = text.name;
   f.width_in = std::max(4.0, 1.4 * static_cast<double>(panel.series.size()) + 1.5);
   f.height_in = 4.5;
+  f.panels = {panel};
+  Render(f, out_dir, out);
+}
+
+namespace {
+// The side of BlockMax's blocks.
+int BlockSide(const cv::Mat& counts, int max_side) {
+  return std::max({1, (counts.rows + max_side - 1) / max_side, (counts.cols + max_side - 1) / max_side});
+}
+}  // namespace
+
+cv::Mat BlockMax(const cv::Mat& counts, int max_side) {
+  if (counts.type() != CV_32S) throw std::invalid_argument("BlockMax: counts must be CV_32S");
+  if (max_side < 1) throw std::invalid_argument("BlockMax: max_side must be >= 1");
+  const int block = BlockSide(counts, max_side);
+  if (block == 1) return counts;
+  const int rows = (counts.rows + block - 1) / block, cols = (counts.cols + block - 1) / block;
+  cv::Mat out(rows, cols, CV_32S, cv::Scalar(std::numeric_limits<int>::min()));
+  for (int r = 0; r < counts.rows; ++r) {
+    const int* in = counts.ptr<int>(r);
+    int* o = out.ptr<int>(r / block);
+    for (int c = 0; c < counts.cols; ++c) o[c / block] = std::max(o[c / block], in[c]);
+  }
+  return out;
+}
+
+void PlotAccumulatorFigure(const FigureText& text, const cv::Mat& counts, const Interval& x,
+                           const Interval& y, const std::vector<MarkerSet>& markers,
+                           const std::string& out_dir, PlotOutput* out) {
+  if (counts.empty() || x.IsEmpty() || y.IsEmpty()) return Skip(text, out);
+  // Each pixel of the drawn matrix stands for a block of block x block
+  // cells (the last of a row or column may hold fewer and overhang the
+  // range, which clips it).
+  const cv::Mat drawn = BlockMax(counts, kAccumulatorPlotCells);
+  const int block = BlockSide(counts, kAccumulatorPlotCells);
+  const double cell_x = x.Width() / counts.cols * block, cell_y = y.Width() / counts.rows * block;
+  double max_count = 0;
+  cv::minMaxLoc(counts, nullptr, &max_count);
+  std::ostringstream data;
+  data << "$counts << EOD\n";
+  for (int r = 0; r < drawn.rows; ++r) {
+    const int* row = drawn.ptr<int>(r);
+    for (int c = 0; c < drawn.cols; ++c) data << (c ? " " : "") << row[c];
+    data << "\n";
+  }
+  data << "EOD\n";
+  auto num = [](double v) {
+    std::ostringstream s;
+    s.precision(17);
+    s << v;
+    return s.str();
+  };
+  Panel panel;
+  panel.setup = data.str() + "set title " + Quote(text.title) + " noenhanced\nunset grid\n" +
+                "set xlabel 'x'\nset ylabel 'y'\nset size ratio -1\n" +
+                "set xrange [" + num(x.lo()) + ":" + num(x.hi()) + "]\nset yrange [" +
+                num(y.lo()) + ":" + num(y.hi()) + "]\n" +
+                "set cbrange [0:" + num(std::max(1.0, max_count)) + "]\nset cblabel 'count'\n" +
+                "set cbtics " + num(std::max(1.0, std::ceil(max_count / 10))) + "\n" +
+                "set palette defined (0 '#000000', 0.35 '#5a1a8a', 0.7 '#e8542a', 1 '#ffff9a')\n" +
+                "set key top left opaque box noenhanced\nset tics out\n";
+  panel.series.push_back({"", {},
+                          "$counts matrix using (" + num(x.lo()) + " + ($1 + 0.5) * " +
+                              num(cell_x) + "):(" + num(y.lo()) + " + ($2 + 0.5) * " +
+                              num(cell_y) + "):3 with image notitle"});
+  for (const MarkerSet& m : markers) {
+    Series s{std::string("using 1:2 with points ") +
+                 (m.big ? "pt 2 ps 5 lw 4 lc rgb '#00e5ff'" : "pt 2 ps 1.8 lw 2.5 lc rgb '#33ff33'") +
+                 (m.title.empty() ? " notitle" : " title " + Quote(m.title)),
+             {}, ""};
+    for (const auto& [px, py] : m.points) s.rows.push_back({px, py});
+    if (HasPoint(s)) panel.series.push_back(std::move(s));
+  }
+  Figure f;
+  f.name = text.name;
+  f.width_in = 7;
+  f.height_in = 6;
   f.panels = {panel};
   Render(f, out_dir, out);
 }
