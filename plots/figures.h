@@ -88,7 +88,9 @@ struct MarkerSet {
 // An accumulator as an image: counts (CV_32S, row r the r-th cell of y from
 // y.lo() up, column c the c-th cell of x) over the rectangle x by y, cells
 // of equal size, with a colour bar "count" from 0 to the maximum and the
-// markers on top; equal scales on both axes. A matrix of more than
+// markers on top (the truth's big cross open at its centre, so that it
+// does not hide the maximum); equal scales on both axes; a '\n' in the
+// title breaks it. A matrix of more than
 // kAccumulatorPlotCells cells a side is drawn at BlockMax resolution so the
 // data stays small and the maximum stays visible. Skipped when counts is
 // empty.

@@ -35,8 +35,8 @@ std::optional<double> NumberProperty(const Properties& properties, const std::st
 // The step's estimate holds nothing: MeasureStep records an empty hull as
 // lo = +inf > hi = -inf.
 bool EmptyEstimate(const StepRecord& s) {
-  return !s.vars.empty() &&
-         std::any_of(s.vars.begin(), s.vars.end(), [](const VariableRecord& v) { return !(v.lo <= v.hi); });
+  return !s.vars.empty() && std::any_of(s.vars.begin(), s.vars.end(),
+                                        [](const VariableRecord& v) { return !(v.lo <= v.hi); });
 }
 
 double Mean(const std::vector<double>& v) {
@@ -53,9 +53,17 @@ std::string Share(int part, int whole) {
 TextTable RelaxedTable(const std::vector<RunRecord>& runs) {
   TextTable t;
   t.title = "Thesis 003: relaxed solvers";
-  t.headers = {"configuration", "problem",        "runs",          "steps",
-               "consistency",   "mean area (m²)", "mean q",        "mean true outliers",
-               "q ≤ true outliers", "empty",      "median time (ms)"};
+  t.headers = {"configuration",
+               "problem",
+               "runs",
+               "steps",
+               "consistency",
+               "mean area (m²)",
+               "mean q",
+               "mean true outliers",
+               "q ≤ true outliers",
+               "empty",
+               "median time (ms)"};
   t.numeric = {false, false, true, true, true, true, true, true, true, true, true};
   t.wide = true;
   for (const GroupSummary& g : SummariseGroups(runs)) {
@@ -131,7 +139,8 @@ std::string Plural(int n, const std::string& word) {
 }
 
 std::string RunSetting(const RunRecord& r, const cv::Mat& counts) {
-  return r.spec.problem + (r.spec.problem_params.empty() ? "" : " " + CompactParams(r.spec.problem_params)) +
+  return r.spec.problem +
+         (r.spec.problem_params.empty() ? "" : " " + CompactParams(r.spec.problem_params)) +
          ", seed " + std::to_string(r.spec.seed) + ", " + std::to_string(counts.cols) + "x" +
          std::to_string(counts.rows) + " cells";
 }
@@ -167,9 +176,10 @@ void Fig52(const std::vector<RunRecord>& runs, const std::string& out_dir, PlotO
   int lines = 0, wrong = 0;
   for (int n : a.measurements) lines += n;
   for (int n : a.outliers) wrong += n;
-  text.title = "Accumulator of " + Plural(lines, "line") + ", " + Plural(wrong, "outlier") + " (" +
-               RunSetting(*run, sum) + "): max count " + std::to_string(m.count) + " of " +
-               std::to_string(lines) + " lines at " + Point(mx, my) + " " + Regions(m.regions);
+  text.title = "Accumulator of " + Plural(lines, "line") + ", " + Plural(wrong, "outlier") +
+               ": max count " + std::to_string(m.count) + " of " + std::to_string(lines) +
+               " lines at " + Point(mx, my) + " " + Regions(m.regions) + "\n(" +
+               RunSetting(*run, sum) + ")";
   PlotAccumulatorFigure(text, sum, a.x, a.y, Truth(a), out_dir, out);
 }
 
@@ -201,9 +211,9 @@ void Fig55To57(const std::vector<RunRecord>& runs, const std::string& out_dir, P
       markers.push_back({std::string("beacons of robot ") + kRobot[s], a.beacons[s], false});
     const std::string title =
         std::string("Robot ") + kRobot[s] + " alone (source " + std::to_string(s) + ": " +
-        Plural(a.measurements[s], "range") + ", " + Plural(a.outliers[s], "outlier") + "; " +
-        RunSetting(*run, a.counts[s]) + "): max count " + std::to_string(m.count) + " of " +
-        std::to_string(a.measurements[s]) + " " + Regions(m.regions);
+        Plural(a.measurements[s], "range") + ", " + Plural(a.outliers[s], "outlier") +
+        "): max count " + std::to_string(m.count) + " of " + std::to_string(a.measurements[s]) +
+        " " + Regions(m.regions) + "\n(" + RunSetting(*run, a.counts[s]) + ")";
     PlotAccumulatorFigure({kNames[s], title, none}, a.counts[s], a.x, a.y, markers, out_dir, out);
   }
   const cv::Mat& sum = a.counts.back();
@@ -216,11 +226,10 @@ void Fig55To57(const std::vector<RunRecord>& runs, const std::string& out_dir, P
   MarkerSet beacons{"beacons", {}, false};
   for (const auto& b : a.beacons) beacons.points.insert(beacons.points.end(), b.begin(), b.end());
   if (!beacons.points.empty()) markers.push_back(beacons);
-  const std::string title = "Sum of the " + Plural(sources, "source") + " (" +
-                            Plural(ranges, "range") + ", " + Plural(wrong, "outlier") + "; " +
-                            RunSetting(*run, sum) + "): max count " + std::to_string(m.count) +
+  const std::string title = "Sum of both robots (" + Plural(ranges, "range") + ", " +
+                            Plural(wrong, "outlier") + "): max count " + std::to_string(m.count) +
                             " of " + std::to_string(ranges) + " at " + Point(mx, my) + " " +
-                            Regions(m.regions);
+                            Regions(m.regions) + "\n(" + RunSetting(*run, sum) + ")";
   PlotAccumulatorFigure({kNames[2], title, none}, sum, a.x, a.y, markers, out_dir, out);
 }
 

@@ -22,11 +22,10 @@
 #ifndef ICPBENCH_EXPERIMENTS_THESIS003_THESIS003_H_
 #define ICPBENCH_EXPERIMENTS_THESIS003_THESIS003_H_
 
+#include <opencv2/core.hpp>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <opencv2/core.hpp>
 
 #include "core/box.h"
 #include "harness/run_record.h"
@@ -52,10 +51,10 @@ struct RecomputedAccumulator {
   // none), then their sum: SourceAccumulators' output. Row r is the r-th
   // cell of y from below, column c the c-th of x.
   std::vector<cv::Mat> counts;
-  Interval x, y;                    // the grid's extent
-  std::vector<double> truth;        // (x, y); empty when unknown
-  std::vector<int> measurements;    // per source
-  std::vector<int> outliers;        // per source: true outliers
+  Interval x, y;                  // the grid's extent
+  std::vector<double> truth;      // (x, y); empty when unknown
+  std::vector<int> measurements;  // per source
+  std::vector<int> outliers;      // per source: true outliers
   // Beacons per source, for beacon-ranges two-robots (read from the
   // shipped scene); empty otherwise.
   std::vector<std::vector<std::pair<double, double>>> beacons;

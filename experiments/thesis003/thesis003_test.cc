@@ -54,9 +54,10 @@ StepRecord MakeStep(int contained, double area, std::optional<int> q, std::optio
   return s;
 }
 
-RunRecord MakeRun(const std::string& algorithm, ParamMap algorithm_params, const std::string& problem,
-                  ParamMap problem_params, std::uint64_t seed, std::vector<StepRecord> steps,
-                  const std::string& experiment, RunStatus status = RunStatus::kOk) {
+RunRecord MakeRun(const std::string& algorithm, ParamMap algorithm_params,
+                  const std::string& problem, ParamMap problem_params, std::uint64_t seed,
+                  std::vector<StepRecord> steps, const std::string& experiment,
+                  RunStatus status = RunStatus::kOk) {
   RunRecord r;
   r.spec = {algorithm, std::move(algorithm_params), problem, std::move(problem_params), seed};
   r.status = status;
@@ -90,10 +91,10 @@ TEST(Thesis003Test, TableFromHandMadeRuns) {
       MakeRun("q-relaxed", {}, "line-intersection", lines3, 3, {}, kThesis003RelaxedLines,
               RunStatus::kFailed),
       // HC4: no q; one empty step.
-      MakeRun("hc4", {}, "beacon-ranges", {{"scenario", "random"}, {"outliers", "1"}}, 1,
-              {MakeStep(0, 0, std::nullopt, 1, 0.5e-3, true),
-               MakeStep(1, 1, std::nullopt, 0, 1.5e-3)},
-              kThesis003RelaxedBeacons),
+      MakeRun(
+          "hc4", {}, "beacon-ranges", {{"scenario", "random"}, {"outliers", "1"}}, 1,
+          {MakeStep(0, 0, std::nullopt, 1, 0.5e-3, true), MakeStep(1, 1, std::nullopt, 0, 1.5e-3)},
+          kThesis003RelaxedBeacons),
       // Other experiments' configurations have no row.
       MakeRun("polynomial", {}, "line-intersection", lines3, 1, {MakeStep(1, 2, 3, 3, 1e-3)},
               "start"),
@@ -197,8 +198,8 @@ TEST(Thesis003Test, FiguresAreWritten) {
   PlotOutput out;
   Thesis003Figures({Fig52Run(2), Fig52Run(1), Fig55Run()}, dir.string(), &out);
   EXPECT_TRUE(out.messages.empty()) << out.messages.front();
-  EXPECT_EQ(out.files, FigureFiles(dir, {"fig5_2_accumulator", "fig5_5_robot_a",
-                                         "fig5_6_robot_b", "fig5_7_sum"}));
+  EXPECT_EQ(out.files, FigureFiles(dir, {"fig5_2_accumulator", "fig5_5_robot_a", "fig5_6_robot_b",
+                                         "fig5_7_sum"}));
   for (const std::string& f : out.files) EXPECT_GT(fs::file_size(f), 0u) << f;
   fs::remove_all(dir);
 }
