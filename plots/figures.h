@@ -15,8 +15,12 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include <opencv2/core.hpp>
+
+#include "core/interval.h"
 #include "report/report.h"
 #include "harness/run_record.h"
 
@@ -73,6 +77,31 @@ void PlotAreaFigure(const FigureText& text, const std::vector<const RunRecord*>&
 // Solve time per CSP, one box per group, pooling its ok runs' steps.
 void PlotTimingFigure(const FigureText& text, const std::vector<const GroupSummary*>& groups,
                       const std::string& out_dir, PlotOutput* out);
+
+// Points marked on an accumulator figure: big crosses (the truth) or small
+// ones (beacons), one legend entry per set.
+struct MarkerSet {
+  std::string title;  // legend entry; "" for none
+  std::vector<std::pair<double, double>> points;  // (x, y)
+  bool big = false;
+};
+// An accumulator as an image: counts (CV_32S, row r the r-th cell of y from
+// y.lo() up, column c the c-th cell of x) over the rectangle x by y, cells
+// of equal size, with a colour bar "count" from 0 to the maximum and the
+// markers on top (the truth's big cross open at its centre, so that it
+// does not hide the maximum); equal scales on both axes; a '\n' in the
+// title breaks it. A matrix of more than
+// kAccumulatorPlotCells cells a side is drawn at BlockMax resolution so the
+// data stays small and the maximum stays visible. Skipped when counts is
+// empty.
+void PlotAccumulatorFigure(const FigureText& text, const cv::Mat& counts, const Interval& x,
+                           const Interval& y, const std::vector<MarkerSet>& markers,
+                           const std::string& out_dir, PlotOutput* out);
+inline constexpr int kAccumulatorPlotCells = 400;
+// counts (CV_32S) in blocks of ceil(side / max_side) cells a side (the last
+// block of a row or column may be smaller), each block its cells' maximum;
+// counts itself when both sides are at most max_side.
+cv::Mat BlockMax(const cv::Mat& counts, int max_side);
 
 // The groups of the generic fig_timing (see the top) and their setting
 // ("car-track, steps=40"); none without ok runs at default parameters.

@@ -171,7 +171,8 @@ TEST(Paper000Test, FiguresOfTheDefaultSpecsExperiments) {
       runs.push_back(Window(MakeRun(algorithm, {}, {{"w", w}}, 1, std::vector<double>(30, 1e-5))));
     }
   }
-  const PlotOutput out = PlotRuns(runs, dir.string(), PaperFigures);
+  // Paper 000's figures alone: the other papers skip theirs with messages.
+  const PlotOutput out = PlotRuns(runs, dir.string(), Paper000Figures);
   EXPECT_TRUE(out.messages.empty()) << out.messages.front();
   EXPECT_EQ(out.files,
             FigureFiles(dir, {"fig2_window", "fig3_corridors", "fig4_area", "fig_timing"}));
@@ -196,7 +197,9 @@ TEST(Paper000Test, IsRegistered) {
   ASSERT_FALSE(Papers().empty());
   EXPECT_EQ(Papers()[0].name, "paper000");
   const std::vector<RunRecord> runs = {Table1(MakeRun("hc4", {}, {}, 1, {1e-3}))};
-  EXPECT_EQ(Report(runs, "md", PaperTables), Md(runs));
+  // Its tables come first; the other papers' follow.
+  const std::string md = Md(runs);
+  EXPECT_EQ(Report(runs, "md", PaperTables).substr(0, md.size()), md);
 }
 
 }  // namespace

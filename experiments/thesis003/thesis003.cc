@@ -1,0 +1,332 @@
+#include "experiments/thesis003/thesis003.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <variant>
+
+#include "algorithms/accumulator/accumulator.h"
+#include "core/contractor.h"
+#include "core/grid.h"
+#include "harness/metrics.h"
+#include "problems/beacon_ranges/beacon_ranges.h"
+#include "problems/registry.h"
+
+namespace icp {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr const char* kDash = "—";
+
+// A numeric step property, or nothing when the step lacks it.
+std::optional<double> NumberProperty(const Properties& properties, const std::string& name) {
+  for (const Property& p : properties) {
+    if (p.name != name) continue;
+    if (const auto* i = std::get_if<std::int64_t>(&p.value)) return static_cast<double>(*i);
+    if (const auto* d = std::get_if<double>(&p.value)) return *d;
+  }
+  return std::nullopt;
+}
+
+// The step's estimate holds nothing: MeasureStep records an empty hull as
+// lo = +inf > hi = -inf.
+bool EmptyEstimate(const StepRecord& s) {
+  return !s.vars.empty() && std::any_of(s.vars.begin(), s.vars.end(),
+                                        [](const VariableRecord& v) { return !(v.lo <= v.hi); });
+}
+
+double Mean(const std::vector<double>& v) {
+  if (v.empty()) return kNaN;
+  double sum = 0;
+  for (double x : v) sum += x;
+  return sum / static_cast<double>(v.size());
+}
+
+std::string Share(int part, int whole) {
+  return whole > 0 ? FormatNumber(static_cast<double>(part) / whole) : kDash;
+}
+
+TextTable RelaxedTable(const std::vector<RunRecord>& runs) {
+  TextTable t;
+  t.title = "Thesis 003: relaxed solvers";
+  t.headers = {"configuration",
+               "problem",
+               "runs",
+               "steps",
+               "consistency",
+               "mean area (m²)",
+               "mean q",
+               "mean true outliers",
+               "q ≤ true outliers",
+               "empty",
+               "median time (ms)"};
+  t.numeric = {false, false, true, true, true, true, true, true, true, true, true};
+  t.wide = true;
+  for (const GroupSummary& g : SummariseGroups(runs)) {
+    if (!HasExperiment(g, kThesis003RelaxedLines) && !HasExperiment(g, kThesis003RelaxedBeacons))
+      continue;
+    int steps = 0, known = 0, contained = 0, empty = 0, compared = 0, q_within = 0;
+    std::vector<double> areas, qs, outliers, times;
+    for (const RunRecord* r : g.ok_runs) {
+      for (const StepRecord& s : r->steps) {
+        ++steps;
+        if (s.contained >= 0) {
+          ++known;
+          contained += s.contained;
+        }
+        const bool is_empty = EmptyEstimate(s);
+        empty += is_empty;
+        if (!is_empty && std::isfinite(s.area)) areas.push_back(s.area);
+        const std::optional<double> q = NumberProperty(s.properties, "q");
+        const std::optional<double> k = NumberProperty(s.properties, "true_outliers");
+        if (q) qs.push_back(*q);
+        if (k) outliers.push_back(*k);
+        if (q && k) {
+          ++compared;
+          q_within += *q <= *k;
+        }
+        times.push_back(s.solve_time_s);
+      }
+    }
+    std::string runs_cell = std::to_string(g.ok);
+    if (g.runs.size() != static_cast<std::size_t>(g.ok))
+      runs_cell += " of " + std::to_string(g.runs.size());
+    t.rows.push_back({WithParams(DisplayOf(g.algorithm).label, g.algorithm_params),
+                      WithParams(g.problem, g.problem_params), runs_cell, std::to_string(steps),
+                      Share(contained, known), FormatNumber(Mean(areas)), FormatNumber(Mean(qs)),
+                      FormatNumber(Mean(outliers)), Share(q_within, compared), Share(empty, steps),
+                      FormatNumber(Quantile(times, 0.5) * 1e3)});
+    for (const std::string& p : g.problems)
+      t.items.push_back(WithParams(g.algorithm, g.algorithm_params) + " on " +
+                        WithParams(g.problem, g.problem_params) + ": " + p);
+  }
+  t.notes.push_back(
+      "Every configuration with a run of experiment relaxed-lines or relaxed-beacons, over the "
+      "steps of its ok runs (every seed); runs: ok runs (of all, when some failed). "
+      "Consistency: share of the steps whose estimate holds the truth. Mean area: over the "
+      "steps with a non-empty estimate. q: the number of measurements the solver found it must "
+      "drop (step property q); true outliers: how many were wrong; q ≤ true outliers: share of "
+      "the steps where the solver dropped no more than the truth requires. Empty: share of the "
+      "steps with an empty estimate (ICP once an outlier is in). — : no such value (HC4 "
+      "reports no q).");
+  if (t.rows.empty())
+    t.notes.push_back("No run of experiment relaxed-lines or relaxed-beacons in the store.");
+  return t;
+}
+
+// "(1.234, -0.5)".
+std::string Point(double x, double y) {
+  return "(" + FormatNumber(x) + ", " + FormatNumber(y) + ")";
+}
+
+// The centre of the maximum's hull in the grid's coordinates.
+std::pair<double, double> MaximumCentre(const RecomputedAccumulator& a, const cv::Mat& counts,
+                                        const AccumulatorMaximum& m) {
+  const double cx = a.x.Width() / counts.cols, cy = a.y.Width() / counts.rows;
+  return {a.x.lo() + 0.5 * (m.col0 + m.col1) * cx, a.y.lo() + 0.5 * (m.row0 + m.row1) * cy};
+}
+
+std::string Regions(int n) {
+  return n == 1 ? "in one region" : "in " + std::to_string(n) + " separate regions";
+}
+
+std::string Plural(int n, const std::string& word) {
+  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
+}
+
+std::string RunSetting(const RunRecord& r, const cv::Mat& counts) {
+  return r.spec.problem +
+         (r.spec.problem_params.empty() ? "" : " " + CompactParams(r.spec.problem_params)) +
+         ", seed " + std::to_string(r.spec.seed) + ", " + std::to_string(counts.cols) + "x" +
+         std::to_string(counts.rows) + " cells";
+}
+
+std::vector<MarkerSet> Truth(const RecomputedAccumulator& a) {
+  if (a.truth.size() < 2) return {};
+  return {{"truth", {{a.truth[0], a.truth[1]}}, true}};
+}
+
+void SkipWith(const std::string& name, const std::string& reason, PlotOutput* out) {
+  out->messages.push_back(name + ": skipped: " + reason);
+}
+
+// Draws nothing but the skip message of text.
+void Missing(const FigureText& text, const std::string& out_dir, PlotOutput* out) {
+  PlotAccumulatorFigure(text, cv::Mat(), Interval(0, 1), Interval(0, 1), {}, out_dir, out);
+}
+
+void Fig52(const std::vector<RunRecord>& runs, const std::string& out_dir, PlotOutput* out) {
+  FigureText text{"fig5_2_accumulator", "",
+                  std::string("no ok accumulator run of experiment ") + kThesis003Fig52};
+  const RunRecord* run = Thesis003FigureRun(runs, kThesis003Fig52);
+  if (!run) return Missing(text, out_dir, out);
+  RecomputedAccumulator a;
+  try {
+    a = RecomputeAccumulator(*run);
+  } catch (const std::exception& e) {
+    return SkipWith(text.name, e.what(), out);
+  }
+  const cv::Mat& sum = a.counts.back();
+  const AccumulatorMaximum m = FindMaximum(sum);
+  const auto [mx, my] = MaximumCentre(a, sum, m);
+  int lines = 0, wrong = 0;
+  for (int n : a.measurements) lines += n;
+  for (int n : a.outliers) wrong += n;
+  text.title = "Accumulator of " + Plural(lines, "line") + ", " + Plural(wrong, "outlier") +
+               ": max count " + std::to_string(m.count) + " of " + std::to_string(lines) +
+               " lines at " + Point(mx, my) + " " + Regions(m.regions) + "\n(" +
+               RunSetting(*run, sum) + ")";
+  PlotAccumulatorFigure(text, sum, a.x, a.y, Truth(a), out_dir, out);
+}
+
+void Fig55To57(const std::vector<RunRecord>& runs, const std::string& out_dir, PlotOutput* out) {
+  const char* const kNames[3] = {"fig5_5_robot_a", "fig5_6_robot_b", "fig5_7_sum"};
+  const std::string none = std::string("no ok accumulator run of experiment ") + kThesis003Fig55;
+  const RunRecord* run = Thesis003FigureRun(runs, kThesis003Fig55);
+  if (!run) {
+    for (const char* name : kNames) Missing({name, "", none}, out_dir, out);
+    return;
+  }
+  RecomputedAccumulator a;
+  try {
+    a = RecomputeAccumulator(*run);
+  } catch (const std::exception& e) {
+    for (const char* name : kNames) SkipWith(name, e.what(), out);
+    return;
+  }
+  const int sources = static_cast<int>(a.counts.size()) - 1;
+  const char* const kRobot[2] = {"A", "B"};
+  for (int s = 0; s < 2; ++s) {
+    if (s >= sources) {
+      SkipWith(kNames[s], "the run of experiment fig5_5 has no source " + std::to_string(s), out);
+      continue;
+    }
+    const AccumulatorMaximum m = FindMaximum(a.counts[s]);
+    std::vector<MarkerSet> markers = Truth(a);
+    if (s < static_cast<int>(a.beacons.size()))
+      markers.push_back({std::string("beacons of robot ") + kRobot[s], a.beacons[s], false});
+    const std::string title =
+        std::string("Robot ") + kRobot[s] + " alone (source " + std::to_string(s) + ": " +
+        Plural(a.measurements[s], "range") + ", " + Plural(a.outliers[s], "outlier") +
+        "): max count " + std::to_string(m.count) + " of " + std::to_string(a.measurements[s]) +
+        " " + Regions(m.regions) + "\n(" + RunSetting(*run, a.counts[s]) + ")";
+    PlotAccumulatorFigure({kNames[s], title, none}, a.counts[s], a.x, a.y, markers, out_dir, out);
+  }
+  const cv::Mat& sum = a.counts.back();
+  const AccumulatorMaximum m = FindMaximum(sum);
+  const auto [mx, my] = MaximumCentre(a, sum, m);
+  int ranges = 0, wrong = 0;
+  for (int n : a.measurements) ranges += n;
+  for (int n : a.outliers) wrong += n;
+  std::vector<MarkerSet> markers = Truth(a);
+  MarkerSet beacons{"beacons", {}, false};
+  for (const auto& b : a.beacons) beacons.points.insert(beacons.points.end(), b.begin(), b.end());
+  if (!beacons.points.empty()) markers.push_back(beacons);
+  const std::string title = "Sum of both robots (" + Plural(ranges, "range") + ", " +
+                            Plural(wrong, "outlier") + "): max count " + std::to_string(m.count) +
+                            " of " + std::to_string(ranges) + " at " + Point(mx, my) + " " +
+                            Regions(m.regions) + "\n(" + RunSetting(*run, sum) + ")";
+  PlotAccumulatorFigure({kNames[2], title, none}, sum, a.x, a.y, markers, out_dir, out);
+}
+
+}  // namespace
+
+const RunRecord* Thesis003FigureRun(const std::vector<RunRecord>& runs,
+                                    const std::string& experiment) {
+  const RunRecord* best = nullptr;
+  for (const RunRecord& r : runs) {
+    if (r.status != RunStatus::kOk || r.spec.algorithm != "accumulator" ||
+        ExperimentOf(r) != experiment)
+      continue;
+    if (!best || r.spec.seed < best->spec.seed) best = &r;
+  }
+  return best;
+}
+
+RecomputedAccumulator RecomputeAccumulator(const RunRecord& run) {
+  const AccumulatorParams params =
+      ParseParams<AccumulatorParams>("accumulator", run.spec.algorithm_params);
+  std::unique_ptr<Problem> problem =
+      FindProblem(run.spec.problem).make(run.spec.problem_params, run.spec.seed);
+  Step step;
+  if (!problem->Next(&step)) throw std::invalid_argument(run.spec.problem + ": no step");
+  if (!step.views.measurement_set)
+    throw std::invalid_argument(run.spec.problem + ": no measurement-set view to accumulate");
+  const MeasurementSetView& view = *step.views.measurement_set;
+  const StateSpace& space = step.views.space;
+  const Grid grid = AccumulatorGrid(view.prior, view.prior, space, params.cells);
+  RecomputedAccumulator out;
+  WorkCounters work;
+  bool stopped = false;
+  out.counts = SourceAccumulators(grid, view, StopCondition(), &work, &stopped);
+  out.x = grid.search()[grid.x()];
+  out.y = grid.search()[grid.y()];
+  if (!step.truth.empty()) out.truth = {step.truth[grid.x()], step.truth[grid.y()]};
+  const int sources = static_cast<int>(out.counts.size()) - 1;
+  out.measurements.assign(sources, 0);
+  out.outliers.assign(sources, 0);
+  for (std::size_t i = 0; i < view.measurements.size(); ++i) {
+    const int s = view.sources.empty() ? 0 : view.sources[i];
+    ++out.measurements[s];
+    if (i < view.outliers.size() && view.outliers[i]) ++out.outliers[s];
+  }
+  if (run.spec.problem == "beacon-ranges" &&
+      ParseBeaconRanges("beacon-ranges", run.spec.problem_params).scenario == "two-robots") {
+    out.beacons.assign(sources, {});
+    for (const RangeMeasurement& r : ReadBeaconScene(TwoRobotsScenePath()).ranges)
+      if (r.source < sources) out.beacons[r.source].push_back({r.beacon_x, r.beacon_y});
+  }
+  return out;
+}
+
+AccumulatorMaximum FindMaximum(const cv::Mat& counts) {
+  AccumulatorMaximum m;
+  if (counts.empty()) return m;
+  double max_count = 0;
+  cv::minMaxLoc(counts, nullptr, &max_count);
+  m.count = static_cast<int>(max_count);
+  m.row0 = counts.rows, m.col0 = counts.cols;
+  // Regions of maximum cells by flood fill over the 8 neighbours.
+  cv::Mat seen(counts.rows, counts.cols, CV_8U, cv::Scalar(0));
+  std::vector<std::pair<int, int>> stack;
+  for (int r = 0; r < counts.rows; ++r) {
+    for (int c = 0; c < counts.cols; ++c) {
+      if (counts.at<int>(r, c) != m.count || seen.at<unsigned char>(r, c)) continue;
+      ++m.regions;
+      stack.push_back({r, c});
+      seen.at<unsigned char>(r, c) = 1;
+      while (!stack.empty()) {
+        const auto [cr, cc] = stack.back();
+        stack.pop_back();
+        m.row0 = std::min(m.row0, cr), m.row1 = std::max(m.row1, cr + 1);
+        m.col0 = std::min(m.col0, cc), m.col1 = std::max(m.col1, cc + 1);
+        for (int dr = -1; dr <= 1; ++dr) {
+          for (int dc = -1; dc <= 1; ++dc) {
+            const int nr = cr + dr, nc = cc + dc;
+            if (nr < 0 || nc < 0 || nr >= counts.rows || nc >= counts.cols) continue;
+            if (counts.at<int>(nr, nc) != m.count || seen.at<unsigned char>(nr, nc)) continue;
+            seen.at<unsigned char>(nr, nc) = 1;
+            stack.push_back({nr, nc});
+          }
+        }
+      }
+    }
+  }
+  return m;
+}
+
+std::vector<TextTable> Thesis003Tables(const std::vector<RunRecord>& runs) {
+  return {RelaxedTable(runs)};
+}
+
+void Thesis003Figures(const std::vector<RunRecord>& runs, const std::string& out_dir,
+                      PlotOutput* out) {
+  Fig52(runs, out_dir, out);
+  Fig55To57(runs, out_dir, out);
+}
+
+}  // namespace icp

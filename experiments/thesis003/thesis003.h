@@ -1,0 +1,88 @@
+// Thesis 003 (relaxed CSPs: q-relaxed intersection, contractor polynomials,
+// accumulators): which runs make its figures and its table. Runs are chosen
+// by the name of the spec experiment that planned them (ExperimentOf: spec
+// file "<spec>#<name>", any spec file), never by their parameters;
+// specs/relaxed.yaml is the reference:
+//
+//   fig5_2           Fig. 5.2 (§5.1.4): the accumulator of m lines over the
+//                    x-y plane (figure fig5_2_accumulator).
+//   fig5_5           Figs. 5.5-5.7 (§5.2.3): the accumulators of two robots
+//                    ranging beacons, source 0 alone, source 1 alone and
+//                    their sum (fig5_5_robot_a, fig5_6_robot_b, fig5_7_sum).
+//   relaxed-lines,   the table "Thesis 003: relaxed solvers": every
+//   relaxed-beacons  configuration (algorithm, params, problem, params) with
+//                    a run of either experiment, pooled over its ok runs
+//                    (every seed), as paper 000's Table 1 pools.
+//
+// A figure draws the accumulator of one run: the ok accumulator run of its
+// experiment with the smallest seed. The store keeps metrics, not images,
+// so the counts are recomputed from the run's definition (problem, params,
+// seed; the accumulator's `cells`) on the problem's first step, on the grid
+// the accumulator itself uses there (AccumulatorGrid over the view's prior).
+#ifndef ICPBENCH_EXPERIMENTS_THESIS003_THESIS003_H_
+#define ICPBENCH_EXPERIMENTS_THESIS003_THESIS003_H_
+
+#include <opencv2/core.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/box.h"
+#include "harness/run_record.h"
+#include "plots/figures.h"
+#include "report/report.h"
+
+namespace icp {
+
+inline constexpr char kThesis003Fig52[] = "fig5_2";
+inline constexpr char kThesis003Fig55[] = "fig5_5";
+inline constexpr char kThesis003RelaxedLines[] = "relaxed-lines";
+inline constexpr char kThesis003RelaxedBeacons[] = "relaxed-beacons";
+
+// The run a figure of experiment draws: among the ok runs of algorithm
+// accumulator planned by that experiment, the one with the smallest seed
+// (the first in store order on a tie); nullptr when there is none.
+const RunRecord* Thesis003FigureRun(const std::vector<RunRecord>& runs,
+                                    const std::string& experiment);
+
+// An accumulator recomputed from a run's definition (see the top).
+struct RecomputedAccumulator {
+  // Each source's counts (sources numbered from 0; one when the view names
+  // none), then their sum: SourceAccumulators' output. Row r is the r-th
+  // cell of y from below, column c the c-th of x.
+  std::vector<cv::Mat> counts;
+  Interval x, y;                  // the grid's extent
+  std::vector<double> truth;      // (x, y); empty when unknown
+  std::vector<int> measurements;  // per source
+  std::vector<int> outliers;      // per source: true outliers
+  // Beacons per source, for beacon-ranges two-robots (read from the
+  // shipped scene); empty otherwise.
+  std::vector<std::vector<std::pair<double, double>>> beacons;
+};
+// Throws std::invalid_argument (or ParamError) when the run's problem or
+// accumulator parameters no longer parse, or its first step has no
+// measurement-set view.
+RecomputedAccumulator RecomputeAccumulator(const RunRecord& run);
+
+// Where counts reach their maximum: that maximum, the number of separate
+// (8-connected) regions of cells holding it, and the hull of those cells
+// as [row0, row1) x [col0, col1).
+struct AccumulatorMaximum {
+  int count = 0;
+  int regions = 0;
+  int row0 = 0, row1 = 0, col0 = 0, col1 = 0;
+};
+AccumulatorMaximum FindMaximum(const cv::Mat& counts);
+
+// The report's table "Thesis 003: relaxed solvers" (see the top).
+std::vector<TextTable> Thesis003Tables(const std::vector<RunRecord>& runs);
+
+// The figures fig5_2_accumulator, fig5_5_robot_a, fig5_6_robot_b and
+// fig5_7_sum; each skipped with a message when its experiment has no ok
+// accumulator run.
+void Thesis003Figures(const std::vector<RunRecord>& runs, const std::string& out_dir,
+                      PlotOutput* out);
+
+}  // namespace icp
+
+#endif  // ICPBENCH_EXPERIMENTS_THESIS003_THESIS003_H_
