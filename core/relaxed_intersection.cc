@@ -30,6 +30,8 @@ Interval RelaxedIntersection(std::span<const Interval> intervals, int q) {
   const int m = static_cast<int>(intervals.size());
   if (q >= m) return Interval::Entire();
   std::vector<double> los, his, neg_los, neg_his;
+  los.reserve(intervals.size());
+  his.reserve(intervals.size());
   for (const Interval& x : intervals) {
     if (x.IsEmpty()) continue;
     los.push_back(x.lo());
@@ -42,6 +44,8 @@ Interval RelaxedIntersection(std::span<const Interval> intervals, int q) {
   const double lo = LowestCovered(los, his, need);
   if (lo == kInf) return Interval::Empty();
   // The highest covered point: the same sweep on the mirrored intervals.
+  neg_los.reserve(his.size());
+  neg_his.reserve(los.size());
   for (auto it = his.rbegin(); it != his.rend(); ++it) neg_los.push_back(-*it);
   for (auto it = los.rbegin(); it != los.rend(); ++it) neg_his.push_back(-*it);
   const double hi = -LowestCovered(neg_los, neg_his, need);
