@@ -67,7 +67,10 @@ struct RunSpec {
   ParamMap problem_params;
   std::uint64_t seed = 0;
   double timeout_s = 0;  // 0: none. Not part of the key.
-  // A canonical text of everything but the timeout, e.g.
+  // Address-space limit of the run's worker process, MiB; 0: none. Not part
+  // of the key. A run that exceeds it fails with "out of memory".
+  double memory_limit_mb = 0;
+  // A canonical text of everything but the limits, e.g.
   // "hc4{carry=first,max_revise_calls=1000000,ratio=0.001}|car-track{...}|seed=3".
   // The harness keys runs on effective parameters (every declared one,
   // defaults resolved, canonical spelling: ResolveParams), so equal

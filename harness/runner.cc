@@ -84,6 +84,13 @@ RunRecord ExecuteRun(const RunSpec& spec) {
   } catch (const InvalidResult& e) {
     record.status = RunStatus::kFailed;
     record.reason = "invalid result at step " + std::to_string(step_index) + ": " + e.what();
+  } catch (const std::bad_alloc&) {
+    record.status = RunStatus::kFailed;
+    record.reason = "out of memory at step " + std::to_string(step_index) +
+                    (spec.memory_limit_mb > 0
+                         ? " (the worker's limit is memory_limit_mb = " +
+                               FormatDouble(spec.memory_limit_mb) + " MiB: raise it in the spec)"
+                         : "");
   } catch (const std::exception& e) {
     record.status = RunStatus::kFailed;
     record.reason = std::string("exception: ") + e.what();
@@ -331,7 +338,7 @@ constexpr double kNoLimitAbove = 1e8;
 // died before prctl is caught by the getppid check), keep the terminal's
 // Ctrl-C for the parent (it stops the workers itself), and enforce a hard
 // limit of its own in case the parent cannot kill it.
-void SetUpWorker(pid_t parent, double hard_limit_s) {
+void SetUpWorker(pid_t parent, double hard_limit_s, double memory_limit_mb) {
   prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (getppid() != parent) _exit(4);
   setpgid(0, 0);
@@ -346,6 +353,16 @@ void SetUpWorker(pid_t parent, double hard_limit_s) {
     rlimit cpu{s, s + 1};
     setrlimit(RLIMIT_CPU, &cpu);
   }
+#if !defined(__SANITIZE_ADDRESS__)
+  // (ASan maps terabytes of shadow memory: its builds run without the limit.)
+  if (memory_limit_mb > 0) {
+    const auto bytes = static_cast<rlim_t>(memory_limit_mb * 1024 * 1024);
+    rlimit as{bytes, bytes};
+    setrlimit(RLIMIT_AS, &as);
+  }
+#else
+  (void)memory_limit_mb;
+#endif
 }
 
 // An exclusive flock on DIR/.lock holding the holder's PID; the kernel
@@ -499,7 +516,7 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
         break;
       }
       if (pid == 0) {  // the worker: one run, its record on the pipe, no cleanup
-        SetUpWorker(parent, hard_limit_s);
+        SetUpWorker(parent, hard_limit_s, run.spec.memory_limit_mb);
         close(fds[0]);
         close(lock.fd());
         for (const Worker& w : workers) close(w.fd);

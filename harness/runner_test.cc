@@ -79,6 +79,30 @@ problems: [chain]
   EXPECT_FALSE(by_mode["hc4"].provenance.date.empty());
 }
 
+#if !defined(__SANITIZE_ADDRESS__)
+// A worker that allocates without bound stops at its address-space limit
+// (memory_limit_mb) with bad_alloc: its run fails as "out of memory", the
+// others go on. (Sanitizer builds run without the limit.)
+TEST(RunnerTest, AWorkerOverItsMemoryLimitFailsAlone) {
+  const std::string dir = FreshDir("memory");
+  SweepSummary s = Sweep(R"(
+memory_limit_mb: 256
+algorithms:
+  - hc4
+  - {name: fault, params: {mode: allocate}}
+problems: [chain]
+)", dir);
+  EXPECT_EQ(s.ok, 1);
+  EXPECT_EQ(s.failed, 1);
+  ResultsStore store(StorePath(dir));
+  for (const RunRecord& r : store.LoadRuns(false)) {
+    if (r.spec.algorithm != "fault") continue;
+    EXPECT_NE(r.reason.find("out of memory at step 0"), std::string::npos) << r.reason;
+    EXPECT_NE(r.reason.find("memory_limit_mb = 256 MiB"), std::string::npos) << r.reason;
+  }
+}
+#endif
+
 #if defined(__SANITIZE_ADDRESS__)
 // Only in the sanitizer build (scripts/sanitize.sh): a report in a forked
 // worker makes it exit with ASAN_OPTIONS' exitcode (86 there), and the harness

@@ -89,6 +89,17 @@ class Reader {
     return Positive(node, key);
   }
 
+  // A memory limit in MiB; 0 means none.
+  double MemoryLimit(const YAML::Node& node, const std::string& key) const {
+    const std::string text = Scalar(node, key);
+    if (text == "0") return 0;
+    const double v = Positive(node, key);
+    if (v < kMinMemoryLimitMb)
+      Fail(node, key, "'" + text + "' is below the least a worker needs (" +
+                          std::to_string(static_cast<int>(kMinMemoryLimitMb)) + " MiB; 0: no limit)");
+    return v;
+  }
+
   double Positive(const YAML::Node& node, const std::string& key) const {
     const std::string text = Scalar(node, key);
     char* end = nullptr;
@@ -193,8 +204,8 @@ class Reader {
   }
 
   void Experiment(const YAML::Node& node, const std::string& where, const std::string& name,
-                  double timeout, const std::vector<std::uint64_t>& seeds, Spec* spec,
-                  std::set<std::string>* seen) const {
+                  double timeout, double memory_limit, const std::vector<std::uint64_t>& seeds,
+                  Spec* spec, std::set<std::string>* seen) const {
     const YAML::Node algorithms = node["algorithms"];
     const YAML::Node problems = node["problems"];
     if (!algorithms || !algorithms.IsSequence() || algorithms.size() == 0)
@@ -277,7 +288,7 @@ class Reader {
         for (const ParamMap& pp : p.grid)
           for (const ParamMap& ap : a.grid)
             for (std::uint64_t seed : seeds) {
-              PlannedRun run{RunSpec{a.name, ap, p.name, pp, seed, timeout}, name, skip};
+              PlannedRun run{RunSpec{a.name, ap, p.name, pp, seed, timeout, memory_limit}, name, skip};
               if (seen->insert(run.spec.Key()).second) spec->runs.push_back(std::move(run));
             }
       }
@@ -305,9 +316,12 @@ Spec ParseSpecText(const std::string& text, const std::string& source) {
   if (!root || root.IsNull()) throw SpecError(source + ": empty spec");
   reader.CheckDocument(root, "");
   reader.CheckKeys(root, "",
-                   {"name", "description", "timeout_s", "seeds", "repetitions", "experiments",
-                    "algorithms", "problems"});
+                   {"name", "description", "timeout_s", "memory_limit_mb", "seeds", "repetitions",
+                    "experiments", "algorithms", "problems"});
   const double timeout = root["timeout_s"] ? reader.Timeout(root["timeout_s"], "timeout_s") : 600;
+  const double memory = root["memory_limit_mb"]
+                            ? reader.MemoryLimit(root["memory_limit_mb"], "memory_limit_mb")
+                            : kDefaultMemoryLimitMb;
   const std::vector<std::uint64_t> seeds = reader.Seeds(root, "", {1});
   Spec spec;
   spec.file = source;
@@ -323,7 +337,7 @@ Spec ParseSpecText(const std::string& text, const std::string& source) {
       const std::string where = "experiments[" + std::to_string(i) + "]";
       reader.CheckKeys(e, where,
                        {"name", "description", "algorithms", "problems", "seeds", "repetitions",
-                        "timeout_s"});
+                        "timeout_s", "memory_limit_mb"});
       const std::string name =
           e["name"] ? reader.Scalar(e["name"], where + ".name") : "experiment" + std::to_string(i + 1);
       // Runs are stored under SPEC#name: two experiments of one name would mix.
@@ -332,11 +346,14 @@ Spec ParseSpecText(const std::string& text, const std::string& source) {
         reader.Fail(e["name"] ? e["name"] : e, where + ".name",
                     "experiment '" + name + "' is already the name of " + it->second);
       const double t = e["timeout_s"] ? reader.Timeout(e["timeout_s"], where + ".timeout_s") : timeout;
-      reader.Experiment(e, where, name, t, reader.Seeds(e, where, seeds), &spec, &seen);
+      const double mem = e["memory_limit_mb"]
+                             ? reader.MemoryLimit(e["memory_limit_mb"], where + ".memory_limit_mb")
+                             : memory;
+      reader.Experiment(e, where, name, t, mem, reader.Seeds(e, where, seeds), &spec, &seen);
     }
   } else {
     const std::string name = root["name"] ? reader.Scalar(root["name"], "name") : "main";
-    reader.Experiment(root, "", name, timeout, seeds, &spec, &seen);
+    reader.Experiment(root, "", name, timeout, memory, seeds, &spec, &seen);
   }
   return spec;
 }

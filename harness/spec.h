@@ -3,6 +3,7 @@
 // suite; the README shows the format. A list value is a grid axis:
 //
 //   timeout_s: 300            # per run (default 600)
+//   memory_limit_mb: 4096     # per worker process (default 4096; 0: none)
 //   seeds: [1, 2]             # or repetitions: 3 (seeds 1..3); default [1]
 //   experiments:
 //     - name: table1
@@ -35,6 +36,13 @@ class SpecError : public std::invalid_argument {
 // The most runs a spec may expand to (its whole matrix, every experiment
 // together); a larger one is a SpecError before it is expanded.
 inline constexpr std::size_t kMaxRuns = 1'000'000;
+
+// The address-space limit of each worker unless a spec says otherwise
+// (memory_limit_mb), so a run that runs away fails alone instead of making
+// the kernel pick a process to kill; and the least a spec may set (the
+// worker's libraries and thread stacks).
+inline constexpr double kDefaultMemoryLimitMb = 4096;
+inline constexpr double kMinMemoryLimitMb = 64;
 
 struct PlannedRun {
   RunSpec spec;

@@ -169,3 +169,31 @@ TEST(SpecTest, MissingFileIsASpecError) {
 
 }  // namespace
 }  // namespace icp
+
+namespace icp {
+namespace {
+
+TEST(SpecTest, MemoryLimitHasADefaultAnOverrideAndARange) {
+  const Spec spec = ParseSpec(R"(
+memory_limit_mb: 1024
+experiments:
+  - {name: a, algorithms: [hc4], problems: [chain]}
+  - {name: b, memory_limit_mb: 0, algorithms: [bc4], problems: [chain]}
+)", "spec.yaml");
+  ASSERT_EQ(spec.runs.size(), 2u);
+  EXPECT_EQ(spec.runs[0].spec.memory_limit_mb, 1024);
+  EXPECT_EQ(spec.runs[1].spec.memory_limit_mb, 0);  // no limit
+  EXPECT_EQ(ParseSpec("algorithms: [hc4]\nproblems: [chain]\n", "s").runs[0].spec.memory_limit_mb,
+            kDefaultMemoryLimitMb);
+  // Not part of a run's identity, like the timeout.
+  EXPECT_EQ(spec.runs[0].spec.Key().find("memory"), std::string::npos);
+  EXPECT_NE(ErrorOf("memory_limit_mb: 8\nalgorithms: [hc4]\nproblems: [chain]\n")
+                .find("spec.yaml:1:18: key 'memory_limit_mb': '8' is below the least a worker needs"),
+            std::string::npos)
+      << ErrorOf("memory_limit_mb: 8\nalgorithms: [hc4]\nproblems: [chain]\n");
+  EXPECT_NE(ErrorOf("memory_limit_mb: lots\nalgorithms: [hc4]\nproblems: [chain]\n").find("not a positive number"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace icp

@@ -3,8 +3,10 @@
 #include <csignal>
 #include <cstdlib>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 #include "algorithms/hc4/hc4.h"
 #include "algorithms/window/window_estimator.h"
@@ -13,7 +15,7 @@ namespace icp {
 
 void Describe(FaultParams& p, ParamSet& set) {
   set.Add("mode", &p.mode, "the fault to inject",
-          {"none", "segfault", "abort", "hang", "throw", "garbage"});
+          {"none", "segfault", "abort", "hang", "throw", "allocate", "garbage"});
   set.Add("after_calls", &p.after_calls, "good steps before the fault", Range::AtLeast(0));
 }
 
@@ -28,6 +30,17 @@ class FaultEstimator : public Estimator {
     if (params_.mode == "segfault") std::raise(SIGSEGV);
     if (params_.mode == "abort") std::abort();
     if (params_.mode == "throw") throw std::runtime_error("injected fault");
+    if (params_.mode == "allocate") {
+      // Untouched blocks cost address space, not memory: under a limit the
+      // allocation fails long before the machine notices.
+      constexpr std::size_t kBlock = std::size_t{64} << 20;
+      std::vector<std::unique_ptr<char[]>> blocks;
+      for (int i = 0; i < 1024; ++i) {
+        blocks.emplace_back(new char[kBlock]);
+        *static_cast<volatile char*>(blocks.back().get()) = 1;  // kept, not elided
+      }
+      throw std::runtime_error("allocated 64 GiB without reaching a memory limit");
+    }
     if (params_.mode == "hang") {
       for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
     }

@@ -1,7 +1,8 @@
 // A fault-injection plugin for testing the harness, not an algorithm: after
 // `after_calls` good steps (HC4 over the window, carry=first) it crashes,
-// hangs, throws or returns a box that is not inside the step's domains, as
-// `mode` says. The harness must record such runs as failed (or timed out)
+// hangs, throws, allocates without bound (address space only: 64 MiB blocks
+// left untouched, until std::bad_alloc or 64 GiB) or returns a box that is
+// not inside the step's domains, as `mode` says. The harness must record such runs as failed (or timed out)
 // with their reason and carry on.
 #ifndef ICPBENCH_ALGORITHMS_FAULT_FAULT_H_
 #define ICPBENCH_ALGORITHMS_FAULT_FAULT_H_
@@ -16,7 +17,7 @@
 namespace icp {
 
 struct FaultParams {
-  // none | segfault | abort | hang | throw | garbage
+  // none | segfault | abort | hang | throw | allocate | garbage
   std::string mode = "segfault";
   // Steps that behave (as HC4) before the fault.
   int after_calls = 0;
