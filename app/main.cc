@@ -161,7 +161,8 @@ int main(int argc, char** argv) {
     std::cerr << "icpbench: " << e.what() << "\n";
     return kEnvironmentError;
   } catch (const std::bad_alloc&) {
-    std::cerr << "icpbench: out of memory (reduce --jobs or the size of the spec, or free memory)\n";
+    std::cerr << "icpbench: out of memory (free memory or raise the limit, ulimit -v; or reduce "
+                 "--jobs or the size of the spec or file)\n";
     return kEnvironmentError;
   } catch (const std::invalid_argument& e) {  // ParamError, unknown names, options
     std::cerr << "icpbench: " << e.what() << "\n";

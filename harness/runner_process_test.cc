@@ -343,6 +343,25 @@ TEST(RunnerProcessTest, CliAnUnwritableOutputDirectoryIsTheEnvironment) {
   EXPECT_NE(r.out.find("permissions"), std::string::npos) << r.out;
 }
 
+#if !defined(__SANITIZE_ADDRESS__)
+// Out of memory is the environment (exit 3), not a bug: a million variables
+// under a 150 MB address-space limit (ulimit -v; ASan builds cannot run
+// under one).
+TEST(RunnerProcessTest, CliOutOfMemoryIsTheEnvironment) {
+  const std::string file = testing::WriteFile(
+      "million.bch", "Variables\n  x[1000000] in [0, 1];\nConstraints\n  x(1) = 0;\nend\n");
+  const testing::Result small = testing::RunCommand(
+      "ulimit -v 150000; " + std::string(ICPBENCH_BINARY), "solve " + file);
+  EXPECT_EQ(small.exit_code, 3) << small.out;
+  EXPECT_NE(small.out.find("out of memory"), std::string::npos) << small.out;
+  EXPECT_EQ(small.out.find("internal error"), std::string::npos) << small.out;
+  // The same under a roomy limit solves.
+  const testing::Result roomy = testing::RunCommand(
+      "ulimit -v 4000000; " + std::string(ICPBENCH_BINARY), "solve " + file);
+  EXPECT_EQ(roomy.exit_code, 0) << roomy.out;
+}
+#endif
+
 TEST(RunnerProcessTest, CliDescriptorExhaustionIsTheEnvironmentAndLeavesNoWorker) {
   const std::string dir = FreshDir("cli_fds");
   const std::string spec = testing::WriteFile(
