@@ -67,7 +67,7 @@ struct RunSpec {
   ParamMap problem_params;
   std::uint64_t seed = 0;
   double timeout_s = 0;  // 0: none. Not part of the key.
-  // Address-space limit of the run's worker process, MiB; 0: none. Not part
+  // Memory limit of the run's worker process (RLIMIT_DATA), MiB; 0: none. Not part
   // of the key. A run that exceeds it fails with "out of memory".
   double memory_limit_mb = 0;
   // A canonical text of everything but the limits, e.g.

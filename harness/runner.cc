@@ -354,11 +354,14 @@ void SetUpWorker(pid_t parent, double hard_limit_s, double memory_limit_mb) {
     setrlimit(RLIMIT_CPU, &cpu);
   }
 #if !defined(__SANITIZE_ADDRESS__)
-  // (ASan maps terabytes of shadow memory: its builds run without the limit.)
+  // RLIMIT_DATA counts the private writable memory (heap, anonymous maps,
+  // thread stacks), not the address space that malloc arenas and libraries
+  // reserve, so many threads (TBB, OpenCV) do not use the limit up. (ASan maps
+  // terabytes of shadow memory: its builds run without the limit.)
   if (memory_limit_mb > 0) {
     const auto bytes = static_cast<rlim_t>(memory_limit_mb * 1024 * 1024);
-    rlimit as{bytes, bytes};
-    setrlimit(RLIMIT_AS, &as);
+    rlimit data{bytes, bytes};
+    setrlimit(RLIMIT_DATA, &data);
   }
 #else
   (void)memory_limit_mb;

@@ -80,7 +80,7 @@ problems: [chain]
 }
 
 #if !defined(__SANITIZE_ADDRESS__)
-// A worker that allocates without bound stops at its address-space limit
+// A worker that allocates without bound stops at its memory limit
 // (memory_limit_mb) with bad_alloc: its run fails as "out of memory", the
 // others go on. (Sanitizer builds run without the limit.)
 TEST(RunnerTest, AWorkerOverItsMemoryLimitFailsAlone) {

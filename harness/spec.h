@@ -37,7 +37,7 @@ class SpecError : public std::invalid_argument {
 // together); a larger one is a SpecError before it is expanded.
 inline constexpr std::size_t kMaxRuns = 1'000'000;
 
-// The address-space limit of each worker unless a spec says otherwise
+// The memory limit (RLIMIT_DATA) of each worker unless a spec says otherwise
 // (memory_limit_mb), so a run that runs away fails alone instead of making
 // the kernel pick a process to kill; and the least a spec may set (the
 // worker's libraries and thread stacks).

@@ -31,8 +31,9 @@ class FaultEstimator : public Estimator {
     if (params_.mode == "abort") std::abort();
     if (params_.mode == "throw") throw std::runtime_error("injected fault");
     if (params_.mode == "allocate") {
-      // Untouched blocks cost address space, not memory: under a limit the
-      // allocation fails long before the machine notices.
+      // Blocks touched once cost little memory but count whole against
+      // RLIMIT_DATA: under a limit the allocation fails long before the
+      // machine notices.
       constexpr std::size_t kBlock = std::size_t{64} << 20;
       std::vector<std::unique_ptr<char[]>> blocks;
       for (int i = 0; i < 1024; ++i) {

@@ -1,7 +1,6 @@
 // A fault-injection plugin for testing the harness, not an algorithm: after
 // `after_calls` good steps (HC4 over the window, carry=first) it crashes,
-// hangs, throws, allocates without bound (address space only: 64 MiB blocks
-// left untouched, until std::bad_alloc or 64 GiB) or returns a box that is
+// hangs, throws, allocates without bound (64 MiB blocks, each touched once, until std::bad_alloc or 64 GiB) or returns a box that is
 // not inside the step's domains, as `mode` says. The harness must record such runs as failed (or timed out)
 // with their reason and carry on.
 #ifndef ICPBENCH_ALGORITHMS_FAULT_FAULT_H_
