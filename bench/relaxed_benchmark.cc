@@ -69,9 +69,7 @@ void BM_PolynomialBruteForce(benchmark::State& state) {
           ms[i]->Contract(box, context);
         }
       Box& k = coefficients[__builtin_popcount(mask)];
-      if (box.IsEmpty()) continue;
-      if (k.IsEmpty()) k = box;
-      else for (int d = 0; d < 2; ++d) k[d] = Hull(k[d], box[d]);
+      k = Hull(k, box);
     }
     benchmark::DoNotOptimize(coefficients);
   }

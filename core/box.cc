@@ -25,4 +25,19 @@ double Box::MaxWidth() const {
   return w;
 }
 
+Box Hull(const Box& a, const Box& b) {
+  if (a.IsEmpty()) return b;
+  if (b.IsEmpty()) return a;
+  Box out(a.size());
+  for (std::size_t d = 0; d < a.size(); ++d) out[d] = Hull(a[d], b[d]);
+  return out;
+}
+
+Box Intersect(const Box& a, const Box& b) {
+  Box out(a.size());
+  for (std::size_t d = 0; d < a.size(); ++d) out[d] = Intersect(a[d], b[d]);
+  if (out.IsEmpty()) out.SetEmpty();
+  return out;
+}
+
 }  // namespace icp

@@ -44,6 +44,11 @@ class Box {
   std::vector<Interval> v_;
 };
 
+// The smallest box holding a and b; an empty box counts as no points.
+Box Hull(const Box& a, const Box& b);
+// Component by component; empty in every component when some is.
+Box Intersect(const Box& a, const Box& b);
+
 }  // namespace icp
 
 #endif  // ICPBENCH_CORE_BOX_H_

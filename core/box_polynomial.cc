@@ -2,16 +2,6 @@
 
 namespace icp {
 
-namespace {
-Box HullOfBoxes(const Box& a, const Box& b) {
-  if (a.IsEmpty()) return b;
-  if (b.IsEmpty()) return a;
-  Box out(a.size());
-  for (std::size_t d = 0; d < a.size(); ++d) out[d] = Hull(a[d], b[d]);
-  return out;
-}
-}  // namespace
-
 std::vector<Box> HornerSortTransform(const Box& x, const SharedContractors& sequence,
                                      const StopCondition& stop, WorkCounters* work,
                                      bool* stopped) {
@@ -36,7 +26,7 @@ std::vector<Box> HornerSortTransform(const Box& x, const SharedContractors& sequ
       } else if (stopped) {
         *stopped = true;
       }
-      coefficients[j] = HullOfBoxes(coefficients[j], contracted);
+      coefficients[j] = Hull(coefficients[j], contracted);
     }
   }
   return coefficients;

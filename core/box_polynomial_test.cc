@@ -13,14 +13,6 @@ namespace {
 
 using testing::ClipTo;
 
-Box HullOf(const Box& a, const Box& b) {
-  if (a.IsEmpty()) return b;
-  if (b.IsEmpty()) return a;
-  Box out(a.size());
-  for (std::size_t d = 0; d < a.size(); ++d) out[d] = Hull(a[d], b[d]);
-  return out;
-}
-
 // Coefficient j of the expanded sort transform (eq. 5.7): the hull over the
 // subsets of j contractors of their composition applied to x.
 std::vector<Box> BruteForce(const Box& x, const SharedContractors& cs) {
@@ -35,7 +27,7 @@ std::vector<Box> BruteForce(const Box& x, const SharedContractors& cs) {
         cs[i]->Contract(box, context);
       }
     const int j = __builtin_popcount(mask);
-    out[j] = HullOf(out[j], box);
+    out[j] = Hull(out[j], box);
   }
   return out;
 }

@@ -83,7 +83,7 @@ ContractSummary IntersectionContractor::Contract(Box& box, ContractContext& cont
   bool stopped = false;
   Box result = box;
   for (const Box& b : ApplyEach(parts_, box, context, summary.work, &stopped))
-    for (std::size_t d = 0; d < result.size(); ++d) result[d] = Intersect(result[d], b[d]);
+    result = Intersect(result, b);
   Finish(result, stopped, box, summary);
   return summary;
 }
@@ -94,10 +94,7 @@ ContractSummary UnionContractor::Contract(Box& box, ContractContext& context) {
   bool stopped = false;
   Box result(box.size());
   result.SetEmpty();
-  for (const Box& b : ApplyEach(parts_, box, context, summary.work, &stopped)) {
-    if (b.IsEmpty()) continue;
-    for (std::size_t d = 0; d < result.size(); ++d) result[d] = Hull(result[d], b[d]);
-  }
+  for (const Box& b : ApplyEach(parts_, box, context, summary.work, &stopped)) result = Hull(result, b);
   Finish(result, stopped, box, summary);
   return summary;
 }
@@ -113,9 +110,7 @@ ContractSummary QIntersectionContractor::Contract(Box& box, ContractContext& con
   if (q_ >= static_cast<int>(parts_.size())) return summary;
   bool stopped = false;
   const std::vector<Box> contracted = ApplyEach(parts_, box, context, summary.work, &stopped);
-  Box result = RelaxedIntersection(contracted, q_, box.size());
-  for (std::size_t d = 0; d < result.size(); ++d) result[d] = Intersect(result[d], box[d]);
-  Finish(result, stopped, box, summary);
+  Finish(Intersect(RelaxedIntersection(contracted, q_, box.size()), box), stopped, box, summary);
   return summary;
 }
 

@@ -59,7 +59,9 @@ TEST(CliTest, RelaxedSolversAddQAndTheEstimate) {
     EXPECT_EQ(j["q"], 2) << algorithm;  // the fewest outliers any point has
     EXPECT_GE(j["time_s"].get<double>(), 0.0);
     EXPECT_EQ(j["estimate"]["kind"], algorithm == "accumulator" ? "accumulator" : "box");
-    if (algorithm == "accumulator") EXPECT_EQ(j["estimate"]["max_count"], 5);
+    if (algorithm == "accumulator") {
+      EXPECT_EQ(j["estimate"]["max_count"], 5);
+    }
     if (algorithm == "polynomial") {
       ASSERT_EQ(j["by_q"].size(), 8u);
       for (int q = 0; q <= 7; ++q) EXPECT_EQ(j["by_q"][q]["q"], q);
@@ -170,7 +172,9 @@ TEST(CliTest, ListShowsNamesDescriptionsAndParameters) {
   EXPECT_GE(problems.size(), 1u);
   for (const auto& p : problems) {
     ASSERT_TRUE(p["offers"].is_array()) << p["name"];
-    if (p["name"] == "car-track") EXPECT_EQ(p["offers"], nlohmann::json::array({"csp"}));
+    if (p["name"] == "car-track") {
+      EXPECT_EQ(p["offers"], nlohmann::json::array({"csp"}));
+    }
   }
   EXPECT_EQ(Icpbench("list algorithms").exit_code, 0);
 }

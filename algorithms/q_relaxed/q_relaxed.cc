@@ -35,8 +35,7 @@ class QRelaxedEstimator : public RelaxedEstimator {
       if (q == contracted_q) return contracted;
       Box box = prior;
       if (q < m) {
-        FixpointContractor fixpoint(std::make_shared<QIntersectionContractor>(view.measurements, q),
-                                    p_.ratio, p_.max_iterations);
+        FixpointContractor fixpoint = Repeated(view.measurements, q);
         ContractContext context(stop);
         const ContractSummary s = fixpoint.Contract(box, context);
         out.summary.work += s.work;
@@ -65,8 +64,7 @@ class QRelaxedEstimator : public RelaxedEstimator {
         boxes.push_back(prior);
         return true;
       }
-      FixpointContractor fixpoint(std::make_shared<QIntersectionContractor>(view.measurements, q),
-                                  p_.ratio, p_.max_iterations);
+      FixpointContractor fixpoint = Repeated(view.measurements, q);
       PavingResult paving = Pave(prior, fixpoint, p_.epsilon, p_.max_boxes, stop);
       out.summary.work += paving.work;
       bisections += paving.bisections;
@@ -84,6 +82,12 @@ class QRelaxedEstimator : public RelaxedEstimator {
   }
 
  private:
+  // The repeated q-relaxed intersection of the measurements.
+  FixpointContractor Repeated(const SharedContractors& measurements, int q) const {
+    return FixpointContractor(std::make_shared<QIntersectionContractor>(measurements, q), p_.ratio,
+                              p_.max_iterations);
+  }
+
   QRelaxedParams p_;
 };
 

@@ -29,9 +29,7 @@ StepResult RelaxedEstimator::Step(const Views& views, const StopCondition& stop)
   bool reset = false;
   if (params_.filter && view.predict && !previous_hull_.IsEmpty() &&
       previous_hull_.size() == prior.size()) {
-    const Box predicted = view.predict(previous_hull_);
-    Box filtered = prior;
-    for (std::size_t d = 0; d < prior.size(); ++d) filtered[d] = Intersect(prior[d], predicted[d]);
+    const Box filtered = Intersect(prior, view.predict(previous_hull_));
     if (filtered.IsEmpty()) {
       reset = true;
       ++resets_;
