@@ -82,8 +82,14 @@ struct ProbabilisticView {
   // Moves a state from the previous step to this one by a draw of the motion
   // model (identity at the first step).
   std::function<void(std::vector<double>& state, RandomEngine&)> sample_motion;
-  // Log-likelihood of this step's measurements given a state.
+  // Log-likelihood of this step's measurements given a state, up to a
+  // constant. Called concurrently from several threads (a filter weighs its
+  // particles in parallel), so it must not write shared state.
   std::function<double(const std::vector<double>& state)> log_likelihood;
+  // Draws a state from this step's global prior (anywhere the robot may be,
+  // the past ignored), for the particles a filter injects to recover from a
+  // wrong convergence (paper 003 §6.7); unset: nothing to inject from.
+  std::function<std::vector<double>(RandomEngine&)> sample_global;
 };
 
 // Everything an estimator may see of a step. The truth is not here.
