@@ -52,8 +52,7 @@ Box HullOf(const std::vector<const std::vector<Box>*>& lists, std::size_t n) {
 }  // namespace
 
 Box PavingEstimate::Hull() const {
-  const std::size_t n = !inner_.empty() ? inner_[0].size() : !boundary_.empty() ? boundary_[0].size() : 0;
-  return HullOf({&inner_, &boundary_}, n);
+  return HullOf({&inner_, &boundary_}, dimension_);
 }
 
 bool PavingEstimate::Contains(const std::vector<double>& point) const {

@@ -88,8 +88,10 @@ class BoxEstimate : public Estimate {
 // they enclose the set.
 class PavingEstimate : public Estimate {
  public:
-  PavingEstimate(std::vector<Box> inner, std::vector<Box> boundary)
-      : inner_(std::move(inner)), boundary_(std::move(boundary)) {}
+  // dimension: the boxes' number of components, so that an empty paving
+  // still has an empty hull of the state's dimension.
+  PavingEstimate(std::size_t dimension, std::vector<Box> inner, std::vector<Box> boundary)
+      : dimension_(dimension), inner_(std::move(inner)), boundary_(std::move(boundary)) {}
   std::string_view Kind() const override { return "paving"; }
   Box Hull() const override;
   bool Contains(const std::vector<double>& point) const override;
@@ -100,6 +102,7 @@ class PavingEstimate : public Estimate {
   const std::vector<Box>& boundary() const { return boundary_; }
 
  private:
+  std::size_t dimension_;
   std::vector<Box> inner_;
   std::vector<Box> boundary_;
 };

@@ -74,7 +74,7 @@ class QRelaxedEstimator : public RelaxedEstimator {
     };
     out.q = ChooseQ(out.q, params().auto_q, m, pave);
     if (paved_q != out.q) pave(out.q);
-    out.estimate = std::make_unique<PavingEstimate>(std::vector<Box>{}, std::move(boxes));
+    out.estimate = std::make_unique<PavingEstimate>(prior.size(), std::vector<Box>{}, std::move(boxes));
     out.properties = {{"bisections", bisections}, {"truncated", static_cast<std::int64_t>(truncated)}};
     if (truncated && out.summary.status != ContractStatus::kStopped)
       out.summary.message = "paving truncated at max_boxes";

@@ -1,5 +1,7 @@
 #include "algorithms/q_relaxed/q_relaxed.h"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "algorithms/relaxed/relaxed_testing.h"
@@ -72,6 +74,26 @@ TEST(QRelaxedTest, AsAFilterStartsFromThePrediction) {
   auto unfiltered = MakeQRelaxed({{"q", "5"}, {"auto_q", "false"}, {"filter", "false"}}, 0);
   unfiltered->Step(c.views, StopCondition());
   EXPECT_EQ(unfiltered->Step(c.views, StopCondition()).estimate->Hull(), first.estimate->Hull());
+}
+
+TEST(QRelaxedTest, AFilterThatLosesTheTruthRestartsFromTheGlobalPrior) {
+  // The robot jumps from one scene's truth to another's while the motion
+  // model says it moved by at most 0.5: the tracked search holds no point
+  // of the second scene, and the step must fall back to the global prior.
+  auto first = Lines(4, 10, 2);
+  auto second = Lines(5, 10, 2);
+  ASSERT_GT(std::abs(first.truth[0] - second.truth[0]) + std::abs(first.truth[1] - second.truth[1]), 2);
+  second.views.measurement_set->predict = [](const Box& previous) {
+    Box out = previous;
+    for (std::size_t d = 0; d < out.size(); ++d) out[d] = out[d] + Interval(-0.5, 0.5);
+    return out;
+  };
+  auto solver = MakeQRelaxed({{"q", "2"}, {"auto_q", "false"}, {"mode", "pave"}}, 0);
+  solver->Step(first.views, StopCondition());
+  const StepResult r = solver->Step(second.views, StopCondition());
+  EXPECT_EQ(IntProperty(r.properties, "reset").value(), 1);
+  EXPECT_TRUE(r.estimate->Contains(second.truth));
+  EXPECT_EQ(IntProperty(solver->RunProperties(), "resets").value(), 1);
 }
 
 TEST(QRelaxedTest, RejectsBadParameters) {

@@ -1,5 +1,6 @@
 #include "algorithms/relaxed/relaxed_estimator.h"
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -25,30 +26,32 @@ int ChooseQ(int q, bool auto_q, int m, const std::function<bool(int)>& nonempty)
 
 StepResult RelaxedEstimator::Step(const Views& views, const StopCondition& stop) {
   const MeasurementSetView& view = *views.measurement_set;
-  Box prior = view.prior;
-  bool reset = false;
-  if (params_.filter && view.predict && !previous_hull_.IsEmpty() &&
-      previous_hull_.size() == prior.size()) {
-    const Box filtered = Intersect(prior, view.predict(previous_hull_));
-    if (filtered.IsEmpty()) {
-      reset = true;
-      ++resets_;
-    } else {
-      prior = filtered;
-    }
+  const bool tracking = params_.filter && view.predict && !previous_hull_.IsEmpty() &&
+                        previous_hull_.size() == view.prior.size();
+  std::optional<RelaxedSolution> solution;
+  if (tracking) {
+    const Box tracked = Intersect(view.prior, view.predict(previous_hull_));
+    if (!tracked.IsEmpty()) solution = Solve(tracked, view, views.space, stop);
   }
-  RelaxedSolution solution = Solve(prior, view, views.space, stop);
-  total_work_ += solution.summary.work;
-  previous_hull_ = solution.estimate->Hull();
+  // Static recovery (paper 003 §6.7): a tracked search that found nothing
+  // (more outliers than q, or an earlier estimate that lost the truth)
+  // starts again from the global prior.
+  const bool reset = tracking && (!solution || (solution->estimate->Hull().IsEmpty() &&
+                                                solution->summary.status != ContractStatus::kStopped));
+  if (reset) ++resets_;
+  if (reset && solution) total_work_ += solution->summary.work;
+  if (reset || !solution) solution = Solve(view.prior, view, views.space, stop);
+  total_work_ += solution->summary.work;
+  previous_hull_ = solution->estimate->Hull();
   StepResult result;
-  result.estimate = std::move(solution.estimate);
-  result.summary = solution.summary;
-  result.hulls_by_q = std::move(solution.hulls_by_q);
-  result.properties = {{"q", static_cast<std::int64_t>(solution.q)},
+  result.estimate = std::move(solution->estimate);
+  result.summary = solution->summary;
+  result.hulls_by_q = std::move(solution->hulls_by_q);
+  result.properties = {{"q", static_cast<std::int64_t>(solution->q)},
                        {"measurements", static_cast<std::int64_t>(view.measurements.size())},
                        {"reset", static_cast<std::int64_t>(reset ? 1 : 0)}};
-  for (Property& p : solution.properties) result.properties.push_back(std::move(p));
-  for (Property& p : WorkProperties(solution.summary.work)) result.properties.push_back(std::move(p));
+  for (Property& p : solution->properties) result.properties.push_back(std::move(p));
+  for (Property& p : WorkProperties(solution->summary.work)) result.properties.push_back(std::move(p));
   return result;
 }
 

@@ -12,9 +12,12 @@
 //           the truth satisfies every inlier;
 //   filter  with a view that can predict (a moving robot), start each step
 //           from prior ∩ predict(previous hull) instead of the prior alone.
-//           An empty intersection (a previous estimate that missed the truth,
-//           possible only with too small a fixed q) restarts from the prior,
-//           reported as the step property `reset`.
+//           When that tracked search finds nothing (an empty intersection,
+//           or an empty solution set: more outliers than a fixed q, or a
+//           previous estimate that missed the truth), the step starts again
+//           from the prior, a global search (the static recovery of paper
+//           003 §6.7), reported as the step property `reset` and counted in
+//           the run property `resets`.
 #ifndef ICPBENCH_ALGORITHMS_RELAXED_RELAXED_ESTIMATOR_H_
 #define ICPBENCH_ALGORITHMS_RELAXED_RELAXED_ESTIMATOR_H_
 

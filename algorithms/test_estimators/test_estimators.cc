@@ -75,7 +75,7 @@ std::unique_ptr<Estimator> MakeTestPaving(const ParamMap& params, std::uint64_t)
         piece[space.y] = y;
         boundary.push_back(piece);
       }
-    return std::make_unique<PavingEstimate>(std::vector<Box>{}, std::move(boundary));
+    return std::make_unique<PavingEstimate>(box.size(), std::vector<Box>{}, std::move(boundary));
   });
 }
 
