@@ -22,6 +22,15 @@ std::optional<std::int64_t> IntProperty(const Properties& properties, std::strin
   return std::nullopt;
 }
 
+std::optional<double> NumberProperty(const Properties& properties, std::string_view name) {
+  for (const Property& p : properties) {
+    if (p.name != name) continue;
+    if (const auto* i = std::get_if<std::int64_t>(&p.value)) return static_cast<double>(*i);
+    if (const auto* d = std::get_if<double>(&p.value)) return *d;
+  }
+  return std::nullopt;
+}
+
 std::vector<double> Estimate::Centre() const {
   const Box hull = Hull();
   if (hull.IsEmpty()) return {};

@@ -50,6 +50,9 @@ std::string_view TypeName(const Property& p);
 // The value of the integer property called name; nullopt when there is none
 // (or it is not an integer).
 std::optional<std::int64_t> IntProperty(const Properties& properties, std::string_view name);
+// The value of the numeric (integer or real) property called name, as a
+// double; nullopt when there is none.
+std::optional<double> NumberProperty(const Properties& properties, std::string_view name);
 
 class Estimate {
  public:

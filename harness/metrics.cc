@@ -15,29 +15,12 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr int kBootstrapResamples = 1000;
 
-// A box is empty when the contractor says so or when a variable's interval
-// is (lo > hi, the +inf/-inf convention of VariableRecord, or NaN bounds).
-bool IsEmptyBox(const StepRecord& s) {
-  if (s.status == "empty") return true;
-  for (const VariableRecord& v : s.vars) {
-    if (!(v.lo <= v.hi)) return true;
-  }
-  return false;
-}
-
 bool TruthKnown(const StepRecord& s) {
   if (s.contained != -1) return true;
   for (const VariableRecord& v : s.vars) {
     if (!std::isnan(v.truth)) return true;
   }
   return false;
-}
-
-double Mean(const std::vector<double>& values) {
-  if (values.empty()) return kNaN;
-  double sum = 0;
-  for (double v : values) sum += v;
-  return sum / static_cast<double>(values.size());
 }
 
 // Percentile bootstrap: the 2.5% and 97.5% quantiles of the means of
@@ -67,6 +50,22 @@ struct CorridorSums {
 };
 
 }  // namespace
+
+bool IsEmptyEstimate(const StepRecord& s) {
+  if (s.status == "empty") return true;
+  for (const VariableRecord& v : s.vars) {
+    if (!(v.lo <= v.hi)) return true;
+  }
+  return false;
+}
+
+double Mean(const std::vector<double>& values) {
+  if (values.empty()) return kNaN;
+  double sum = 0;
+  for (double v : values) sum += v;
+  return sum / static_cast<double>(values.size());
+}
+
 
 double Quantile(std::vector<double> values, double p) {
   // NaN entries carry no order; they are left out.
@@ -169,7 +168,7 @@ RunMetrics ComputeMetrics(const std::vector<StepRecord>& steps, std::uint64_t bo
   std::vector<CorridorSums> corridors;  // in order of first appearance
 
   for (const StepRecord& s : steps) {
-    const bool empty = IsEmptyBox(s);
+    const bool empty = IsEmptyEstimate(s);
     const bool truth_known = TruthKnown(s);
 
     if (!empty && !std::isnan(s.area)) areas.push_back(s.area);

@@ -33,6 +33,14 @@ std::string InvalidEstimateReason(const Views& views, const Estimate& estimate);
 // reproducible).
 RunMetrics ComputeMetrics(const std::vector<StepRecord>& steps, std::uint64_t bootstrap_seed = 1);
 
+// A step's estimate holds nothing: the estimator said so, or a variable's
+// interval is empty (lo > hi, the +inf/-inf convention of VariableRecord, or
+// NaN bounds).
+bool IsEmptyEstimate(const StepRecord& s);
+
+// The mean of values; NaN for none.
+double Mean(const std::vector<double>& values);
+
 // The p-quantile (0 <= p <= 1) of values by linear interpolation between
 // order statistics; NaN for no values.
 double Quantile(std::vector<double> values, double p);

@@ -22,34 +22,6 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr const char* kDash = "—";
 
-// A numeric step property, or nothing when the step lacks it.
-std::optional<double> NumberProperty(const Properties& properties, const std::string& name) {
-  for (const Property& p : properties) {
-    if (p.name != name) continue;
-    if (const auto* i = std::get_if<std::int64_t>(&p.value)) return static_cast<double>(*i);
-    if (const auto* d = std::get_if<double>(&p.value)) return *d;
-  }
-  return std::nullopt;
-}
-
-// The step's estimate holds nothing: MeasureStep records an empty hull as
-// lo = +inf > hi = -inf.
-bool EmptyEstimate(const StepRecord& s) {
-  return !s.vars.empty() && std::any_of(s.vars.begin(), s.vars.end(),
-                                        [](const VariableRecord& v) { return !(v.lo <= v.hi); });
-}
-
-double Mean(const std::vector<double>& v) {
-  if (v.empty()) return kNaN;
-  double sum = 0;
-  for (double x : v) sum += x;
-  return sum / static_cast<double>(v.size());
-}
-
-std::string Share(int part, int whole) {
-  return whole > 0 ? FormatNumber(static_cast<double>(part) / whole) : kDash;
-}
-
 TextTable RelaxedTable(const std::vector<RunRecord>& runs) {
   TextTable t;
   t.title = "Thesis 003: relaxed solvers";
@@ -78,7 +50,7 @@ TextTable RelaxedTable(const std::vector<RunRecord>& runs) {
           ++known;
           contained += s.contained;
         }
-        const bool is_empty = EmptyEstimate(s);
+        const bool is_empty = IsEmptyEstimate(s);
         empty += is_empty;
         if (!is_empty && std::isfinite(s.area)) areas.push_back(s.area);
         const std::optional<double> q = NumberProperty(s.properties, "q");
@@ -97,8 +69,8 @@ TextTable RelaxedTable(const std::vector<RunRecord>& runs) {
       runs_cell += " of " + std::to_string(g.runs.size());
     t.rows.push_back({WithParams(DisplayOf(g.algorithm).label, g.algorithm_params),
                       WithParams(g.problem, g.problem_params), runs_cell, std::to_string(steps),
-                      Share(contained, known), FormatNumber(Mean(areas)), FormatNumber(Mean(qs)),
-                      FormatNumber(Mean(outliers)), Share(q_within, compared), Share(empty, steps),
+                      FormatRatio(contained, known), FormatNumber(Mean(areas)), FormatNumber(Mean(qs)),
+                      FormatNumber(Mean(outliers)), FormatRatio(q_within, compared), FormatRatio(empty, steps),
                       FormatNumber(Quantile(times, 0.5) * 1e3)});
     for (const std::string& p : g.problems)
       t.items.push_back(WithParams(g.algorithm, g.algorithm_params) + " on " +
