@@ -53,8 +53,9 @@ struct PixelBlock {
 class BinaryImage {
  public:
   // image: CV_8UC1, a pixel is in the set when nonzero. Throws
-  // std::invalid_argument on an empty image, another type, or a frame with a
-  // non-finite origin or a pixel size that is not finite and positive.
+  // std::invalid_argument on an empty image, another type, more than 2^31 - 1
+  // pixels (ψ is CV_32S), or a frame with a non-finite origin or a pixel size
+  // that is not finite and positive.
   BinaryImage(const cv::Mat& image, ImageFrame frame);
 
   int rows() const { return rows_; }
@@ -70,15 +71,19 @@ class BinaryImage {
 
   // The world box covered by the whole image, rounded outward.
   Box Bounds() const;
-  // The world box covered by block (non-empty), rounded outward.
+  // The world box covered by block (non-empty), rounded outward; the empty
+  // (2-component) box for an empty block.
   Box WorldBox(const PixelBlock& block) const;
   // The pixels (clipped to the image) that the closed box xy = (x, y) may
   // touch, rounded outward; empty when xy misses the image or is empty.
+  // Bounds may be infinite. Throws std::invalid_argument unless xy has 2
+  // components.
   PixelBlock BlockMeeting(const Box& xy) const;
 
   // The minimal contraction of eq. 4.90-4.94: xy intersected with the world
   // box of the smallest block holding every set pixel of BlockMeeting(xy);
-  // empty when that block holds none.
+  // empty (both components) when that block holds none. Throws
+  // std::invalid_argument unless xy has 2 components.
   Box Contract(const Box& xy) const;
 
  private:
@@ -90,9 +95,13 @@ class BinaryImage {
 
 // The image contractor as a Contractor: contracts the components x_index and
 // y_index of a box to the set (the other components are left alone). Usable
-// with the contractor algebra and the relaxed solvers like any other.
+// with the contractor algebra and the relaxed solvers like any other. An
+// empty result empties every component (status kEmpty). Contract throws
+// std::invalid_argument on a box without components x_index and y_index.
 class ImageContractor : public Contractor {
  public:
+  // Throws std::invalid_argument on a null image, or indices that are
+  // negative or equal.
   ImageContractor(std::shared_ptr<const BinaryImage> image, int x_index = 0, int y_index = 1);
   std::string_view Name() const override { return "image"; }
   ContractSummary Contract(Box& box, ContractContext& context) override;
