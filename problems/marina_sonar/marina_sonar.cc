@@ -31,7 +31,7 @@ void Describe(MarinaSonarParams& p, ParamSet& set) {
   set.Add("start_error", &p.start_error, "half-width of the known start box on x and y, m",
           Range::Positive(1000));
   set.Add("steps", &p.steps,
-          "number of steps to drive (the route ends after about 1190 at 0.5 m/s); with a log, at "
+          "number of steps to drive (the route ends after about 1187 at 0.5 m/s); with a log, at "
           "most this many rows",
           Range::Closed(1, 1e6));
   set.Add("dt", &p.dt, "time step, s (simulator)", Range::Positive(60));
@@ -104,6 +104,12 @@ class Simulator {
     double th = std::atan2(route[1][1] - y, route[1][0] - x);
     const double speed_phase = UniformReal(rng_, 0, 2 * kPi);
     const double drift_phase = UniformReal(rng_, 0, 2 * kPi);
+    // Sensor biases for the whole drive (a DVL misalignment, a magnetic
+    // deviation), within 0.6 of each bound; the noise adds up to 0.3 more.
+    // Dead reckoning drifts by the biases, as in the thesis' Fig. 6.7.
+    const double bias_u = 0.6 * p_.dvl_error * UniformReal(rng_, -1, 1);
+    const double bias_v = 0.6 * p_.dvl_error * UniformReal(rng_, -1, 1);
+    const double bias_th = 0.6 * p_.compass_error * UniformReal(rng_, -1, 1);
     std::vector<MarinaRecord> records;
     for (int k = 0; k < p_.steps; ++k) {
       while (target < route.size() &&
@@ -121,10 +127,10 @@ class Simulator {
       const double v = 0.05 * p_.speed * std::sin(2 * kPi * t / 90 + drift_phase);
       MarinaRecord r;
       r.t = t;
-      r.dvl_u = u + Noise(p_.dvl_error);
-      r.dvl_v = v + Noise(p_.dvl_error);
+      r.dvl_u = u + bias_u + Noise(p_.dvl_error, 0.3);
+      r.dvl_v = v + bias_v + Noise(p_.dvl_error, 0.3);
       r.dvl_error = p_.dvl_error;
-      r.heading = th + Noise(p_.compass_error);
+      r.heading = th + bias_th + Noise(p_.compass_error, 0.3);
       r.heading_error = p_.compass_error;
       r.has_truth = true;
       r.truth_x = x;
@@ -144,9 +150,9 @@ class Simulator {
   }
 
  private:
-  // Uniform within 0.9 of bound, so the truth is strictly inside every
-  // interval and rounding cannot push it out.
-  double Noise(double bound) { return 0.9 * bound * UniformReal(rng_, -1, 1); }
+  // Uniform within share (0.9 by default) of bound, so that the truth is
+  // strictly inside every interval and rounding cannot push it out.
+  double Noise(double bound, double share = 0.9) { return share * bound * UniformReal(rng_, -1, 1); }
 
   // The return of the beam at angle alpha on the robot at (x, y), heading th.
   std::optional<MarinaReturn> Return(double x, double y, double th, double alpha) {

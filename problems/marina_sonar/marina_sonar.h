@@ -53,7 +53,7 @@ struct MarinaSonarParams {
   std::string start = "known";
   // Half-width of the known start box on x and y, m.
   double start_error = 1;
-  // Number of steps to drive (the simulated route ends after about 1190
+  // Number of steps to drive (the simulated route ends after about 1187
   // steps at the default speed); with a log, at most this many rows.
   int steps = 1200;
   // Time step of the simulator, s.
