@@ -6,6 +6,7 @@
 #include "problems/car_track/car_track.h"
 #include "problems/chain/chain.h"
 #include "problems/line_intersection/line_intersection.h"
+#include "problems/marina_sonar/marina_sonar.h"
 #include "problems/minibex_file/minibex_file.h"
 
 namespace icp {
@@ -26,6 +27,9 @@ std::vector<ProblemInfo>& Table() {
       {"beacon-ranges", "ranges to known beacons, some outliers, paper 003 §5.2.3 (eq. 5.39, Figs. 5.5-5.7)",
        &MakeBeaconRanges, &DefaultParams<BeaconRangesParams>, &ResolveBeaconRanges,
        {View::kCsp, View::kMeasurementSet}},
+      {"marina-sonar", "an AUV in a marina with DVL, compass and a sector-scan sonar on a binary map, paper 003 ch. 6 (eq. 6.8)",
+       &MakeMarinaSonar, &DefaultParams<MarinaSonarParams>, &ResolveMarinaSonar,
+       {View::kCsp, View::kMeasurementSet, View::kProbabilistic}},
   };
   return table;
 }
