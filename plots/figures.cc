@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -60,6 +61,20 @@ std::string Quote(const std::string& text) {
     if (c != '\n') out += c;
   }
   return out + "'";
+}
+
+// A gnuplot double-quoted string, so that a '\n' in text breaks the line.
+std::string MultiLine(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '\n') {
+      out += "\\n";
+      continue;
+    }
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
 }
 
 double Finite(double v) { return std::isfinite(v) ? v : kNaN; }
@@ -313,6 +328,96 @@ void PlotAreaFigure(const FigureText& text, const std::vector<const RunRecord*>&
   Render(f, out_dir, out);
 }
 
+void PlotCentreErrorFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
+                           const std::string& out_dir, PlotOutput* out) {
+  Panel panel;
+  panel.setup = "set title " + Quote(text.title) +
+                " noenhanced\nset xlabel 'step'\nset ylabel 'centre error (m)'\nset logscale y\n"
+                "set key top right noenhanced\n";
+  for (const RunRecord* r : runs) {
+    int known = 0, contained = 0;
+    Series s{"", {}, ""};
+    for (const StepRecord& step : r->steps) {
+      s.rows.push_back({static_cast<double>(step.step), Positive(step.centre_error)});
+      if (step.contained >= 0) ++known, contained += step.contained;
+    }
+    const std::string consistency =
+        known ? ", truth held on " + FormatNumber(100.0 * contained / known) + "% of steps" : "";
+    s.spec = "using 1:2 with lines lw 1.5 lc rgb " + Quote(Colour(r->spec.algorithm)) + " title " +
+             Quote(RunLabel(*r) + consistency);
+    if (HasPoint(s)) panel.series.push_back(std::move(s));
+  }
+  if (panel.series.empty()) return Skip(text, out);
+  Figure f;
+  f.name = text.name;
+  f.width_in = 9;
+  f.height_in = 4.5;
+  f.panels = {panel};
+  Render(f, out_dir, out);
+}
+
+namespace {
+// The centre of a step's estimate on (x, y) = vars 0, 1: the properties
+// mean_<name> when present, else the middle of the hull; NaN when empty.
+std::pair<double, double> StepCentre(const StepRecord& s) {
+  if (s.vars.size() < 2) return {kNaN, kNaN};
+  double c[2];
+  for (int i = 0; i < 2; ++i) {
+    const VariableRecord& v = s.vars[i];
+    const std::optional<double> mean = NumberProperty(s.properties, "mean_" + v.name);
+    c[i] = mean ? *mean : v.lo <= v.hi ? Finite((v.lo + v.hi) / 2) : kNaN;
+  }
+  return {c[0], c[1]};
+}
+}  // namespace
+
+void PlotTrackFigure(const FigureText& text, const std::vector<std::pair<double, double>>& wall_points,
+                     const std::vector<const RunRecord*>& runs, int boxes_every,
+                     const std::string& out_dir, PlotOutput* out) {
+  if (runs.empty() || runs[0]->steps.empty()) return Skip(text, out);
+  Panel panel;
+  panel.setup = "set title " + MultiLine(text.title) +
+                " noenhanced\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset size ratio -1\n"
+                "set key outside bottom center horizontal noenhanced\n";
+  Series walls{"using 1:2 with dots lc rgb '#9a9a9a' title 'map'", {}, ""};
+  for (const auto& [x, y] : wall_points) walls.rows.push_back({x, y});
+  if (HasPoint(walls)) panel.series.push_back(std::move(walls));
+  Series truth{"using 1:2 with lines lw 2 lc rgb 'black' title 'truth'", {}, ""};
+  for (const StepRecord& s : runs[0]->steps)
+    if (s.vars.size() >= 2) truth.rows.push_back({s.vars[0].truth, s.vars[1].truth});
+  if (HasPoint(truth)) panel.series.push_back(std::move(truth));
+  for (const RunRecord* r : runs) {
+    const std::string colour = Quote(Colour(r->spec.algorithm));
+    const bool particles = !r->steps.empty() && r->steps[0].estimate == "particles";
+    if (boxes_every > 0 && !particles) {
+      Series boxes{"using 1:2:3:4 with boxxyerror fs empty lw 0.6 lc rgb " + colour + " notitle",
+                   {}, ""};
+      for (std::size_t i = 0; i < r->steps.size(); i += boxes_every) {
+        const StepRecord& s = r->steps[i];
+        if (s.vars.size() < 2 || IsEmptyEstimate(s)) continue;
+        const VariableRecord &x = s.vars[0], &y = s.vars[1];
+        boxes.rows.push_back({Finite((x.lo + x.hi) / 2), Finite((y.lo + y.hi) / 2),
+                              Finite((x.hi - x.lo) / 2), Finite((y.hi - y.lo) / 2)});
+      }
+      if (HasPoint(boxes)) panel.series.push_back(std::move(boxes));
+    }
+    Series centres{"using 1:2 with lines lw 1.2 lc rgb " + colour + " title " +
+                       Quote(RunLabel(*r) + (particles ? ": weighted mean" : ": box centre")),
+                   {}, ""};
+    for (const StepRecord& s : r->steps) {
+      const auto [x, y] = StepCentre(s);
+      centres.rows.push_back({x, y});
+    }
+    if (HasPoint(centres)) panel.series.push_back(std::move(centres));
+  }
+  Figure f;
+  f.name = text.name;
+  f.width_in = 8;
+  f.height_in = 8;
+  f.panels = {panel};
+  Render(f, out_dir, out);
+}
+
 void PlotTimingFigure(const FigureText& text, const std::vector<const GroupSummary*>& groups,
                       const std::string& out_dir, PlotOutput* out) {
   Panel panel;
@@ -347,20 +452,6 @@ void PlotTimingFigure(const FigureText& text, const std::vector<const GroupSumma
 namespace {
 constexpr char kBigMarker[] = "#ff1a1a";
 constexpr char kSmallMarker[] = "#ff9f1c";
-
-// A gnuplot double-quoted string, so that a '\n' in text breaks the line.
-std::string MultiLine(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '\n') {
-      out += "\\n";
-      continue;
-    }
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
 
 // The side of BlockMax's blocks.
 int BlockSide(const cv::Mat& counts, int max_side) {

@@ -74,6 +74,21 @@ void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecor
 // x-y area over the steps, one line per run, log scale.
 void PlotAreaFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
                     const std::string& out_dir, PlotOutput* out);
+// Distance from the estimate's centre to the truth over the steps, one line
+// per run (the consistency of the estimates shown beside it: each line's
+// title gives its share of steps holding the truth).
+void PlotCentreErrorFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
+                           const std::string& out_dir, PlotOutput* out);
+// A run drawn on its map (equal scales): the map's set pixels as grey dots
+// (wall_points, the pixels' centres), the true x-y trajectory of the first
+// run in black, and for each run the centre of its estimate at every step
+// (the step property mean_<var> when the estimator reports one, a particle
+// filter's weighted mean; else the middle of the hull), in its algorithm's
+// colour; with boxes_every > 0, the x-y hull of every boxes_every-th step of
+// the runs whose estimates are sets (not particles) as rectangles.
+void PlotTrackFigure(const FigureText& text, const std::vector<std::pair<double, double>>& wall_points,
+                     const std::vector<const RunRecord*>& runs, int boxes_every,
+                     const std::string& out_dir, PlotOutput* out);
 // Solve time per CSP, one box per group, pooling its ok runs' steps.
 void PlotTimingFigure(const FigureText& text, const std::vector<const GroupSummary*>& groups,
                       const std::string& out_dir, PlotOutput* out);

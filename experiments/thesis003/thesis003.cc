@@ -1,5 +1,7 @@
 #include "experiments/thesis003/thesis003.h"
 
+#include "experiments/thesis003/marina.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -292,13 +294,14 @@ AccumulatorMaximum FindMaximum(const cv::Mat& counts) {
 }
 
 std::vector<TextTable> Thesis003Tables(const std::vector<RunRecord>& runs) {
-  return {RelaxedTable(runs)};
+  return {RelaxedTable(runs), MarinaTable(runs)};
 }
 
 void Thesis003Figures(const std::vector<RunRecord>& runs, const std::string& out_dir,
                       PlotOutput* out) {
   Fig52(runs, out_dir, out);
   Fig55To57(runs, out_dir, out);
+  MarinaFigures(runs, out_dir, out);
 }
 
 }  // namespace icp

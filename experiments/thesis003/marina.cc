@@ -1,0 +1,166 @@
+#include "experiments/thesis003/marina.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <tuple>
+#include <utility>
+
+#include "harness/metrics.h"
+#include "problems/marina_sonar/marina_sonar.h"
+
+namespace icp {
+
+namespace {
+
+constexpr const char* kDash = "—";
+
+bool OfMarina(const RunRecord& r) {
+  const std::string e = ExperimentOf(r);
+  return e == kThesis003Marina || e == kThesis003MarinaShort;
+}
+
+bool HasMarinaRun(const GroupSummary& g) {
+  return HasExperiment(g, kThesis003Marina) || HasExperiment(g, kThesis003MarinaShort);
+}
+
+// Restarts of a run: the relaxed solvers' static recoveries, or the
+// filter's reinitialisations; nullopt when the estimator reports neither.
+std::optional<double> Restarts(const RunRecord& r) {
+  if (auto n = NumberProperty(r.properties, "resets")) return n;
+  return NumberProperty(r.properties, "reinitialised");
+}
+
+std::string Cell(double v) { return std::isnan(v) ? kDash : FormatNumber(v); }
+
+// The centres of the wall pixels of a run's map (the shipped one unless its
+// params name another), for drawing.
+std::vector<std::pair<double, double>> MarinaWallPoints(const ParamMap& problem_params) {
+  const auto p = ParseParams<MarinaSonarParams>("marina-sonar", problem_params);
+  const MarinaMap map = LoadMarinaMap(p.map.empty() ? ShippedMarinaMapPath() : p.map);
+  const BinaryImage& image = *map.image;
+  const ImageFrame& f = image.frame();
+  std::vector<std::pair<double, double>> points;
+  for (int r = 0; r < image.rows(); ++r)
+    for (int c = 0; c < image.cols(); ++c)
+      if (image.IsSet(r, c))
+        points.push_back({f.origin_x + (c + 0.5) * f.pixel_size,
+                          f.origin_y + (image.rows() - r - 0.5) * f.pixel_size});
+  return points;
+}
+
+}  // namespace
+
+TextTable MarinaTable(const std::vector<RunRecord>& runs) {
+  TextTable t;
+  t.title = "Thesis 003 ch. 6: marina, set membership vs particle filter";
+  t.headers = {"configuration",     "problem",          "runs",
+               "steps",             "consistency",      "centre RMSE (m)",
+               "median error (m)",  "restarts per run", "median time per step (ms)",
+               "mean time per run (s)"};
+  t.numeric = {false, false, true, true, true, true, true, true, true, true};
+  t.wide = true;
+  for (const GroupSummary& g : SummariseGroups(runs)) {
+    if (!HasMarinaRun(g)) continue;
+    int steps = 0, known = 0, contained = 0;
+    std::vector<double> squared, errors, times, run_times, restarts;
+    for (const RunRecord* r : g.ok_runs) {
+      double run_time = 0;
+      for (const StepRecord& s : r->steps) {
+        ++steps;
+        if (s.contained >= 0) ++known, contained += s.contained;
+        if (std::isfinite(s.centre_error)) {
+          errors.push_back(s.centre_error);
+          squared.push_back(s.centre_error * s.centre_error);
+        }
+        times.push_back(s.solve_time_s);
+        run_time += s.solve_time_s;
+      }
+      run_times.push_back(run_time);
+      if (const std::optional<double> n = Restarts(*r)) restarts.push_back(*n);
+    }
+    std::string runs_cell = std::to_string(g.ok);
+    if (g.runs.size() != static_cast<std::size_t>(g.ok))
+      runs_cell += " of " + std::to_string(g.runs.size());
+    t.rows.push_back({WithParams(DisplayOf(g.algorithm).label, g.algorithm_params),
+                      WithParams(g.problem, g.problem_params), runs_cell, std::to_string(steps),
+                      FormatRatio(contained, known), Cell(std::sqrt(Mean(squared))),
+                      Cell(Quantile(errors, 0.5)), Cell(Mean(restarts)),
+                      Cell(Quantile(times, 0.5) * 1e3), Cell(Mean(run_times))});
+    for (const std::string& p : g.problems)
+      t.items.push_back(WithParams(g.algorithm, g.algorithm_params) + " on " +
+                        WithParams(g.problem, g.problem_params) + ": " + p);
+  }
+  // The thesis' own figures for its 600 m run (§6.7), for comparison.
+  t.rows.push_back({"published: set membership, C/C++", "the Girona marina data set, 600 m", kDash,
+                    kDash, kDash, kDash, kDash, kDash, kDash, "4200"});
+  t.rows.push_back({"published: particle filter, 600 particles, Matlab",
+                    "the Girona marina data set, 600 m", kDash, kDash, kDash, kDash, kDash, kDash,
+                    kDash, "1860"});
+  t.notes.push_back(
+      "Every configuration with a run of experiment marina or marina-short, over the steps of its "
+      "ok runs (every seed). Consistency: share of the steps whose estimate holds the truth (the "
+      "particle filter's region, its weighted 95% box or hull, is not a guaranteed enclosure). "
+      "Centre error: distance from the box centre (the filter: its weighted mean) to the truth. "
+      "Restarts: the set-membership solver's global searches after an empty tracked solution "
+      "(run property resets), the filter's reinitialisations after every particle lost all "
+      "weight. Time per run: the estimator's solve time summed over the steps. Published: paper "
+      "003 §6.7, one core of a Centrino Duo T2500 at 2 GHz (1 h 10 min) and Matlab on a Core2 at "
+      "2.2 GHz (31 min), on the real data set, which is not available here: the rows above are "
+      "the simulated marina of problems/marina_sonar.");
+  if (t.rows.size() == 2)
+    t.notes.push_back("No run of experiment marina or marina-short in the store (specs/marina.yaml).");
+  return t;
+}
+
+std::vector<const RunRecord*> MarinaFigureRuns(const std::vector<RunRecord>& runs) {
+  const RunRecord* reference = nullptr;
+  auto rank = [](const RunRecord& r) {
+    const auto start = r.spec.problem_params.find("start");
+    const bool known = start != r.spec.problem_params.end() && start->second == "known";
+    return std::make_tuple(ExperimentOf(r) != kThesis003Marina, !known, r.spec.seed);
+  };
+  for (const RunRecord& r : runs) {
+    if (r.status != RunStatus::kOk || !OfMarina(r) || r.steps.empty()) continue;
+    if (!reference || rank(r) < rank(*reference)) reference = &r;
+  }
+  std::vector<const RunRecord*> out;
+  if (!reference) return out;
+  for (const RunRecord& r : runs) {
+    if (r.status == RunStatus::kOk && ExperimentOf(r) == ExperimentOf(*reference) &&
+        r.spec.problem == reference->spec.problem &&
+        r.spec.problem_params == reference->spec.problem_params &&
+        r.spec.seed == reference->spec.seed && !r.steps.empty())
+      out.push_back(&r);
+  }
+  std::stable_sort(out.begin(), out.end(), [](const RunRecord* a, const RunRecord* b) {
+    return AlgorithmLess(a->spec.algorithm, b->spec.algorithm);
+  });
+  return out;
+}
+
+void MarinaFigures(const std::vector<RunRecord>& runs, const std::string& out_dir,
+                   PlotOutput* out) {
+  const std::string none = "no ok run of experiment marina or marina-short";
+  const std::vector<const RunRecord*> drawn = MarinaFigureRuns(runs);
+  if (drawn.empty()) {
+    out->messages.push_back(std::string("fig6_8_marina_tracks: skipped: ") + none);
+    out->messages.push_back(std::string("fig6_errors: skipped: ") + none);
+    return;
+  }
+  const RunRecord& first = *drawn[0];
+  const std::string setting = first.spec.problem + " {" + CompactParams(first.spec.problem_params) +
+                              "}, seed " + std::to_string(first.spec.seed);
+  std::vector<std::pair<double, double>> walls;
+  std::string title = "Marina: truth, set-membership boxes and particle mean\n(" + setting + ")";
+  try {
+    walls = MarinaWallPoints(first.spec.problem_params);
+  } catch (const std::exception& e) {
+    title += "\n(map not drawn: " + std::string(e.what()) + ")";
+  }
+  PlotTrackFigure({"fig6_8_marina_tracks", title, none}, walls, drawn, 10, out_dir, out);
+  PlotCentreErrorFigure({"fig6_errors", "Marina: centre error over time (" + setting + ")", none},
+                        drawn, out_dir, out);
+}
+
+}  // namespace icp

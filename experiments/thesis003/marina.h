@@ -1,0 +1,50 @@
+// Thesis 003 chapter 6: set-membership localization in a marina against a
+// particle filter (§6.7). Runs are those of spec experiments `marina`
+// (specs/marina.yaml, the full drive) and `marina-short` (the default
+// suite's short one); both give:
+//
+//   the table "Thesis 003 ch. 6: marina, set membership vs particle filter":
+//   per configuration (algorithm, problem params: start, outlier rate, ...)
+//   pooled over its ok runs (every seed): the share of steps whose estimate
+//   holds the truth, the centre error (RMSE and median), the restarts per
+//   run (the relaxed solvers' static recovery, run property `resets`; the
+//   filter's reinitialisations, `reinitialised`), and the time per step and
+//   per run, beside the thesis' 1 h 10 min (C/C++) and 31 min (Matlab, 600
+//   particles) for its 600 m run;
+//
+//   the figures fig6_8_marina_tracks (the map, the true trajectory, the
+//   set-membership boxes and centres and the particle cloud's mean: Figs.
+//   6.8 and 6.9 in one) and fig6_errors (centre error over time, both
+//   methods). They draw one seed: the smallest seed of a run of the
+//   experiment (`marina` before `marina-short`), with start=known when there
+//   is one, and every ok run of that experiment with the same problem
+//   params and seed.
+#ifndef ICPBENCH_EXPERIMENTS_THESIS003_MARINA_H_
+#define ICPBENCH_EXPERIMENTS_THESIS003_MARINA_H_
+
+#include <string>
+#include <vector>
+
+#include "harness/run_record.h"
+#include "plots/figures.h"
+#include "report/report.h"
+
+namespace icp {
+
+inline constexpr char kThesis003Marina[] = "marina";
+inline constexpr char kThesis003MarinaShort[] = "marina-short";
+
+// The runs the figures draw (see the top), in algorithm display order;
+// empty when neither experiment has an ok run.
+std::vector<const RunRecord*> MarinaFigureRuns(const std::vector<RunRecord>& runs);
+
+TextTable MarinaTable(const std::vector<RunRecord>& runs);
+
+// fig6_8_marina_tracks and fig6_errors; skipped with a message when there
+// is no ok run to draw.
+void MarinaFigures(const std::vector<RunRecord>& runs, const std::string& out_dir,
+                   PlotOutput* out);
+
+}  // namespace icp
+
+#endif  // ICPBENCH_EXPERIMENTS_THESIS003_MARINA_H_

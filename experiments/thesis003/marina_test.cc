@@ -1,0 +1,136 @@
+#include "experiments/thesis003/marina.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "harness/metrics.h"
+#include "plots/figures_testing.h"
+#include "report/report_testing.h"
+
+namespace icp {
+namespace {
+
+using testing::FigureFiles;
+using testing::GnuplotMissing;
+using testing::InExperiment;
+using testing::MarkdownRow;
+using testing::TempDir;
+
+// A marina step: the truth at (t, 0), the estimate's box [t - 1, t + 1] x
+// [-1, 1] shifted by error on x (so its centre error is |error| and it holds
+// the truth when |error| <= 1), the given solve time.
+StepRecord MarinaStep(int t, double error, double time_s, const std::string& estimate = "box") {
+  StepRecord s;
+  s.step = t;
+  s.status = "fixpoint";
+  s.estimate = estimate;
+  s.vars = {{"x", t + error - 1, t + error + 1, static_cast<double>(t)}, {"y", -1, 1, 0}};
+  s.contained = std::abs(error) <= 1 ? 1 : 0;
+  s.area = 4;
+  s.centre_error = std::abs(error);
+  s.solve_time_s = time_s;
+  return s;
+}
+
+RunRecord MarinaRun(const std::string& algorithm, const std::string& start, std::uint64_t seed,
+                    std::vector<StepRecord> steps, Properties properties,
+                    const std::string& experiment = kThesis003Marina) {
+  RunRecord r;
+  r.spec = {algorithm, {}, "marina-sonar", {{"start", start}}, seed};
+  r.steps = std::move(steps);
+  r.metrics = ComputeMetrics(r.steps);
+  r.properties = std::move(properties);
+  return InExperiment(std::move(r), experiment);
+}
+
+// The report's Markdown from the table's title on (the generic table comes
+// first).
+std::string Md(const std::vector<RunRecord>& runs) {
+  const std::string md = Report(runs, "md", [](const std::vector<RunRecord>& r) {
+    return std::vector<TextTable>{MarinaTable(r)};
+  });
+  const std::size_t at = md.find("## Thesis 003 ch. 6");
+  return at == std::string::npos ? "" : md.substr(at);
+}
+
+TEST(MarinaTableTest, PoolsSeedsAndReportsErrorsRestartsAndTimes) {
+  // q-relaxed, two seeds: errors 0, 0.5, 2 (one step misses the truth) and
+  // 1; 1 and 3 restarts; 10 ms and 30 ms steps.
+  const std::vector<RunRecord> runs = {
+      MarinaRun("q-relaxed", "known", 1,
+                {MarinaStep(0, 0, 0.01), MarinaStep(1, 0.5, 0.01), MarinaStep(2, 2, 0.03)},
+                {{"resets", std::int64_t{1}}}),
+      MarinaRun("q-relaxed", "known", 2, {MarinaStep(0, 1, 0.03)}, {{"resets", std::int64_t{3}}}),
+      MarinaRun("particle-filter", "known", 1, {MarinaStep(0, 3, 0.002, "particles")},
+                {{"reinitialised", std::int64_t{0}}}),
+      // Not of the marina experiments: left out.
+      MarinaRun("hc4", "known", 1, {MarinaStep(0, 0, 1)}, {}, "table1"),
+  };
+  const std::string md = Md(runs);
+  // Consistency 3 of 4 steps; RMSE of errors 0, 0.5, 2, 1 is sqrt(5.25 / 4);
+  // median error 0.75; restarts (1 + 3) / 2; median step 20 ms; solve time
+  // per run (0.05 + 0.03) / 2 s.
+  EXPECT_EQ(MarkdownRow(md, "q-relaxed"),
+            "| q-relaxed | marina-sonar {start=known} | 2 | 4 | 0.75 | " +
+                FormatNumber(std::sqrt(5.25 / 4)) + " | 0.75 | 2 | 20 | 0.04 |")
+      << md;
+  const std::string filter = DisplayOf("particle-filter").label;
+  EXPECT_EQ(MarkdownRow(md, filter),
+            "| " + filter + " | marina-sonar {start=known} | 1 | 1 | 0 | 3 | 3 | 0 | 2 | 0.002 |")
+      << md;
+  EXPECT_EQ(MarkdownRow(md, "HC4"), "");
+  // The thesis' figures stand beside them.
+  EXPECT_EQ(MarkdownRow(md, "published: set membership, C/C++"),
+            "| published: set membership, C/C++ | the Girona marina data set, 600 m | — | — | — | — "
+            "| — | — | — | 4200 |");
+  EXPECT_NE(MarkdownRow(md, "published: particle filter, 600 particles, Matlab"), "");
+}
+
+TEST(MarinaTableTest, SaysWhichSpecMakesItsRunsWhenThereAreNone) {
+  EXPECT_NE(Md({}).find("specs/marina.yaml"), std::string::npos);
+}
+
+TEST(MarinaFiguresTest, DrawOneSeedOfBothMethodsPreferringTheFullDriveAndAKnownStart) {
+  const std::vector<RunRecord> runs = {
+      MarinaRun("q-relaxed", "unknown", 1, {MarinaStep(0, 0, 0.01)}, {}),
+      MarinaRun("q-relaxed", "known", 3, {MarinaStep(0, 0, 0.01)}, {}),
+      MarinaRun("particle-filter", "known", 3, {MarinaStep(0, 0, 0.01, "particles")}, {}),
+      MarinaRun("particle-filter", "known", 4, {MarinaStep(0, 0, 0.01, "particles")}, {}),
+      MarinaRun("q-relaxed", "known", 1, {MarinaStep(0, 0, 0.01)}, {}, kThesis003MarinaShort),
+  };
+  const std::vector<const RunRecord*> drawn = MarinaFigureRuns(runs);
+  ASSERT_EQ(drawn.size(), 2u);
+  EXPECT_EQ(drawn[0]->spec.algorithm, "q-relaxed");
+  EXPECT_EQ(drawn[1]->spec.algorithm, "particle-filter");
+  for (const RunRecord* r : drawn) EXPECT_EQ(r->spec.seed, 3u);
+  // Only the short drive: it is drawn.
+  EXPECT_EQ(MarinaFigureRuns({runs.back()}).size(), 1u);
+  EXPECT_TRUE(MarinaFigureRuns({}).empty());
+}
+
+TEST(MarinaFiguresTest, WritesBothFiguresOrSaysWhyNot) {
+  PlotOutput none;
+  MarinaFigures({}, TempDir("marina_figures_none").string(), &none);
+  ASSERT_EQ(none.messages.size(), 2u);
+  EXPECT_NE(none.messages[0].find("fig6_8_marina_tracks: skipped"), std::string::npos);
+  if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
+  const std::vector<RunRecord> runs = {
+      MarinaRun("q-relaxed", "known", 1, {MarinaStep(0, 0, 0.01), MarinaStep(1, 0.5, 0.01)}, {}),
+      MarinaRun("particle-filter", "known", 1,
+                {MarinaStep(0, 0.2, 0.01, "particles"), MarinaStep(1, 0.1, 0.01, "particles")}, {}),
+  };
+  const std::filesystem::path dir = TempDir("marina_figures");
+  std::filesystem::create_directories(dir);
+  PlotOutput out;
+  MarinaFigures(runs, dir.string(), &out);
+  EXPECT_EQ(out.files, FigureFiles(dir, {"fig6_8_marina_tracks", "fig6_errors"}))
+      << ::testing::PrintToString(out.messages);
+}
+
+}  // namespace
+}  // namespace icp
