@@ -60,6 +60,10 @@ void Describe(MarinaSonarParams& p, ParamSet& set) {
           {"outlier", "drop"});
   set.Add("w", &p.w, "window length of the CSP view in steps (2w dead-reckoning constraints)",
           Range::Closed(1, 100000));
+  set.Add("sonar_window", &p.sonar_window,
+          "earlier steps whose returns the measurement set carries to this step by dead reckoning "
+          "(eq. 6.2; 0: this step's returns only)",
+          Range::Closed(0, 1000));
   set.Add("likelihood_floor", &p.likelihood_floor,
           "outlier floor of one return's likelihood (probabilistic view)", Range{0, 1, true, true});
   set.Add("log", &p.log, "CSV log replacing the simulator (empty: simulate)");
@@ -503,12 +507,19 @@ bool MarinaSonarProblem::Next(Step* step) {
   set.prior = k == 0 && known ? start_box_ : bounds_;
   bool flags_known = true;
   std::vector<bool> outliers;
-  for (const MarinaReturn& ret : r.returns) {
-    set.measurements.push_back(std::make_shared<SonarContractor>(
-        map_.image, SonarRangeInterval(ret.range, ret.range_error),
-        SonarAngleInterval(r.heading, r.heading_error, ret.beam_angle, ret.beam_half_width)));
-    outliers.push_back(ret.outlier);
-    flags_known = flags_known && ret.has_outlier_flag;
+  // From this step back: carried holds the displacement from step j to k.
+  Displacement carried{Interval(0), Interval(0)};
+  for (int j = k; j >= std::max(0, k - params_.sonar_window); --j) {
+    if (j < k) carried = {carried.dx + motion_[j + 1].dx, carried.dy + motion_[j + 1].dy};
+    const MarinaRecord& at = records_[j];
+    for (const MarinaReturn& ret : at.returns) {
+      set.measurements.push_back(std::make_shared<SonarContractor>(
+          map_.image, SonarRangeInterval(ret.range, ret.range_error),
+          SonarAngleInterval(at.heading, at.heading_error, ret.beam_angle, ret.beam_half_width),
+          carried.dx, carried.dy));
+      outliers.push_back(ret.outlier);
+      flags_known = flags_known && ret.has_outlier_flag;
+    }
   }
   if (flags_known) set.outliers = std::move(outliers);
   if (k > 0)

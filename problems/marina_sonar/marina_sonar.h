@@ -23,9 +23,11 @@
 //
 // Views of step k:
 //   - measurement set: prior = the map's bounds (the first step of a known
-//     start: the true start ± start_error); one SonarContractor per return;
-//     outliers; predict = previous box + the dead-reckoning displacement
-//     interval, from step 1 on.
+//     start: the true start ± start_error); one SonarContractor per return
+//     of steps k - sonar_window..k, a return of step j < k carried to step
+//     k by the dead-reckoning displacement from j to k (eq. 6.2: H = M_k -
+//     D_jk + P); outliers; predict = previous box + the dead-reckoning
+//     displacement interval, from step 1 on.
 //   - CSP: the dead-reckoning constraints over the window of states
 //     max(0, k - w)..k (2 per motion), domains the map's bounds (state 0 of a
 //     known start: its box). The map is not a Minibex constraint, so the
@@ -78,11 +80,20 @@ struct MarinaSonarParams {
   // wall distance) or a fish (a range short of the wall), simulator.
   double outlier_rate = 0.1;
   // What a beam that meets no wall within max_range returns (simulator):
-  // `outlier`, a reading of max_range declared an outlier (the thesis'
-  // out-of-range segments), or `drop`, no return.
-  std::string out_of_range = "outlier";
+  // `drop`, no return (a sonar knows when no echo came back: the thesis'
+  // out-of-range segments bound no wall), or `outlier`, a reading of
+  // max_range declared an outlier (a harder case: about half the returns of
+  // the default drive are then outliers).
+  std::string out_of_range = "drop";
   // Window length of the CSP view, in steps (2w constraints).
   int w = 10;
+  // Steps before this one whose returns the measurement-set view carries to
+  // the current position through the dead reckoning (the window of eq. 6.2
+  // and 6.5): 0 for this step's returns alone. A longer window tells more
+  // places of the map apart (global localization needs several returns'
+  // worth of walls) at the price of wider carried returns and more
+  // contractors; 5 to 10 steps suit the default drive.
+  int sonar_window = 5;
   // Outlier floor of the particle filter's likelihood of one return, in
   // (0, 1): the weight a return keeps however far its end point is from a
   // wall.

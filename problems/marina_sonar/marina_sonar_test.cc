@@ -183,7 +183,8 @@ TEST(MarinaSimulatorTest, SeededAndDeterministic) {
 
 // Constraints 6.8 at the true wall point H of every inlier return.
 TEST(MarinaSimulatorTest, TruthSatisfiesEveryInlierReturn) {
-  const MarinaSonarParams p;  // the full default drive
+  MarinaSonarParams p;  // the full default drive, out-of-range readings kept
+  p.out_of_range = "outlier";
   int inliers = 0, outliers = 0, out_of_range = 0;
   for (std::uint64_t seed : {1, 2}) {
     for (const MarinaRecord& r : SimulateMarinaSonar(p, Shipped(), seed)) {

@@ -16,13 +16,16 @@ Interval SonarAngleInterval(double heading, double heading_error, double beam_an
 }
 
 SonarContractor::SonarContractor(std::shared_ptr<const BinaryImage> map, Interval range,
-                                 Interval angle, int x_index, int y_index)
+                                 Interval angle, Interval carried_x, Interval carried_y,
+                                 int x_index, int y_index)
     : map_(std::move(map)), range_(range), angle_(angle), x_index_(x_index), y_index_(y_index) {
   if (!map_) throw std::invalid_argument("SonarContractor: no map");
   if (range_.IsEmpty() || !range_.IsBounded() || angle_.IsEmpty() || !angle_.IsBounded())
     throw std::invalid_argument("SonarContractor: the range and angle intervals must be bounded and non-empty");
-  px_ = range_ * Cos(angle_);
-  py_ = range_ * Sin(angle_);
+  if (carried_x.IsEmpty() || !carried_x.IsBounded() || carried_y.IsEmpty() || !carried_y.IsBounded())
+    throw std::invalid_argument("SonarContractor: the carried displacement must be bounded and non-empty");
+  px_ = range_ * Cos(angle_) - carried_x;
+  py_ = range_ * Sin(angle_) - carried_y;
 }
 
 ContractSummary SonarContractor::Contract(Box& box, ContractContext&) {

@@ -36,16 +36,20 @@ Interval SonarAngleInterval(double heading, double heading_error, double beam_an
 class SonarContractor : public Contractor {
  public:
   // Contracts components x_index and y_index of a box (the robot's
-  // position). Throws std::invalid_argument when range or angle is empty or
-  // unbounded.
+  // position). A return made carried = (carried_x, carried_y) before the
+  // position to contract (the robot moved by it since: the dead reckoning
+  // of eq. 6.2) has H = M - carried + d (cos a, sin a): P is shifted by
+  // -carried. Throws std::invalid_argument when range, angle or carried is
+  // empty or unbounded.
   SonarContractor(std::shared_ptr<const BinaryImage> map, Interval range, Interval angle,
+                  Interval carried_x = Interval(0), Interval carried_y = Interval(0),
                   int x_index = 0, int y_index = 1);
   std::string_view Name() const override { return "sonar"; }
   ContractSummary Contract(Box& box, ContractContext& context) override;
 
   const Interval& range() const { return range_; }
   const Interval& angle() const { return angle_; }
-  // The box P enclosing H - M.
+  // The box P enclosing H - M (carried included).
   const Interval& offset_x() const { return px_; }
   const Interval& offset_y() const { return py_; }
 
