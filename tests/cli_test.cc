@@ -173,7 +173,7 @@ TEST(CliTest, ListShowsNamesDescriptionsAndParameters) {
   for (const auto& p : problems) {
     ASSERT_TRUE(p["offers"].is_array()) << p["name"];
     if (p["name"] == "car-track") {
-      EXPECT_EQ(p["offers"], nlohmann::json::array({"csp"}));
+      EXPECT_EQ(p["offers"], nlohmann::json::array({"csp", "probabilistic"}));
     }
   }
   EXPECT_EQ(Icpbench("list algorithms").exit_code, 0);

@@ -509,7 +509,7 @@ TEST(CarTrackTest, RegistryRejectsBadParameters) {
   const std::string device = ErrorOf([&] { info.resolve("car-track", {{"log", "/dev/zero"}}); });
   EXPECT_NE(device.find("/dev/zero: is not a regular file"), std::string::npos) << device;
   EXPECT_EQ(info.make({{"steps", "30"}}, 1)->NumSteps(), 30);
-  EXPECT_EQ(info.offers, std::vector<View>{View::kCsp});
+  EXPECT_EQ(info.offers, (std::vector<View>{View::kCsp, View::kProbabilistic}));
   // The run key holds every effective parameter, in canonical spelling.
   const ParamMap resolved = info.resolve("car-track", {{"gps_error", "2.50"}, {"w", "020"}});
   EXPECT_EQ(resolved.at("w"), "20");
