@@ -6,6 +6,7 @@
 #include <functional>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -162,6 +163,82 @@ double SelectQuantile(std::vector<std::pair<double, double>>& pairs, double tota
   return std::max_element(pairs.begin(), pairs.end(), by_value)->first;
 }
 
+// WeightedQuantile at tail and at 1 - tail (tail < 1/2) of values added one
+// by one with positive weights, from the few smallest and largest of them,
+// kept in order as they come: no sort of them all. Quantiles answers when
+// those few hold the tails' weight (with equal weights they do), else
+// nullopt (then SelectQuantile over them all).
+class Tails {
+ public:
+  Tails(std::size_t n, double tail)
+      : m_(std::min(n, 8 + 2 * static_cast<std::size_t>(std::ceil(tail * static_cast<double>(n))))),
+        tail_(tail) {
+    low_.reserve(m_ + 1);
+    high_.reserve(m_ + 1);
+  }
+
+  void Add(double value, double weight) {
+    ++count_;
+    Insert(low_, value, weight, [](double a, double b) { return a < b; });
+    Insert(high_, value, weight, [](double a, double b) { return a > b; });
+  }
+
+  // The two quantiles for weights summing to total.
+  std::optional<Interval> Quantiles(double total) const {
+    // Lower: the least value whose weight at or below exceeds tail * total.
+    std::optional<double> lo;
+    double cumulative = 0;
+    for (const auto& [value, weight] : low_) {
+      cumulative += weight;
+      if (cumulative > tail_ * total) {
+        lo = value;
+        break;
+      }
+    }
+    // Upper: the least value whose weight at or below exceeds (1 - tail) *
+    // total; going down from the largest, ties together, the weight at or
+    // below a value is total minus the weight strictly above it.
+    std::optional<double> hi;
+    const double target = (1 - tail_) * total;
+    double above = 0;
+    for (std::size_t j = 0; j < high_.size();) {
+      std::size_t k = j;
+      double group = 0;
+      while (k < high_.size() && high_[k].first == high_[j].first) group += high_[k++].second;
+      if (k == high_.size() && high_.size() < count_) break;  // the ties may go on
+      if (!(total - above > target)) break;  // target >= total: left to SelectQuantile
+      if (!(total - above - group > target)) {
+        hi = high_[j].first;
+        break;
+      }
+      above += group;
+      j = k;
+    }
+    if (!lo || !hi) return std::nullopt;
+    return Interval(*lo, *hi);
+  }
+
+ private:
+  // Keeps the m_ first values in the order `before`, sorted.
+  template <class Before>
+  void Insert(std::vector<std::pair<double, double>>& kept, double value, double weight, Before before) {
+    if (kept.size() == m_ && !before(value, kept.back().first)) return;
+    std::size_t i = kept.size();
+    if (kept.size() < m_) kept.emplace_back();
+    else --i;
+    while (i > 0 && before(value, kept[i - 1].first)) {
+      kept[i] = kept[i - 1];
+      --i;
+    }
+    kept[i] = {value, weight};
+  }
+
+  std::size_t m_;
+  double tail_;
+  std::size_t count_ = 0;
+  std::vector<std::pair<double, double>> low_, high_;
+};
+
 class ParticleFilter : public Estimator {
  public:
   ParticleFilter(const ParticleFilterParams& p, std::uint64_t seed) : p_(p), rng_(seed) {}
@@ -273,72 +350,80 @@ class ParticleFilter : public Estimator {
 
   // Puts each periodic component within half a period of its circular mean
   // (in the previous centre's frame) and returns the estimate; its
-  // statistics go into properties.
+  // statistics go into properties. Two passes over the particles.
   std::unique_ptr<Estimate> MakeEstimate(const StateSpace& space, const std::vector<double>& w,
                                          Properties* properties) {
     const std::size_t n = particles_.size();
     const int d = space.size();
-    std::vector<double> centre(static_cast<std::size_t>(d), 0.0);
+    const auto du = static_cast<std::size_t>(d);
+    std::vector<double> period(du), scale(du), linear(du, 0.0), sum_sin(du, 0.0), sum_cos(du, 0.0);
     for (int c = 0; c < d; ++c) {
-      double mean = 0;
-      for (std::size_t i = 0; i < n; ++i) mean += w[i] * particles_[i][c];
-      const double period = space.Period(c);
-      if (period > 0) {
-        double sum_sin = 0, sum_cos = 0;
-        const double k = 2 * std::acos(-1.0) / period;
-        for (std::size_t i = 0; i < n; ++i) {
-          if (w[i] == 0) continue;
-          sum_sin += w[i] * std::sin(k * particles_[i][c]);
-          sum_cos += w[i] * std::cos(k * particles_[i][c]);
+      period[c] = space.Period(c);
+      scale[c] = period[c] > 0 ? 2 * std::acos(-1.0) / period[c] : 0;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      if (w[i] == 0) continue;
+      const double* row = particles_[i].data();
+      for (int c = 0; c < d; ++c) {
+        linear[c] += w[i] * row[c];
+        if (period[c] > 0) {
+          double sin = 0, cos = 0;
+          ::sincos(scale[c] * row[c], &sin, &cos);  // glibc: both for the price of one
+          sum_sin[c] += w[i] * sin;
+          sum_cos[c] += w[i] * cos;
         }
-        const double circular = std::atan2(sum_sin, sum_cos) / k;
-        const double reference = centre_.size() == centre.size() ? centre_[c] : mean;
-        mean = circular + period * std::round((reference - circular) / period);
-        for (State& s : particles_) s[c] -= period * std::round((s[c] - mean) / period);
       }
-      centre[c] = mean;
+    }
+    std::vector<double> centre = linear;
+    for (int c = 0; c < d; ++c) {
+      if (!(period[c] > 0)) continue;
+      const double circular = std::atan2(sum_sin[c], sum_cos[c]) / scale[c];
+      const double reference = centre_.size() == du ? centre_[c] : linear[c];
+      centre[c] = circular + period[c] * std::round((reference - circular) / period[c]);
     }
     centre_ = centre;
 
+    const bool hull = p_.region == "hull";
+    const double tail = kRegionLevel / (2 * d);
+    std::vector<Tails> tails(hull ? 0 : du, Tails(n, tail));
+    Box region(du);
+    if (hull) region.SetEmpty();
     cv::Mat cloud(static_cast<int>(n), d, CV_64F);
-    std::vector<double> cov(static_cast<std::size_t>(d * d), 0.0), dev(static_cast<std::size_t>(d));
+    std::vector<double> cov(du * du, 0.0), dev(du);
     for (std::size_t i = 0; i < n; ++i) {
+      double* state = particles_[i].data();
       double* row = cloud.ptr<double>(static_cast<int>(i));
       for (int c = 0; c < d; ++c) {
-        row[c] = particles_[i][c];
-        dev[c] = row[c] - centre[c];
+        if (period[c] > 0 && std::fabs(state[c] - centre[c]) > period[c] / 2)
+          state[c] -= period[c] * std::round((state[c] - centre[c]) / period[c]);
+        row[c] = state[c];
+        dev[c] = state[c] - centre[c];
       }
       if (w[i] == 0) continue;
-      for (int a = 0; a < d; ++a)
+      for (int a = 0; a < d; ++a) {
         for (int b = a; b < d; ++b) cov[a * d + b] += w[i] * dev[a] * dev[b];
+        if (hull)
+          region[a] = Hull(region[a], Interval(state[a]));
+        else
+          tails[a].Add(state[a], w[i]);
+      }
+    }
+    for (int c = 0; c < d && !hull; ++c) {
+      std::optional<Interval> quantiles = tails[c].Quantiles(1.0);  // w sums to 1
+      if (!quantiles) {
+        std::vector<std::pair<double, double>> pairs;
+        for (std::size_t i = 0; i < n; ++i)
+          if (w[i] > 0) pairs.emplace_back(particles_[i][c], w[i]);
+        const double lo = SelectQuantile(pairs, 1.0, tail);
+        quantiles = Interval(lo, SelectQuantile(pairs, 1.0, 1 - tail));
+      }
+      region[c] = *quantiles;
     }
     for (int c = 0; c < d; ++c)
       properties->push_back({"mean_" + space.names[c], centre[c]});
     for (int a = 0; a < d; ++a)
       for (int b = a; b < d; ++b)
         properties->push_back({"cov_" + space.names[a] + "_" + space.names[b], cov[a * d + b]});
-    Box region(static_cast<std::size_t>(d));
-    if (p_.region == "hull") {
-      region.SetEmpty();
-      for (std::size_t i = 0; i < n; ++i)
-        if (w[i] > 0)
-          for (int c = 0; c < d; ++c) region[c] = Hull(region[c], Interval(particles_[i][c]));
-    } else {
-      const double tail = kRegionLevel / (2 * d);
-      std::vector<std::pair<double, double>> pairs;
-      pairs.reserve(n);
-      for (int c = 0; c < d; ++c) {
-        pairs.clear();
-        double total = 0;
-        for (std::size_t i = 0; i < n; ++i)
-          if (w[i] > 0) {
-            pairs.emplace_back(particles_[i][c], w[i]);
-            total += w[i];
-          }
-        const double lo = SelectQuantile(pairs, total, tail * total);
-        region[c] = Interval(lo, SelectQuantile(pairs, total, (1 - tail) * total));
-      }
-    }
     return std::make_unique<ParticleEstimate>(cloud, w, region, centre);
   }
 
