@@ -7,11 +7,11 @@
 //      seeded engine, so a seed gives the same run);
 //   2. each weight is multiplied by exp(log_likelihood), the likelihoods
 //      computed in parallel (TBB, when they are costly enough to gain from
-//      it) and normalised by log-sum-exp. When every
-//      particle is impossible (all log-weights -inf), the cloud is drawn
-//      anew from sample_global (sample_prior when unset) and weighed again;
-//      if those are all impossible too, they keep equal weights. The step
-//      reports it (`reinitialised`); no weight is ever NaN;
+//      it), the weights normalised by log-sum-exp. When every particle is
+//      impossible (all log-weights -inf), the cloud is drawn anew from
+//      sample_global (sample_prior when unset) and weighed again; if those
+//      are all impossible too, they keep equal weights. The step reports it
+//      (`reinitialised`); no weight is ever NaN;
 //   3. the estimate is made from the weighted cloud (below);
 //   4. if the effective sample size ESS = 1 / sum w_i^2 (normalised
 //      weights) is below resample_threshold * particles, or the threshold is
