@@ -8,6 +8,7 @@
 #include "algorithms/fault/fault.h"
 #include "algorithms/hc3/hc3.h"
 #include "algorithms/hc4/hc4.h"
+#include "algorithms/particle_filter/particle_filter.h"
 #include "algorithms/polynomial/polynomial.h"
 #include "algorithms/q_relaxed/q_relaxed.h"
 #include "algorithms/test_estimators/test_estimators.h"
@@ -45,6 +46,9 @@ std::vector<AlgorithmInfo>& Table() {
       {"accumulator", "grid accumulator of the measurements (OpenCV, TBB); cells with the highest count",
        &MakeAccumulator, &DefaultParams<AccumulatorParams>, &ResolveParams<AccumulatorParams>,
        View::kMeasurementSet, {"accumulator", 120, "#e83e8c"}},
+      {"particle-filter", "particle filter (SIR): systematic resampling, random particles injected, thesis 003 §6.7",
+       &MakeParticleFilter, &DefaultParams<ParticleFilterParams>, &ResolveParams<ParticleFilterParams>,
+       View::kProbabilistic, {"particle filter", 200, "#8c6d31"}},
       {"fault", "not an algorithm: injects a crash, hang, exception or bad box (harness tests)",
        &MakeFault, &DefaultParams<FaultParams>, &ResolveParams<FaultParams>, View::kCsp,
        {"fault", 900, "#7f7f7f"}, nullptr, true},

@@ -148,7 +148,17 @@ ParticleEstimate::ParticleEstimate(cv::Mat particles, std::vector<double> weight
     throw std::invalid_argument("ParticleEstimate: one CV_64F row and one weight per particle");
 }
 
-Box ParticleEstimate::Hull() const {
+ParticleEstimate::ParticleEstimate(cv::Mat particles, std::vector<double> weights, Box region,
+                                   std::vector<double> centre)
+    : ParticleEstimate(std::move(particles), std::move(weights)) {
+  const auto components = static_cast<std::size_t>(particles_.cols);
+  if (region.size() != components || (!centre.empty() && centre.size() != components))
+    throw std::invalid_argument("ParticleEstimate: the region and the centre need one entry per component");
+  region_ = std::move(region);
+  centre_ = std::move(centre);
+}
+
+Box ParticleEstimate::ParticleHull() const {
   Box hull(static_cast<std::size_t>(particles_.cols));
   hull.SetEmpty();
   for (int i = 0; i < particles_.rows; ++i) {
@@ -159,9 +169,12 @@ Box ParticleEstimate::Hull() const {
   return hull;
 }
 
+Box ParticleEstimate::Hull() const { return region_ ? *region_ : ParticleHull(); }
+
 double ParticleEstimate::Area(int x, int y) const { return BoxArea(Hull(), x, y); }
 
 std::vector<double> ParticleEstimate::Centre() const {
+  if (!centre_.empty()) return Hull().IsEmpty() ? std::vector<double>() : centre_;
   double total = 0;
   std::vector<double> centre(static_cast<std::size_t>(particles_.cols), 0.0);
   for (int i = 0; i < particles_.rows; ++i) {

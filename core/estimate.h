@@ -132,15 +132,23 @@ class AccumulatorEstimate : public Estimate {
   int threshold_;
 };
 
-// Weighted particles (a particle filter's posterior). As a set it is the box
-// hull of the particles with positive weight (a cloud encloses nothing, so
-// the consistency criterion asks whether the truth is in that hull); the
-// centre is the weighted mean.
+// Weighted particles (a particle filter's posterior). As a set it is the
+// region box when one is given (a filter's credible region, see
+// algorithms/particle_filter/particle_filter.h), else the box hull of the
+// particles with positive weight (a cloud encloses nothing, so the
+// consistency criterion asks whether the truth is in that box); the centre
+// is the given one (a filter's mean, circular for periodic components), else
+// the weighted mean.
 class ParticleEstimate : public Estimate {
  public:
   // particles: one row per particle, one column per component (CV_64F);
   // weights: one per particle, not necessarily normalised.
   ParticleEstimate(cv::Mat particles, std::vector<double> weights);
+  // With the region that stands for the set (one interval per component, or
+  // an empty box) and the centre (one value per component, or empty for the
+  // weighted mean). Throws std::invalid_argument on a size mismatch.
+  ParticleEstimate(cv::Mat particles, std::vector<double> weights, Box region,
+                   std::vector<double> centre);
   std::string_view Kind() const override { return "particles"; }
   Box Hull() const override;
   bool Contains(const std::vector<double>& point) const override { return Hull().Contains(point); }
@@ -148,10 +156,16 @@ class ParticleEstimate : public Estimate {
   std::vector<double> Centre() const override;
   // particles and effective_sample_size (1 / sum of squared normalised weights).
   Properties Extras() const override;
+  const cv::Mat& particles() const { return particles_; }
+  const std::vector<double>& weights() const { return weights_; }
+  // The box hull of the particles with positive weight, whatever the region.
+  Box ParticleHull() const;
 
  private:
   cv::Mat particles_;
   std::vector<double> weights_;
+  std::optional<Box> region_;
+  std::vector<double> centre_;
 };
 
 // x-y area of a box, rounded up; 0 when empty.

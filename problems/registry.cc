@@ -15,7 +15,8 @@ namespace {
 std::vector<ProblemInfo>& Table() {
   static std::vector<ProblemInfo> table = {
       {"car-track", "a simulated lap (or a CSV log) of the car-track CSP, paper 000 eq. 9-14, window w",
-       &MakeCarTrack, &DefaultParams<CarTrackParams>, &ResolveCarTrack, {View::kCsp}},
+       &MakeCarTrack, &DefaultParams<CarTrackParams>, &ResolveCarTrack,
+       {View::kCsp, View::kProbabilistic}},
       {"chain", "car-track-shaped window CSP (paper 000 eq. 14) with a simulated truth",
        &MakeChain, &DefaultParams<ChainParams>, &ResolveParams<ChainParams>, {View::kCsp}},
       {"minibex-file", "one CSP read from a Minibex file (IBEX benchmark syntax)",
@@ -26,7 +27,7 @@ std::vector<ProblemInfo>& Table() {
        {View::kCsp, View::kMeasurementSet}},
       {"beacon-ranges", "ranges to known beacons, some outliers, paper 003 §5.2.3 (eq. 5.39, Figs. 5.5-5.7)",
        &MakeBeaconRanges, &DefaultParams<BeaconRangesParams>, &ResolveBeaconRanges,
-       {View::kCsp, View::kMeasurementSet}},
+       {View::kCsp, View::kMeasurementSet, View::kProbabilistic}},
       {"marina-sonar", "an AUV in a marina with DVL, compass and a sector-scan sonar on a binary map, paper 003 ch. 6 (eq. 6.8)",
        &MakeMarinaSonar, &DefaultParams<MarinaSonarParams>, &ResolveMarinaSonar,
        {View::kCsp, View::kMeasurementSet, View::kProbabilistic}},

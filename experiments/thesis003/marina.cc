@@ -28,7 +28,7 @@ bool HasMarinaRun(const GroupSummary& g) {
 // filter's reinitialisations; nullopt when the estimator reports neither.
 std::optional<double> Restarts(const RunRecord& r) {
   if (auto n = NumberProperty(r.properties, "resets")) return n;
-  return NumberProperty(r.properties, "reinitialised");
+  return NumberProperty(r.properties, "reinitialisations");
 }
 
 std::string Cell(double v) { return std::isnan(v) ? kDash : FormatNumber(v); }

@@ -8,7 +8,7 @@
 //   pooled over its ok runs (every seed): the share of steps whose estimate
 //   holds the truth, the centre error (RMSE and median), the restarts per
 //   run (the relaxed solvers' static recovery, run property `resets`; the
-//   filter's reinitialisations, `reinitialised`), and the time per step and
+//   filter's reinitialisations, `reinitialisations`), and the time per step and
 //   per run, beside the thesis' 1 h 10 min (C/C++) and 31 min (Matlab, 600
 //   particles) for its 600 m run;
 //

@@ -67,7 +67,7 @@ TEST(MarinaTableTest, PoolsSeedsAndReportsErrorsRestartsAndTimes) {
                 {{"resets", std::int64_t{1}}}),
       MarinaRun("q-relaxed", "known", 2, {MarinaStep(0, 1, 0.03)}, {{"resets", std::int64_t{3}}}),
       MarinaRun("particle-filter", "known", 1, {MarinaStep(0, 3, 0.002, "particles")},
-                {{"reinitialised", std::int64_t{0}}}),
+                {{"reinitialisations", std::int64_t{0}}}),
       // Not of the marina experiments: left out.
       MarinaRun("hc4", "known", 1, {MarinaStep(0, 0, 1)}, {}, "table1"),
   };

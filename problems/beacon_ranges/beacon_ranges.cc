@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -128,9 +129,45 @@ BeaconScene ReadBeaconScene(const std::string& path) {
   return scene;
 }
 
+double OutlierShare(const BeaconRangesParams& p) {
+  return std::clamp(static_cast<double>(p.outliers) / p.beacons, kMinOutlierShare, kMaxOutlierShare);
+}
+
+double RangeLogLikelihood(const std::vector<RangeMeasurement>& ranges, const Box& box,
+                          double outlier_share, const std::vector<double>& state) {
+  if (state.size() != 2 || !box.Contains(state)) return -std::numeric_limits<double>::infinity();
+  const double floor = outlier_share / std::hypot(box[0].Width(), box[1].Width());
+  const double inlier = (1 - outlier_share) / std::sqrt(2 * std::numbers::pi);
+  double sum = 0;
+  for (const RangeMeasurement& r : ranges) {
+    const double z = (std::hypot(state[0] - r.beacon_x, state[1] - r.beacon_y) - r.range) / r.error;
+    sum += std::log(inlier / r.error * std::exp(-z * z / 2) + floor);
+  }
+  return sum;
+}
+
 namespace {
+std::vector<double> UniformIn(const Box& box, RandomEngine& rng) {
+  const double x = UniformReal(rng, box[0].lo(), box[0].hi());
+  return {x, UniformReal(rng, box[1].lo(), box[1].hi())};
+}
+
+// The probabilistic view of one step's ranges (the header): the search box
+// as prior and global prior, no motion, the mixture likelihood.
+ProbabilisticView RangeProbabilisticView(const Box& box, const std::vector<RangeMeasurement>& ranges,
+                                         double outlier_share) {
+  ProbabilisticView view;
+  view.sample_prior = [box](RandomEngine& rng) { return UniformIn(box, rng); };
+  view.sample_global = view.sample_prior;
+  view.sample_motion = [](std::vector<double>&, RandomEngine&) {};
+  view.log_likelihood = [box, ranges, outlier_share](const std::vector<double>& state) {
+    return RangeLogLikelihood(ranges, box, outlier_share, state);
+  };
+  return view;
+}
+
 Step RangeStep(int time, const Box& box, const std::vector<double>& truth,
-               const std::vector<RangeMeasurement>& ranges) {
+               const std::vector<RangeMeasurement>& ranges, double outlier_share) {
   ConstraintSystem csp;
   Expr x = csp.AddVariable("x", box[0]);
   Expr y = csp.AddVariable("y", box[1]);
@@ -145,7 +182,9 @@ Step RangeStep(int time, const Box& box, const std::vector<double>& truth,
     several_sources = several_sources || r.source != 0;
   }
   if (!several_sources) sources.clear();
-  return MakePlanarStep(time, csp, truth, std::move(outliers), std::move(sources));
+  Step step = MakePlanarStep(time, csp, truth, std::move(outliers), std::move(sources));
+  step.views.probabilistic = RangeProbabilisticView(box, ranges, outlier_share);
+  return step;
 }
 
 // A reading of the distance from p to beacon b: within ±e/2 of the truth
@@ -193,8 +232,20 @@ class SimulatedProblem : public Problem {
     std::vector<RangeMeasurement> ranges;
     for (int i = 0; i < params_.beacons; ++i)
       ranges.push_back(Measure(truth, beacons_[i], outliers[i], params_, rng_));
-    *step = RangeStep(time_, SearchBox(params_.radius), truth, ranges);
-    if (moving_ && time_ > 0) step->views.measurement_set->predict = Odometry(truth);
+    *step = RangeStep(time_, SearchBox(params_.radius), truth, ranges, OutlierShare(params_));
+    if (moving_ && time_ > 0) {
+      const Box move = Odometry(truth);
+      step->views.measurement_set->predict = [move](const Box& previous) {
+        if (previous.size() != 2)
+          throw std::invalid_argument("beacon-ranges predict: the box must be (x, y)");
+        return Box({previous[0] + move[0], previous[1] + move[1]});
+      };
+      step->views.probabilistic->sample_motion = [move](std::vector<double>& s, RandomEngine& rng) {
+        const double dx = UniformReal(rng, move[0].lo(), move[0].hi());
+        s[0] += dx;
+        s[1] += UniformReal(rng, move[1].lo(), move[1].hi());
+      };
+    }
     previous_ = truth;
     ++time_;
     return true;
@@ -208,22 +259,18 @@ class SimulatedProblem : public Problem {
     return {rc * std::cos(angle), rc * std::sin(angle)};
   }
 
-  // The motion model from previous_ to truth: the odometry reads the true
+  // The motion from previous_ to truth: the odometry reads the true
   // displacement with noise within ±odometry_error/2, and bounds it by the
-  // reading ± odometry_error, so the true position is always inside
-  // predict(a box holding the previous one).
-  std::function<Box(const Box&)> Odometry(const std::vector<double>& truth) {
+  // reading ± odometry_error (the displacement box returned), so the true
+  // position is always inside predict(a box holding the previous one).
+  Box Odometry(const std::vector<double>& truth) {
     const double e = params_.odometry_error;
     Box move;
     for (int c = 0; c < 2; ++c) {
       const double reading = truth[c] - previous_[c] + UniformReal(rng_, -e / 2, e / 2);
       move.push_back(Interval(reading) + Interval(-e, e));
     }
-    return [move](const Box& previous) {
-      if (previous.size() != 2)
-        throw std::invalid_argument("beacon-ranges predict: the box must be (x, y)");
-      return Box({previous[0] + move[0], previous[1] + move[1]});
-    };
+    return move;
   }
 
   BeaconRangesParams params_;
@@ -240,8 +287,8 @@ std::unique_ptr<Problem> MakeBeaconRanges(const ParamMap& params, std::uint64_t 
   const BeaconRangesParams p = ParseBeaconRanges("beacon-ranges", params);
   if (p.scenario == "two-robots")
     return std::make_unique<SingleStepProblem>(
-        "beacon-ranges", [scene = ReadBeaconScene(TwoRobotsScenePath())] {
-          return RangeStep(0, scene.box, scene.truth, scene.ranges);
+        "beacon-ranges", [scene = ReadBeaconScene(TwoRobotsScenePath()), share = OutlierShare(p)] {
+          return RangeStep(0, scene.box, scene.truth, scene.ranges, share);
         });
   return std::make_unique<SimulatedProblem>(p, seed);
 }

@@ -19,9 +19,24 @@
 //     radius/2 at speed 1 per step; each step it ranges the same `beacons`
 //     beacons with `outliers` outliers drawn anew, and odometry bounds its
 //     displacement (the measurement-set view's predict).
-// Every step offers the measurement-set view (one contractor per range) and
-// the CSP view (that step's ranges alone; empty for ICP once an outlier is
-// in).
+// Every step offers the measurement-set view (one contractor per range), the
+// CSP view (that step's ranges alone; empty for ICP once an outlier is in)
+// and the probabilistic view (for the particle filter), which draws only
+// from the filter's own random engine:
+//   - sample_prior and sample_global: uniform in the search box;
+//   - sample_motion: the identity, except in the moving scenario after step
+//     0, where the displacement is drawn uniformly within the odometry box
+//     (reading ± odometry_error on each component, the box predict uses);
+//   - log_likelihood: RangeLogLikelihood below, -inf outside the search box.
+// The ranges' likelihood is a mixture per range, the share of outliers
+// epsilon = outliers / beacons (within [0.05, 0.95]; the two-robots scene
+// uses the parameters' too) as a floor uniform over [0, the box's diagonal]
+// (an outlier may be anywhere), and 1 - epsilon as a Gaussian of sigma = e
+// about the reading: the inliers' error is uniform within ±e/2 (sigma
+// e / (2 sqrt 3)), so this sigma is three times wider than theirs, which
+// lets a few hundred particles spread over the box find the rings at the
+// first steps; a hard bound at ±e would give every particle not within e of
+// a ring the floor alone.
 #ifndef ICPBENCH_PROBLEMS_BEACON_RANGES_BEACON_RANGES_H_
 #define ICPBENCH_PROBLEMS_BEACON_RANGES_BEACON_RANGES_H_
 
@@ -75,6 +90,17 @@ struct RangeMeasurement {
 // The bounds of sqr(x - bx) + sqr(y - by) for a reading: [max(0, d - e)^2,
 // (d + e)^2], rounded outward.
 Interval SquaredRangeBounds(double range, double error);
+
+// The mixture's floor share (above): its least and greatest value.
+constexpr double kMinOutlierShare = 0.05;
+constexpr double kMaxOutlierShare = 0.95;
+// The share of outlier ranges p declares, outliers / beacons, within them.
+double OutlierShare(const BeaconRangesParams& p);
+// The log-likelihood of ranges at state (x, y): -inf outside box, else the
+// sum over the ranges of log((1 - outlier_share) N(d; |state - beacon|, e)
+// + outlier_share / diagonal(box)), d the reading and e its half-width.
+double RangeLogLikelihood(const std::vector<RangeMeasurement>& ranges, const Box& box,
+                          double outlier_share, const std::vector<double>& state);
 
 // A fixed scene: search box, true position and ranges.
 struct BeaconScene {

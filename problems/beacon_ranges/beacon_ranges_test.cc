@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -244,6 +245,73 @@ TEST(BeaconRangesTest, BadSceneFilesFailWithTheirLine) {
     EXPECT_NE(std::string(e.what()).find("bad_scene.csv:3:"), std::string::npos) << e.what();
   }
   EXPECT_THROW(ReadBeaconScene(testing::TempDir() + "/no_such_scene.csv"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace icp
+
+namespace icp {
+namespace {
+
+// The mixture likelihood prefers the truth to states far from it, even
+// with outliers among the ranges; outside the search box nothing is
+// possible.
+TEST(BeaconRangesTest, ProbabilisticLikelihoodPrefersTheTruth) {
+  for (const char* scenario : {"two-robots", "random", "moving"}) {
+    SCOPED_TRACE(scenario);
+    std::vector<Step> steps = AllSteps(*Make({{"scenario", scenario}, {"steps", "20"}}, 6));
+    for (const Step& step : steps) {
+      ASSERT_TRUE(step.views.Offers(View::kProbabilistic));
+      const ProbabilisticView& view = *step.views.probabilistic;
+      const double truth = view.log_likelihood(step.truth);
+      EXPECT_TRUE(std::isfinite(truth));
+      for (double dx : {-3.0, 3.0})
+        for (double dy : {-3.0, 0.0, 3.0}) {
+          const std::vector<double> far = {step.truth[0] + dx, step.truth[1] + dy};
+          EXPECT_GT(truth, view.log_likelihood(far)) << dx << " " << dy;
+        }
+      EXPECT_EQ(view.log_likelihood({1e6, 0}), -std::numeric_limits<double>::infinity());
+      RandomEngine rng(1);
+      for (int i = 0; i < 20; ++i) {
+        EXPECT_TRUE(std::isfinite(view.log_likelihood(view.sample_prior(rng))));
+        EXPECT_TRUE(std::isfinite(view.log_likelihood(view.sample_global(rng))));
+      }
+    }
+  }
+}
+
+TEST(BeaconRangesTest, ProbabilisticMotionIsTheOdometryAndDrawsNothingOfTheProblem) {
+  const ParamMap params = {{"scenario", "moving"}, {"steps", "30"}};
+  auto a = Make(params, 8), b = Make(params, 8);
+  RandomEngine rng(2);
+  const double e = BeaconRangesParams().odometry_error;
+  Step sa, sb;
+  std::vector<double> previous;
+  while (a->Next(&sa)) {
+    ASSERT_TRUE(b->Next(&sb));
+    SCOPED_TRACE("step " + std::to_string(sa.views.step));
+    const ProbabilisticView& view = *sa.views.probabilistic;
+    std::vector<double> moved = sa.views.step == 0 ? sa.truth : previous;
+    view.sample_motion(moved, rng);
+    if (sa.views.step == 0) {
+      EXPECT_EQ(moved, sa.truth);
+    } else {
+      // Drawn within the reading ± e, the reading within e/2 of the truth.
+      EXPECT_LE(std::fabs(moved[0] - sa.truth[0]), 1.5 * e + 1e-12);
+      EXPECT_LE(std::fabs(moved[1] - sa.truth[1]), 1.5 * e + 1e-12);
+      EXPECT_TRUE(sa.views.measurement_set->predict(Box({Interval(previous[0]), Interval(previous[1])}))
+                      .Contains(moved));
+    }
+    view.log_likelihood(moved);
+    view.sample_global(rng);
+    previous = sa.truth;
+    EXPECT_EQ(sa.truth, sb.truth);
+    const ConstraintSystem& ca = sa.views.csp->csp;
+    const ConstraintSystem& cb = sb.views.csp->csp;
+    ASSERT_EQ(ca.constraints().size(), cb.constraints().size());
+    for (int i = 0; i < static_cast<int>(ca.constraints().size()); ++i)
+      EXPECT_EQ(ca.ConstraintToString(i), cb.ConstraintToString(i));
+  }
 }
 
 }  // namespace

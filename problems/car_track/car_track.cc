@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <ostream>
 #include <sstream>
@@ -219,7 +220,62 @@ CarTrackProblem::CarTrackProblem(const CarTrackParams& params, std::vector<CarTr
       throw ParamError("car-track.heading_known = true: the first row of the log has no truth");
     heading0_ = Around(records_[0].truth_theta, kHeadingKnownError);
   }
+  prior_ = Box({Interval(), Interval(), heading0_});
+  Interval reach(0);  // how far the car may have driven since step 0
+  for (std::size_t j = 0; j < measurements_.size(); ++j) {
+    const CarTrackMeasurement& m = measurements_[j];
+    if (j > 0) reach = reach + Interval(0, std::max(0.0, std::max(m.ds.hi(), -m.ds.lo())));
+    if (m.x.IsBounded() && m.y.IsBounded()) {
+      const Interval spread(-reach.hi(), reach.hi());
+      prior_[0] = m.x + spread;
+      prior_[1] = m.y + spread;
+      break;
+    }
+  }
 }
+
+namespace {
+
+double Uniform(RandomEngine& rng, const Interval& x) { return UniformReal(rng, x.lo(), x.hi()); }
+
+// The probabilistic view of a step with measurement m (header comment):
+// prior, the box of state 0; first, whether this is step 0.
+ProbabilisticView CarProbabilisticView(const CarTrackMeasurement& m, const Box& prior, bool first) {
+  ProbabilisticView view;
+  view.sample_prior = [prior](RandomEngine& rng) {
+    if (!prior[0].IsBounded() || !prior[1].IsBounded())
+      throw std::invalid_argument("car-track: no GPS fix in the drive to draw the first state from");
+    const double x = Uniform(rng, prior[0]);
+    const double y = Uniform(rng, prior[1]);
+    return std::vector<double>{x, y, Uniform(rng, prior[2])};
+  };
+  if (first) {
+    view.sample_motion = [](std::vector<double>&, RandomEngine&) {};
+  } else {
+    view.sample_motion = [ds = m.ds, dth = m.dth](std::vector<double>& s, RandomEngine& rng) {
+      const double d = Uniform(rng, ds);
+      const double turn = Uniform(rng, dth);
+      const double heading = s[2] + turn / 2;  // eq. 12
+      s[0] += d * std::cos(heading);
+      s[1] += d * std::sin(heading);
+      s[2] += turn;
+    };
+  }
+  const bool fix = m.x.IsBounded() && m.y.IsBounded();
+  view.log_likelihood = [fix, x = m.x, y = m.y](const std::vector<double>& s) {
+    if (!fix || (x.Contains(s[0]) && y.Contains(s[1]))) return 0.0;
+    return -std::numeric_limits<double>::infinity();
+  };
+  if (fix)
+    view.sample_global = [x = m.x, y = m.y](RandomEngine& rng) {
+      const double gx = Uniform(rng, x);
+      const double gy = Uniform(rng, y);
+      return std::vector<double>{gx, gy, UniformReal(rng, -kPi, kPi)};
+    };
+  return view;
+}
+
+}  // namespace
 
 bool CarTrackProblem::Next(Step* step) {
   if (k_ >= num_steps_) return false;
@@ -238,6 +294,7 @@ bool CarTrackProblem::Next(Step* step) {
   step->views.step = k;
   step->views.space = CarStateSpace();
   step->views.csp = BuildCarWindow(oldest, states);
+  step->views.probabilistic = CarProbabilisticView(measurements_[k], prior_, k == 0);
   const CarTrackRecord& newest = records_[k];
   if (newest.has_truth) step->truth = {newest.truth_x, newest.truth_y, newest.truth_theta};
   if (!truth_known) return true;

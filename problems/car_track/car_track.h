@@ -27,6 +27,27 @@
 // true ds and dth, so the truth satisfies every constraint and a sound
 // algorithm never loses it.
 //
+// Every step also offers the probabilistic view (for the particle filter),
+// built from the same measurement intervals and drawing only from the
+// filter's own random engine (the simulated drive is never redrawn):
+//   - sample_prior: the state of step 0, x and y uniform in its GPS box, th
+//     uniform in th[0]'s domain ([-pi, pi], or the true heading ± 0.1 rad
+//     with heading_known). Without a fix at step 0, x and y are uniform in
+//     the first fix's box widened by the largest distance driven until it
+//     (a box sure to hold state 0); with no fix at all it throws
+//     std::invalid_argument.
+//   - sample_motion: eq. 12 with ds and dth drawn uniformly within the step's
+//     intervals [ds_k] and [dth_k] (the bounded-error motion the CSP states;
+//     the identity at step 0). The heading is not wrapped.
+//   - log_likelihood: the GPS fix as a bounded-error measurement, uniform
+//     inside its box: 0 inside [x] x [y], -inf outside; 0 for every state
+//     without a fix. The simulator's GPS error is itself uniform (within 0.9
+//     of the half-width), so this is its exact model up to the 0.9; and a
+//     positive weight only inside the box keeps a filter's estimate inside
+//     the step's domains, which the harness checks of every estimate.
+//   - sample_global: x and y uniform in the step's GPS box, th uniform in
+//     [-pi, pi]; unset without a fix.
+//
 // The simulator can be replaced by a recorded drive: a CSV log whose format
 // is documented at ReadCarTrackLog and in problems/car_track/README.md.
 #ifndef ICPBENCH_PROBLEMS_CAR_TRACK_CAR_TRACK_H_
@@ -38,6 +59,7 @@
 #include <string>
 #include <vector>
 
+#include "core/box.h"
 #include "core/interval.h"
 #include "core/params.h"
 #include "problems/problem.h"
@@ -161,6 +183,7 @@ class CarTrackProblem : public Problem {
   std::vector<CarTrackRecord> records_;
   std::vector<CarTrackMeasurement> measurements_;
   Interval heading0_;
+  Box prior_;  // where state 0 lies: x, y (see above) and th = heading0_
   int num_steps_;
   int k_ = 0;  // the next step
 };

@@ -509,7 +509,7 @@ TEST(CarTrackTest, RegistryRejectsBadParameters) {
   const std::string device = ErrorOf([&] { info.resolve("car-track", {{"log", "/dev/zero"}}); });
   EXPECT_NE(device.find("/dev/zero: is not a regular file"), std::string::npos) << device;
   EXPECT_EQ(info.make({{"steps", "30"}}, 1)->NumSteps(), 30);
-  EXPECT_EQ(info.offers, std::vector<View>{View::kCsp});
+  EXPECT_EQ(info.offers, (std::vector<View>{View::kCsp, View::kProbabilistic}));
   // The run key holds every effective parameter, in canonical spelling.
   const ParamMap resolved = info.resolve("car-track", {{"gps_error", "2.50"}, {"w", "020"}});
   EXPECT_EQ(resolved.at("w"), "20");
@@ -521,6 +521,99 @@ TEST(CarTrackTest, RegistryRejectsBadParameters) {
   std::vector<CarTrackRecord> records = SimulateCarTrack(p, 1);
   records[0].has_truth = false;
   EXPECT_THROW(CarTrackProblem(p, records), ParamError);
+}
+
+}  // namespace
+}  // namespace icp
+
+namespace icp {
+namespace {
+
+// The probabilistic view (header comment): a prior in the first GPS box,
+// motion within the step's intervals, the GPS box as the likelihood's
+// support, the global prior in the step's box.
+TEST(CarTrackTest, ProbabilisticViewFollowsTheMeasurements) {
+  const CarTrackParams defaults;
+  const double e = defaults.gps_error;
+  auto problem = Make({{"steps", "200"}, {"outage_start", "100"}, {"outage_length", "20"}}, 3);
+  RandomEngine rng(1);
+  Step step;
+  std::vector<double> previous;
+  while (problem->Next(&step)) {
+    SCOPED_TRACE("step " + std::to_string(step.views.step));
+    ASSERT_TRUE(step.views.Offers(View::kProbabilistic));
+    const ProbabilisticView& view = *step.views.probabilistic;
+    const std::vector<double>& truth = step.truth;
+    const bool fix = step.views.step < 100 || step.views.step >= 120;
+    EXPECT_EQ(view.log_likelihood(truth), 0.0);
+    const std::vector<double> far = {truth[0] + 2.2 * e, truth[1], truth[2]};
+    EXPECT_EQ(view.log_likelihood(far), fix ? -std::numeric_limits<double>::infinity() : 0.0);
+    EXPECT_EQ(static_cast<bool>(view.sample_global), fix);
+    if (fix) {
+      const std::vector<double> g = view.sample_global(rng);
+      ASSERT_EQ(g.size(), 3u);
+      EXPECT_EQ(view.log_likelihood(g), 0.0);
+      EXPECT_LE(std::fabs(g[2]), kPi);
+    }
+    if (step.views.step == 0) {
+      for (int i = 0; i < 100; ++i) {
+        const std::vector<double> s = view.sample_prior(rng);
+        EXPECT_EQ(view.log_likelihood(s), 0.0);
+        EXPECT_LE(std::fabs(s[2]), kPi + 1e-12);
+      }
+      std::vector<double> same = truth;
+      view.sample_motion(same, rng);
+      EXPECT_EQ(same, truth);
+    } else {
+      // The previous truth moved by a draw lands near this one: ds and dth
+      // are drawn within intervals a few centimetres and milliradians wide.
+      std::vector<double> moved = previous;
+      view.sample_motion(moved, rng);
+      EXPECT_LT(std::hypot(moved[0] - truth[0], moved[1] - truth[1]), 0.1);
+      EXPECT_LT(std::fabs(moved[2] - truth[2]), 2.1 * defaults.gyro_error);
+    }
+    previous = truth;
+  }
+}
+
+TEST(CarTrackTest, ProbabilisticPriorWithoutAFixAtTheStartHoldsTheStart) {
+  // No fix for the first 10 steps: the first fix's box widened by the
+  // distance driven until it.
+  auto problem = Make({{"steps", "12"}, {"outage_start", "0"}, {"outage_length", "10"},
+                       {"heading_known", "true"}},
+                      4);
+  Step step;
+  ASSERT_TRUE(problem->Next(&step));
+  RandomEngine rng(2);
+  Box drawn(3);
+  drawn.SetEmpty();
+  for (int i = 0; i < 5000; ++i) {
+    const std::vector<double> s = step.views.probabilistic->sample_prior(rng);
+    for (int c = 0; c < 3; ++c) drawn[c] = Hull(drawn[c], Interval(s[c]));
+  }
+  EXPECT_TRUE(drawn.Contains(step.truth));
+  EXPECT_LT(drawn[0].Width(), 2 * (10 * 13.9 * 1.06 / 5 + 2.5));
+  EXPECT_LE(drawn[2].Width(), 0.2);  // heading_known: the truth ± 0.1
+  // No fix at all: the prior cannot be drawn.
+  auto blind = Make({{"steps", "5"}, {"outage_start", "0"}, {"outage_length", "5"}}, 4);
+  ASSERT_TRUE(blind->Next(&step));
+  EXPECT_THROW(step.views.probabilistic->sample_prior(rng), std::invalid_argument);
+}
+
+TEST(CarTrackTest, ProbabilisticViewDrawsNothingOfTheDrive) {
+  auto a = Make({{"steps", "30"}, {"w", "4"}}, 9);
+  auto b = Make({{"steps", "30"}, {"w", "4"}}, 9);
+  RandomEngine rng(3);
+  Step sa, sb;
+  while (a->Next(&sa)) {
+    ASSERT_TRUE(b->Next(&sb));
+    std::vector<double> s = sa.views.probabilistic->sample_prior(rng);
+    sa.views.probabilistic->sample_motion(s, rng);
+    sa.views.probabilistic->log_likelihood(s);
+    if (sa.views.probabilistic->sample_global) sa.views.probabilistic->sample_global(rng);
+    EXPECT_EQ(sa.truth, sb.truth);
+    EXPECT_EQ(Csp(sa).domains(), Csp(sb).domains());
+  }
 }
 
 }  // namespace

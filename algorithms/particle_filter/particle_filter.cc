@@ -1,0 +1,470 @@
+#include "algorithms/particle_filter/particle_filter.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <stdexcept>
+#include <utility>
+
+#include <opencv2/core.hpp>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+namespace icp {
+
+void Describe(ParticleFilterParams& p, ParamSet& set) {
+  set.Add("particles", &p.particles, "number of particles", Range::Closed(1, 10000000));
+  set.Add("resampling", &p.resampling, "resampling scheme", {"systematic", "multinomial"});
+  set.Add("resample_threshold", &p.resample_threshold,
+          "resample when ESS < this fraction of the particles (1: every step, 0: never)",
+          Range::Closed(0, 1));
+  set.Add("inject", &p.inject,
+          "share of particles replaced by global-prior draws at each resampling (0: none)",
+          Range::Closed(0, 0.5));
+  set.Add("region", &p.region,
+          "the set's box: 95 (holds >= 95 % of the weight) or hull (every particle)",
+          {"95", "hull"});
+}
+
+namespace {
+
+// Weighing in parallel: the particles timed first, the serial time of the
+// others above which they are spread over threads (waking TBB's threads
+// costs tens of microseconds), and the particles per task.
+constexpr std::size_t kProbe = 32;
+constexpr double kParallelAbove_s = 100e-6;
+constexpr std::size_t kGrain = 64;
+// 1 - the weight the "95" region holds at least.
+constexpr double kRegionLevel = 0.05;
+
+// The weights normalised to sum 1; throws unless they are finite,
+// non-negative and not all 0.
+std::vector<double> Normalised(const std::vector<double>& weights) {
+  double total = 0;
+  for (double w : weights) {
+    if (!(w >= 0) || !std::isfinite(w))
+      throw std::invalid_argument("resampling: weights must be finite and >= 0");
+    total += w;
+  }
+  if (!(total > 0)) throw std::invalid_argument("resampling: the weights sum to 0");
+  std::vector<double> out(weights.size());
+  for (std::size_t i = 0; i < weights.size(); ++i) out[i] = weights[i] / total;
+  return out;
+}
+
+// The last index of positive weight: where positions past the cumulative
+// sum's rounding go.
+std::size_t LastPositive(const std::vector<double>& w) {
+  std::size_t last = 0;
+  for (std::size_t i = 0; i < w.size(); ++i)
+    if (w[i] > 0) last = i;
+  return last;
+}
+
+}  // namespace
+
+std::vector<std::size_t> SystematicResample(const std::vector<double>& weights, std::size_t n,
+                                            double u) {
+  if (!(u >= 0 && u < 1)) throw std::invalid_argument("systematic resampling: u must be in [0, 1)");
+  const std::vector<double> w = Normalised(weights);
+  const std::size_t last = LastPositive(w);
+  std::vector<std::size_t> out;
+  out.reserve(n);
+  std::size_t j = 0;
+  double cumulative = w[0];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double position = (u + static_cast<double>(i)) / static_cast<double>(n);
+    while (position >= cumulative && j < last) cumulative += w[++j];
+    out.push_back(j);
+  }
+  return out;
+}
+
+std::vector<std::size_t> MultinomialResample(const std::vector<double>& weights, std::size_t n,
+                                             RandomEngine& rng) {
+  const std::vector<double> w = Normalised(weights);
+  std::vector<double> cumulative(w.size());
+  std::partial_sum(w.begin(), w.end(), cumulative.begin());
+  const std::size_t last = LastPositive(w);
+  std::vector<std::size_t> out;
+  out.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double u = UniformReal(rng, 0, 1);
+    const auto it = std::upper_bound(cumulative.begin(), cumulative.end(), u);
+    out.push_back(std::min(static_cast<std::size_t>(it - cumulative.begin()), last));
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+double WeightedQuantile(const std::vector<double>& values, const std::vector<double>& weights,
+                        double q) {
+  if (values.size() != weights.size())
+    throw std::invalid_argument("WeightedQuantile: one weight per value");
+  std::vector<std::size_t> order;
+  double total = 0;
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (weights[i] > 0) {
+      order.push_back(i);
+      total += weights[i];
+    }
+  if (order.empty()) throw std::invalid_argument("WeightedQuantile: no positive weight");
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return values[a] < values[b]; });
+  double cumulative = 0;
+  for (std::size_t i : order) {
+    cumulative += weights[i];
+    if (cumulative > q * total) return values[i];
+  }
+  return values[order.back()];
+}
+
+namespace {
+
+using State = std::vector<double>;
+
+// WeightedQuantile of (value, weight) pairs, the weights positive and
+// summing to total, at the weight `target` (q times total) by selection
+// rather than sorting: each round splits at the place where the target would
+// fall if the weights were equal, so equal weights need one or two rounds
+// and any weights an expected linear time. Reorders pairs.
+double SelectQuantile(std::vector<std::pair<double, double>>& pairs, double total, double target) {
+  auto by_value = [](const auto& a, const auto& b) { return a.first < b.first; };
+  std::size_t lo = 0, hi = pairs.size();
+  double below = 0;         // the weight of the pairs ordered before lo
+  double inside = total;    // the weight of those in [lo, hi)
+  while (hi - lo > 16) {
+    const double guess = (target - below) / inside * static_cast<double>(hi - lo);
+    const std::size_t mid =
+        lo + std::min(hi - lo - 1, static_cast<std::size_t>(std::clamp(guess, 0.0, 1e18)));
+    std::nth_element(pairs.begin() + lo, pairs.begin() + mid, pairs.begin() + hi, by_value);
+    double left = 0;
+    for (std::size_t i = lo; i < mid; ++i) left += pairs[i].second;
+    if (below + left > target) {
+      hi = mid;
+      inside = left;
+    } else if (below + left + pairs[mid].second > target) {
+      return pairs[mid].first;
+    } else {
+      below += left + pairs[mid].second;
+      inside -= left + pairs[mid].second;
+      lo = mid + 1;
+    }
+  }
+  std::sort(pairs.begin() + lo, pairs.begin() + hi, by_value);
+  for (std::size_t i = lo; i < hi; ++i) {
+    below += pairs[i].second;
+    if (below > target) return pairs[i].first;
+  }
+  // Only rounding or target >= the total gets here: the greatest value.
+  return std::max_element(pairs.begin(), pairs.end(), by_value)->first;
+}
+
+// WeightedQuantile at tail and at 1 - tail (tail < 1/2) of values added one
+// by one with positive weights, from the few smallest and largest of them,
+// kept in order as they come: no sort of them all. Quantiles answers when
+// those few hold the tails' weight (with equal weights they do), else
+// nullopt (then SelectQuantile over them all).
+class Tails {
+ public:
+  Tails(std::size_t n, double tail)
+      : m_(std::min(n, 8 + 2 * static_cast<std::size_t>(std::ceil(tail * static_cast<double>(n))))),
+        tail_(tail) {
+    low_.reserve(m_ + 1);
+    high_.reserve(m_ + 1);
+  }
+
+  void Add(double value, double weight) {
+    ++count_;
+    Insert(low_, value, weight, [](double a, double b) { return a < b; });
+    Insert(high_, value, weight, [](double a, double b) { return a > b; });
+  }
+
+  // The two quantiles for weights summing to total.
+  std::optional<Interval> Quantiles(double total) const {
+    // Lower: the least value whose weight at or below exceeds tail * total.
+    std::optional<double> lo;
+    double cumulative = 0;
+    for (const auto& [value, weight] : low_) {
+      cumulative += weight;
+      if (cumulative > tail_ * total) {
+        lo = value;
+        break;
+      }
+    }
+    // Upper: the least value whose weight at or below exceeds (1 - tail) *
+    // total; going down from the largest, ties together, the weight at or
+    // below a value is total minus the weight strictly above it.
+    std::optional<double> hi;
+    const double target = (1 - tail_) * total;
+    double above = 0;
+    for (std::size_t j = 0; j < high_.size();) {
+      std::size_t k = j;
+      double group = 0;
+      while (k < high_.size() && high_[k].first == high_[j].first) group += high_[k++].second;
+      if (k == high_.size() && high_.size() < count_) break;  // the ties may go on
+      if (!(total - above > target)) break;  // target >= total: left to SelectQuantile
+      if (!(total - above - group > target)) {
+        hi = high_[j].first;
+        break;
+      }
+      above += group;
+      j = k;
+    }
+    if (!lo || !hi) return std::nullopt;
+    return Interval(*lo, *hi);
+  }
+
+ private:
+  // Keeps the m_ first values in the order `before`, sorted.
+  template <class Before>
+  void Insert(std::vector<std::pair<double, double>>& kept, double value, double weight, Before before) {
+    if (kept.size() == m_ && !before(value, kept.back().first)) return;
+    std::size_t i = kept.size();
+    if (kept.size() < m_) kept.emplace_back();
+    else --i;
+    while (i > 0 && before(value, kept[i - 1].first)) {
+      kept[i] = kept[i - 1];
+      --i;
+    }
+    kept[i] = {value, weight};
+  }
+
+  std::size_t m_;
+  double tail_;
+  std::size_t count_ = 0;
+  std::vector<std::pair<double, double>> low_, high_;
+};
+
+class ParticleFilter : public Estimator {
+ public:
+  ParticleFilter(const ParticleFilterParams& p, std::uint64_t seed) : p_(p), rng_(seed) {}
+
+  StepResult Step(const Views& views, const StopCondition&) override {
+    if (!views.probabilistic)
+      throw std::invalid_argument("particle-filter needs the probabilistic view");
+    const ProbabilisticView& view = *views.probabilistic;
+    if (!view.sample_prior || !view.log_likelihood)
+      throw std::invalid_argument("particle-filter: the view lacks sample_prior or log_likelihood");
+    const std::size_t n = static_cast<std::size_t>(p_.particles);
+    const bool first = particles_.empty();
+    if (first) {
+      Draw(view.sample_prior);
+    } else if (view.sample_motion) {
+      for (State& s : particles_) view.sample_motion(s, rng_);
+    }
+    CheckSizes(views.space);
+    Weigh(view, /*reset=*/first);
+
+    bool reinitialised = false;
+    if (*std::max_element(log_w_.begin(), log_w_.end()) == -kInf) {
+      reinitialised = true;
+      ++reinitialisations_;
+      Draw(view.sample_global ? view.sample_global : view.sample_prior);
+      CheckSizes(views.space);
+      Weigh(view, /*reset=*/true);
+      if (*std::max_element(log_w_.begin(), log_w_.end()) == -kInf)
+        std::fill(log_w_.begin(), log_w_.end(), 0.0);
+    }
+
+    // Normalise: log-sum-exp from the largest log-weight.
+    const double top = *std::max_element(log_w_.begin(), log_w_.end());
+    std::vector<double> w(n);
+    double total = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      log_w_[i] -= top;
+      w[i] = std::exp(log_w_[i]);
+      total += w[i];
+    }
+    double squares = 0;
+    for (double& wi : w) {
+      wi /= total;
+      squares += wi * wi;
+    }
+    const double ess = 1 / squares;
+
+    StepResult result;
+    result.estimate = MakeEstimate(views.space, w, &result.properties);
+    const bool resample =
+        p_.resample_threshold >= 1 || ess < p_.resample_threshold * static_cast<double>(n);
+    std::int64_t injected = 0;
+    if (resample) {
+      ++resamplings_;
+      injected = Resample(w, view);
+      injected_ += injected;
+    }
+    result.properties.push_back({"resampled", std::int64_t{resample}});
+    result.properties.push_back({"reinitialised", std::int64_t{reinitialised}});
+    result.properties.push_back({"injected", injected});
+    return result;
+  }
+
+  Properties RunProperties() const override {
+    return {{"resamplings", resamplings_},
+            {"reinitialisations", reinitialisations_},
+            {"injected", injected_}};
+  }
+
+ private:
+  void Draw(const std::function<State(RandomEngine&)>& sample) {
+    particles_.resize(static_cast<std::size_t>(p_.particles));
+    for (State& s : particles_) s = sample(rng_);
+  }
+
+  void CheckSizes(const StateSpace& space) const {
+    for (const State& s : particles_)
+      if (static_cast<int>(s.size()) != space.size())
+        throw std::invalid_argument("particle-filter: a drawn state has " + std::to_string(s.size()) +
+                                    " components, the state space " + std::to_string(space.size()));
+  }
+
+  // log_w_ += the log-likelihoods (= them, with reset); NaN counts as -inf.
+  // The first particles are weighed here, timed: the others in parallel only
+  // when they would take long enough to repay spreading them over threads.
+  void Weigh(const ProbabilisticView& view, bool reset) {
+    const std::size_t n = particles_.size();
+    if (reset || log_w_.size() != n) log_w_.assign(n, 0.0);
+    auto weigh = [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i != end; ++i) {
+        double ll = view.log_likelihood(particles_[i]);
+        if (std::isnan(ll)) ll = -kInf;
+        ll = std::min(ll, 1e300);  // +inf would make inf - inf
+        log_w_[i] += ll;
+      }
+    };
+    const std::size_t probe = std::min(n, kProbe);
+    const auto start = std::chrono::steady_clock::now();
+    weigh(0, probe);
+    const double probe_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double rest_s = probe_s / static_cast<double>(probe) * static_cast<double>(n - probe);
+    if (rest_s < kParallelAbove_s) {
+      weigh(probe, n);
+      return;
+    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(probe, n, kGrain),
+                      [&](const tbb::blocked_range<std::size_t>& range) { weigh(range.begin(), range.end()); });
+  }
+
+  // Puts each periodic component within half a period of its circular mean
+  // (in the previous centre's frame) and returns the estimate; its
+  // statistics go into properties. Two passes over the particles.
+  std::unique_ptr<Estimate> MakeEstimate(const StateSpace& space, const std::vector<double>& w,
+                                         Properties* properties) {
+    const std::size_t n = particles_.size();
+    const int d = space.size();
+    const auto du = static_cast<std::size_t>(d);
+    std::vector<double> period(du), scale(du), linear(du, 0.0), sum_sin(du, 0.0), sum_cos(du, 0.0);
+    for (int c = 0; c < d; ++c) {
+      period[c] = space.Period(c);
+      scale[c] = period[c] > 0 ? 2 * std::acos(-1.0) / period[c] : 0;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      if (w[i] == 0) continue;
+      const double* row = particles_[i].data();
+      for (int c = 0; c < d; ++c) {
+        linear[c] += w[i] * row[c];
+        if (period[c] > 0) {
+          double sin = 0, cos = 0;
+          ::sincos(scale[c] * row[c], &sin, &cos);  // glibc: both for the price of one
+          sum_sin[c] += w[i] * sin;
+          sum_cos[c] += w[i] * cos;
+        }
+      }
+    }
+    std::vector<double> centre = linear;
+    for (int c = 0; c < d; ++c) {
+      if (!(period[c] > 0)) continue;
+      const double circular = std::atan2(sum_sin[c], sum_cos[c]) / scale[c];
+      const double reference = centre_.size() == du ? centre_[c] : linear[c];
+      centre[c] = circular + period[c] * std::round((reference - circular) / period[c]);
+    }
+    centre_ = centre;
+
+    const bool hull = p_.region == "hull";
+    const double tail = kRegionLevel / (2 * d);
+    std::vector<Tails> tails(hull ? 0 : du, Tails(n, tail));
+    Box region(du);
+    if (hull) region.SetEmpty();
+    cv::Mat cloud(static_cast<int>(n), d, CV_64F);
+    std::vector<double> cov(du * du, 0.0), dev(du);
+    for (std::size_t i = 0; i < n; ++i) {
+      double* state = particles_[i].data();
+      double* row = cloud.ptr<double>(static_cast<int>(i));
+      for (int c = 0; c < d; ++c) {
+        if (period[c] > 0 && std::fabs(state[c] - centre[c]) > period[c] / 2)
+          state[c] -= period[c] * std::round((state[c] - centre[c]) / period[c]);
+        row[c] = state[c];
+        dev[c] = state[c] - centre[c];
+      }
+      if (w[i] == 0) continue;
+      for (int a = 0; a < d; ++a) {
+        for (int b = a; b < d; ++b) cov[a * d + b] += w[i] * dev[a] * dev[b];
+        if (hull)
+          region[a] = Hull(region[a], Interval(state[a]));
+        else
+          tails[a].Add(state[a], w[i]);
+      }
+    }
+    for (int c = 0; c < d && !hull; ++c) {
+      std::optional<Interval> quantiles = tails[c].Quantiles(1.0);  // w sums to 1
+      if (!quantiles) {
+        std::vector<std::pair<double, double>> pairs;
+        for (std::size_t i = 0; i < n; ++i)
+          if (w[i] > 0) pairs.emplace_back(particles_[i][c], w[i]);
+        const double lo = SelectQuantile(pairs, 1.0, tail);
+        quantiles = Interval(lo, SelectQuantile(pairs, 1.0, 1 - tail));
+      }
+      region[c] = *quantiles;
+    }
+    for (int c = 0; c < d; ++c)
+      properties->push_back({"mean_" + space.names[c], centre[c]});
+    for (int a = 0; a < d; ++a)
+      for (int b = a; b < d; ++b)
+        properties->push_back({"cov_" + space.names[a] + "_" + space.names[b], cov[a * d + b]});
+    return std::make_unique<ParticleEstimate>(cloud, w, region, centre);
+  }
+
+  // Resamples to equal weights, then injects; returns the number injected.
+  std::int64_t Resample(const std::vector<double>& w, const ProbabilisticView& view) {
+    const std::size_t n = particles_.size();
+    const std::vector<std::size_t> index = p_.resampling == "multinomial"
+                                               ? MultinomialResample(w, n, rng_)
+                                               : SystematicResample(w, n, UniformReal(rng_, 0, 1));
+    spare_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) spare_[i] = particles_[index[i]];
+    std::swap(particles_, spare_);
+    std::fill(log_w_.begin(), log_w_.end(), 0.0);
+    if (!view.sample_global || p_.inject <= 0) return 0;
+    const std::size_t k = std::min(n, static_cast<std::size_t>(std::llround(p_.inject * static_cast<double>(n))));
+    // k distinct places, by a partial Fisher-Yates shuffle.
+    std::vector<std::size_t> places(n);
+    std::iota(places.begin(), places.end(), std::size_t{0});
+    for (std::size_t i = 0; i < k; ++i) {
+      std::swap(places[i], places[i + UniformIndex(rng_, n - i)]);
+      particles_[places[i]] = view.sample_global(rng_);
+    }
+    return static_cast<std::int64_t>(k);
+  }
+
+  ParticleFilterParams p_;
+  RandomEngine rng_;
+  std::vector<State> particles_;
+  std::vector<State> spare_;
+  std::vector<double> log_w_;
+  std::vector<double> centre_;  // the previous step's, for the periodic frame
+  std::int64_t resamplings_ = 0;
+  std::int64_t reinitialisations_ = 0;
+  std::int64_t injected_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Estimator> MakeParticleFilter(const ParamMap& params, std::uint64_t seed) {
+  return std::make_unique<ParticleFilter>(ParseParams<ParticleFilterParams>("particle-filter", params),
+                                          seed);
+}
+
+}  // namespace icp
