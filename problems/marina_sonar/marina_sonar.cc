@@ -4,6 +4,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -250,6 +251,7 @@ Displacement DeadReckoning(const MarinaRecord& r, const Interval& dt) {
 
 double MarinaLogLikelihood(const MarinaMap& map, const MarinaRecord& r, double max_range,
                            double floor, double x, double y) {
+  if (!map.image->Bounds().Contains({x, y})) return -std::numeric_limits<double>::infinity();
   const double pixel = map.image->frame().pixel_size;
   double sum = 0;
   for (const MarinaReturn& ret : r.returns) {

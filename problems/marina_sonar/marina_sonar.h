@@ -173,7 +173,9 @@ Displacement DeadReckoning(const MarinaRecord& r, const Interval& dt);
 // range (cos a, sin a), a = heading + beam_angle, is scored by its distance
 // dist to the nearest wall: p = (1 - floor) exp(-dist^2 / (2 sigma^2)) +
 // floor, with sigma = max(pixel size, hypot(range_error, range (heading_error
-// + beam_half_width))), the bound on H's displacement. Returns sum log p.
+// + beam_half_width))), the bound on H's displacement. Returns sum log p;
+// -inf outside the map's bounds (the robot is in the marina, as every other
+// view says).
 double MarinaLogLikelihood(const MarinaMap& map, const MarinaRecord& r, double max_range,
                            double floor, double x, double y);
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -379,6 +380,9 @@ TEST(MarinaSonarViewsTest, ProbabilisticViewDrawsWithinTheBounds) {
     better += at_truth > pv.log_likelihood({steps[k].truth[0] + 7, steps[k].truth[1] - 5});
   }
   EXPECT_GE(better, 20);
+  // Off the map the robot cannot be.
+  EXPECT_EQ(steps[0].views.probabilistic->log_likelihood({bounds[0].hi() + 1, bounds[1].Mid()}),
+            -std::numeric_limits<double>::infinity());
   const std::vector<Step> global = Drive({{"steps", "2"}, {"start", "unknown"}}, 8);
   EXPECT_GT(global[0].views.measurement_set->prior.MaxWidth(), 400);
 }
