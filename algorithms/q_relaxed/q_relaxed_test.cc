@@ -96,10 +96,36 @@ TEST(QRelaxedTest, AFilterThatLosesTheTruthRestartsFromTheGlobalPrior) {
   EXPECT_EQ(IntProperty(solver->RunProperties(), "resets").value(), 1);
 }
 
+TEST(QRelaxedTest, WithAutoQATrackedSearchNeedingTooManyOutliersRestarts) {
+  // As above, but auto_q keeps the tracked search non-empty by dropping
+  // measurements: the outlier count betrays the lost track.
+  auto first = Lines(4, 10, 2);
+  auto second = Lines(5, 10, 2);
+  second.views.measurement_set->predict = [](const Box& previous) {
+    Box out = previous;
+    for (std::size_t d = 0; d < out.size(); ++d) out[d] = out[d] + Interval(-0.5, 0.5);
+    return out;
+  };
+  auto stays = MakeQRelaxed({{"mode", "pave"}}, 0);
+  stays->Step(first.views, StopCondition());
+  const StepResult kept = stays->Step(second.views, StopCondition());
+  EXPECT_EQ(IntProperty(kept.properties, "reset").value(), 0);
+  EXPECT_GT(IntProperty(kept.properties, "q").value(), 5);
+  EXPECT_FALSE(kept.estimate->Contains(second.truth));
+  auto restarts = MakeQRelaxed({{"mode", "pave"}, {"max_outlier_share", "0.3"}}, 0);
+  restarts->Step(first.views, StopCondition());
+  const StepResult r = restarts->Step(second.views, StopCondition());
+  EXPECT_EQ(IntProperty(r.properties, "reset").value(), 1);
+  EXPECT_LE(IntProperty(r.properties, "q").value(), 2);
+  EXPECT_TRUE(r.estimate->Contains(second.truth));
+}
+
 TEST(QRelaxedTest, RejectsBadParameters) {
   EXPECT_THROW(MakeQRelaxed({{"q", "-1"}}, 0), ParamError);
   EXPECT_THROW(MakeQRelaxed({{"mode", "sivia"}}, 0), ParamError);
   EXPECT_THROW(MakeQRelaxed({{"epsilon", "0"}}, 0), ParamError);
+  EXPECT_THROW(MakeQRelaxed({{"max_outlier_share", "0"}}, 0), ParamError);
+  EXPECT_THROW(MakeQRelaxed({{"max_outlier_share", "1.5"}}, 0), ParamError);
 }
 
 }  // namespace

@@ -15,6 +15,10 @@ void Describe(RelaxedParams& p, ParamSet& set) {
           "use the smallest q' >= q whose solution set is non-empty, and report it as `q`");
   set.Add("filter", &p.filter,
           "on a stream of steps, start each from prior ∩ predict(previous hull)");
+  set.Add("max_outlier_share", &p.max_outlier_share,
+          "with auto_q, a tracked search needing more than this share of wrong measurements "
+          "restarts from the prior (1: never)",
+          Range{0, 1, true, false});
 }
 
 int ChooseQ(int q, bool auto_q, int m, const std::function<bool(int)>& nonempty) {
@@ -36,8 +40,13 @@ StepResult RelaxedEstimator::Step(const Views& views, const StopCondition& stop)
   // Static recovery (paper 003 §6.7): a tracked search that found nothing
   // (more outliers than q, or an earlier estimate that lost the truth)
   // starts again from the global prior.
-  const bool reset = tracking && (!solution || (solution->estimate->Hull().IsEmpty() &&
-                                                solution->summary.status != ContractStatus::kStopped));
+  const int m = static_cast<int>(view.measurements.size());
+  auto lost = [&](const RelaxedSolution& s) {
+    if (s.summary.status == ContractStatus::kStopped) return false;
+    return s.estimate->Hull().IsEmpty() ||
+           (params_.auto_q && s.q > params_.max_outlier_share * m);
+  };
+  const bool reset = tracking && (!solution || lost(*solution));
   if (reset) ++resets_;
   if (reset && solution) total_work_ += solution->summary.work;
   if (reset || !solution) solution = Solve(view.prior, view, views.space, stop);

@@ -18,6 +18,11 @@
 //           from the prior, a global search (the static recovery of paper
 //           003 §6.7), reported as the step property `reset` and counted in
 //           the run property `resets`.
+//   max_outlier_share
+//           with auto_q, a tracked search that needs more than this share
+//           of the m measurements to be wrong counts as lost too (the
+//           estimate followed a wrong place, which an outlier count above
+//           the expected rate betrays) and restarts from the prior; 1: never.
 #ifndef ICPBENCH_ALGORITHMS_RELAXED_RELAXED_ESTIMATOR_H_
 #define ICPBENCH_ALGORITHMS_RELAXED_RELAXED_ESTIMATOR_H_
 
@@ -36,6 +41,7 @@ struct RelaxedParams {
   int q = 0;
   bool auto_q = true;
   bool filter = true;
+  double max_outlier_share = 1;
 };
 void Describe(RelaxedParams& p, ParamSet& set);
 

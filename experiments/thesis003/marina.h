@@ -1,7 +1,7 @@
 // Thesis 003 chapter 6: set-membership localization in a marina against a
-// particle filter (§6.7). Runs are those of spec experiments `marina`
-// (specs/marina.yaml, the full drive) and `marina-short` (the default
-// suite's short one); both give:
+// particle filter (§6.7). Runs are those of spec experiments `marina` and
+// `marina-<anything>` (specs/marina.yaml: `marina`, the full drive, and
+// `marina-outliers`; the default suite: `marina-short`); they give:
 //
 //   the table "Thesis 003 ch. 6: marina, set membership vs particle filter":
 //   per configuration (algorithm, problem params: start, outlier rate, ...)
@@ -15,10 +15,11 @@
 //   the figures fig6_8_marina_tracks (the map, the true trajectory, the
 //   set-membership boxes and centres and the particle cloud's mean: Figs.
 //   6.8 and 6.9 in one) and fig6_errors (centre error over time, both
-//   methods). They draw one seed: the smallest seed of a run of the
-//   experiment (`marina` before `marina-short`), with start=known when there
-//   is one, and every ok run of that experiment with the same problem
-//   params and seed.
+//   methods). They draw one seed: the smallest seed of an ok run of
+//   experiment `marina` (else `marina-short`, else any marina-*), with
+//   start=known when there is one, and for each algorithm the ok run of
+//   that experiment with the same problem params and seed whose
+//   configuration has the lowest centre RMSE (each method at its best).
 #ifndef ICPBENCH_EXPERIMENTS_THESIS003_MARINA_H_
 #define ICPBENCH_EXPERIMENTS_THESIS003_MARINA_H_
 

@@ -108,6 +108,15 @@ TEST(MarinaFiguresTest, DrawOneSeedOfBothMethodsPreferringTheFullDriveAndAKnownS
   EXPECT_EQ(drawn[0]->spec.algorithm, "q-relaxed");
   EXPECT_EQ(drawn[1]->spec.algorithm, "particle-filter");
   for (const RunRecord* r : drawn) EXPECT_EQ(r->spec.seed, 3u);
+  // Of two configurations of one algorithm, the one with the lower RMSE.
+  std::vector<RunRecord> two = {
+      MarinaRun("q-relaxed", "known", 1, {MarinaStep(0, 2, 0.01)}, {}),
+      MarinaRun("q-relaxed", "known", 1, {MarinaStep(0, 0.5, 0.01)}, {}),
+  };
+  two[1].spec.algorithm_params = {{"mode", "pave"}};
+  const std::vector<const RunRecord*> best = MarinaFigureRuns(two);
+  ASSERT_EQ(best.size(), 1u);
+  EXPECT_EQ(best[0], &two[1]);
   // Only the short drive: it is drawn.
   EXPECT_EQ(MarinaFigureRuns({runs.back()}).size(), 1u);
   EXPECT_TRUE(MarinaFigureRuns({}).empty());
