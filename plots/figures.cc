@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <map>
 #include <optional>
@@ -304,19 +305,23 @@ void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecor
   Render(f, out_dir, out);
 }
 
-void PlotAreaFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
-                    const std::string& out_dir, PlotOutput* out) {
+namespace {
+// One line per run of a per-step value against the step, log scale, each
+// line titled by its run and what title_extra says of it.
+void PlotStepValueFigure(const FigureText& text, const std::string& y_label,
+                         const std::vector<const RunRecord*>& runs,
+                         const std::function<double(const StepRecord&)>& value,
+                         const std::function<std::string(const RunRecord&)>& title_extra,
+                         const std::string& out_dir, PlotOutput* out) {
   Panel panel;
-  panel.setup = "set title " + Quote(text.title) +
-                " noenhanced\nset xlabel 'step'\nset ylabel 'x-y area (m^2)'\nset logscale y\n"
-                "set key top right noenhanced\n";
+  panel.setup = "set title " + Quote(text.title) + " noenhanced\nset xlabel 'step'\nset ylabel " +
+                Quote(y_label) + "\nset logscale y\nset key top right noenhanced\n";
   for (const RunRecord* r : runs) {
     Series s{"using 1:2 with lines lw 1.5 lc rgb " + Quote(Colour(r->spec.algorithm)) +
-                 " title " + Quote(RunLabel(*r)),
+                 " title " + Quote(RunLabel(*r) + title_extra(*r)),
              {}, ""};
-    for (const StepRecord& step : r->steps) {
-      s.rows.push_back({static_cast<double>(step.step), Positive(step.area)});
-    }
+    for (const StepRecord& step : r->steps)
+      s.rows.push_back({static_cast<double>(step.step), Positive(value(step))});
     if (HasPoint(s)) panel.series.push_back(std::move(s));
   }
   if (panel.series.empty()) return Skip(text, out);
@@ -327,33 +332,27 @@ void PlotAreaFigure(const FigureText& text, const std::vector<const RunRecord*>&
   f.panels = {panel};
   Render(f, out_dir, out);
 }
+}  // namespace
+
+void PlotAreaFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
+                    const std::string& out_dir, PlotOutput* out) {
+  PlotStepValueFigure(
+      text, "x-y area (m^2)", runs, [](const StepRecord& s) { return s.area; },
+      [](const RunRecord&) { return std::string(); }, out_dir, out);
+}
 
 void PlotCentreErrorFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
                            const std::string& out_dir, PlotOutput* out) {
-  Panel panel;
-  panel.setup = "set title " + Quote(text.title) +
-                " noenhanced\nset xlabel 'step'\nset ylabel 'centre error (m)'\nset logscale y\n"
-                "set key top right noenhanced\n";
-  for (const RunRecord* r : runs) {
+  auto consistency = [](const RunRecord& r) {
     int known = 0, contained = 0;
-    Series s{"", {}, ""};
-    for (const StepRecord& step : r->steps) {
-      s.rows.push_back({static_cast<double>(step.step), Positive(step.centre_error)});
-      if (step.contained >= 0) ++known, contained += step.contained;
-    }
-    const std::string consistency =
-        known ? ", truth held on " + FormatNumber(100.0 * contained / known) + "% of steps" : "";
-    s.spec = "using 1:2 with lines lw 1.5 lc rgb " + Quote(Colour(r->spec.algorithm)) + " title " +
-             Quote(RunLabel(*r) + consistency);
-    if (HasPoint(s)) panel.series.push_back(std::move(s));
-  }
-  if (panel.series.empty()) return Skip(text, out);
-  Figure f;
-  f.name = text.name;
-  f.width_in = 9;
-  f.height_in = 4.5;
-  f.panels = {panel};
-  Render(f, out_dir, out);
+    for (const StepRecord& s : r.steps)
+      if (s.contained >= 0) ++known, contained += s.contained;
+    return known ? ", truth held on " + FormatNumber(100.0 * contained / known) + "% of steps"
+                 : std::string();
+  };
+  PlotStepValueFigure(
+      text, "centre error (m)", runs, [](const StepRecord& s) { return s.centre_error; },
+      consistency, out_dir, out);
 }
 
 namespace {

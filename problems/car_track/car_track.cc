@@ -1,6 +1,7 @@
 #include "problems/car_track/car_track.h"
 
 #include "problems/car_track/window.h"
+#include "problems/csv_fields.h"
 
 #include <algorithm>
 #include <array>
@@ -345,24 +346,6 @@ constexpr double kMaxAngle = 1e6;      // rad, for truth_theta and gyro_dtheta
 // reading on consecutive rows: a real car's stays far below it.
 constexpr double kMaxHeadingMismatch = std::numbers::pi / 2;
 
-std::string_view Trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
-    s.remove_suffix(1);
-  return s;
-}
-
-std::vector<std::string_view> SplitFields(std::string_view line) {
-  std::vector<std::string_view> fields;
-  while (true) {
-    const std::size_t comma = line.find(',');
-    fields.push_back(Trim(line.substr(0, comma)));
-    if (comma == std::string_view::npos) break;
-    line.remove_prefix(comma + 1);
-  }
-  return fields;
-}
-
 class LogReader {
  public:
   explicit LogReader(std::string source) : source_(std::move(source)) {}
@@ -373,7 +356,7 @@ class LogReader {
     bool have_header = false;
     while (std::getline(in, line)) {
       ++line_number_;
-      const std::string_view text = Trim(line);
+      const std::string_view text = TrimField(line);
       if (text.empty() || text.front() == '#') continue;
       if (!have_header) {
         ReadHeader(text);
@@ -398,7 +381,7 @@ class LogReader {
   void ReadHeader(std::string_view text) {
     position_.fill(-1);
     names_.clear();
-    for (std::string_view name : SplitFields(text)) {
+    for (std::string_view name : SplitCsvFields(text)) {
       names_.emplace_back(name);
       const int field = static_cast<int>(names_.size()) - 1;
       const auto* it = std::find(std::begin(kColumnNames), std::end(kColumnNames), name);
@@ -483,7 +466,7 @@ class LogReader {
   }
 
   CarTrackRecord ReadRow(std::string_view text) {
-    fields_ = SplitFields(text);
+    fields_ = SplitCsvFields(text);
     if (fields_.size() != names_.size())
       Fail(std::to_string(fields_.size()) + " fields, the header has " +
            std::to_string(names_.size()));

@@ -17,6 +17,7 @@
 
 #include "core/constraint_system.h"
 #include "core/random.h"
+#include "problems/csv_fields.h"
 #include "problems/marina_sonar/sonar_contractor.h"
 #include "problems/planar.h"
 
@@ -280,23 +281,6 @@ constexpr const char* kStepFields[] = {"t",       "dvl_u",         "dvl_v",   "d
 constexpr const char* kReturnFields[] = {"beam_angle", "range",   "range_error", "beam_half_width",
                                          "outlier",    "hit_x",   "hit_y"};
 
-std::string_view Trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-  return s;
-}
-
-std::vector<std::string_view> SplitFields(std::string_view line) {
-  std::vector<std::string_view> fields;
-  while (true) {
-    const std::size_t comma = line.find(',');
-    fields.push_back(Trim(line.substr(0, comma)));
-    if (comma == std::string_view::npos) break;
-    line.remove_prefix(comma + 1);
-  }
-  return fields;
-}
-
 class LogReader {
  public:
   explicit LogReader(std::string source) : source_(std::move(source)) {}
@@ -306,9 +290,9 @@ class LogReader {
     std::string line;
     while (std::getline(in, line)) {
       ++line_number_;
-      const std::string_view text = Trim(line);
+      const std::string_view text = TrimField(line);
       if (text.empty() || text.front() == '#') continue;
-      fields_ = SplitFields(text);
+      fields_ = SplitCsvFields(text);
       if (fields_[0] == "step") {
         records.push_back(ReadStep());
         if (records.size() > 1 && !(records.back().t > records[records.size() - 2].t))
