@@ -71,6 +71,7 @@ RunRecord ExecuteRun(const RunSpec& spec) {
       r.status = std::string(ToString(result.summary.status));
       r.solve_time_s = result.solve_time_s >= 0 ? result.solve_time_s : solve_time;
       for (Property& p : result.properties) r.properties.push_back(std::move(p));
+      for (const Property& p : step.annotations) r.properties.push_back(p);
       for (Property& p : result.estimate->Extras()) r.properties.push_back(std::move(p));
       if (!result.summary.message.empty()) r.properties.push_back({"message", result.summary.message});
       record.steps.push_back(std::move(r));

@@ -51,6 +51,19 @@ TEST(RunnerTest, ExecuteRunRecordsEveryStepAndKeepsTheTruth) {
   EXPECT_NEAR(s.area, (s.vars[0].hi - s.vars[0].lo) * (s.vars[1].hi - s.vars[1].lo), 1e-9);
 }
 
+TEST(RunnerTest, TheProblemsAnnotationsJoinTheStepProperties) {
+  const RunRecord r = ExecuteRun(RunSpec{"hc4", {}, "car-track", {{"steps", "3"}}, 1, 0});
+  ASSERT_EQ(r.status, RunStatus::kOk) << r.reason;
+  ASSERT_EQ(r.steps.size(), 3u);
+  for (const StepRecord& s : r.steps) {
+    const auto lo = NumberProperty(s.properties, "gps_x_lo");
+    const auto hi = NumberProperty(s.properties, "gps_x_hi");
+    ASSERT_TRUE(lo && hi);
+    EXPECT_LE(*lo, s.vars[0].truth);
+    EXPECT_GE(*hi, s.vars[0].truth);
+  }
+}
+
 TEST(RunnerTest, FaultsAreRecordedAndTheSweepGoesOn) {
   const std::string dir = FreshDir("faults");
   SweepSummary s = Sweep(R"(

@@ -250,6 +250,25 @@ void PlotSweepFigure(const FigureText& text, const std::string& x_label,
   Render(f, out_dir, out);
 }
 
+// The GPS corridor of variable var (paper 000 Fig. 3): rows {step, gps lo -
+// truth, gps hi - truth} from the step properties gps_<var>_lo/hi that
+// car-track records; NaN where a step has none or the truth is unknown.
+std::vector<std::vector<double>> GpsCorridorRows(const RunRecord& run, const std::string& var) {
+  std::vector<std::vector<double>> rows;
+  for (const StepRecord& s : run.steps) {
+    double lower = kNaN, upper = kNaN;
+    const std::optional<double> lo = NumberProperty(s.properties, "gps_" + var + "_lo");
+    const std::optional<double> hi = NumberProperty(s.properties, "gps_" + var + "_hi");
+    for (const VariableRecord& v : s.vars) {
+      if (v.name != var || std::isnan(v.truth) || !lo || !hi) continue;
+      lower = Finite(*lo - v.truth);
+      upper = Finite(*hi - v.truth);
+    }
+    rows.push_back({static_cast<double>(s.step), lower, upper});
+  }
+  return rows;
+}
+
 void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
                         const std::string& out_dir, PlotOutput* out) {
   const char* const kVars[2] = {"x", "y"};
@@ -278,7 +297,10 @@ void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecor
   const std::string x_range = "set xrange [0:" + std::to_string(std::max(1.0, last_step)) + "]\n";
   Figure f;
   f.name = text.name;
-  f.title = text.title + ": solid lo - truth, dashed hi - truth";
+  bool gps = false;
+  for (const RunRecord* r : shown)
+    for (const char* var : kVars) gps = gps || HasPoint({"", GpsCorridorRows(*r, var), ""});
+  f.title = text.title + ": solid lo - truth, dashed hi - truth" + (gps ? "; grey: the GPS box" : "");
   f.width_in = 10;
   f.cols = 2;
   f.rows = static_cast<int>(shown.size());
@@ -294,6 +316,8 @@ void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecor
                 "unset key\n" + x_range;
       const auto& rows = corridors[k][i];
       p.series = {
+          {"using 1:2:3 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.35 notitle",
+           GpsCorridorRows(r, kVars[k]), ""},
           {"using 1:2:3 with filledcurves fc rgb " + colour + " fs transparent solid 0.25 notitle",
            rows, ""},
           {"using 1:2 with lines lw 1.2 lc rgb " + colour + " notitle", rows, ""},

@@ -71,6 +71,11 @@ void PlotSweepFigure(const FigureText& text, const std::string& x_label,
 // steps, one row of panels per run, the y range shared by each column.
 void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
                         const std::string& out_dir, PlotOutput* out);
+// The GPS corridor of var ("x", "y") over a run's steps (paper 000 Fig. 3):
+// rows {step, lo - truth, hi - truth} of the GPS box car-track records as
+// the step properties gps_<var>_lo/hi; NaN where a step has none or the
+// truth is unknown. PlotCorridorFigure draws it in grey behind each run's.
+std::vector<std::vector<double>> GpsCorridorRows(const RunRecord& run, const std::string& var);
 // x-y area over the steps, one line per run, log scale.
 void PlotAreaFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
                     const std::string& out_dir, PlotOutput* out);

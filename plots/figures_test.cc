@@ -111,6 +111,23 @@ TEST(FiguresTest, WritesEveryKindAsPngAndPdfCallersFirst) {
   fs::remove_all(dir);
 }
 
+TEST(FiguresTest, GpsCorridorIsTheGpsBoxAboutTheTruth) {
+  RunRecord r;
+  StepRecord with_fix;
+  with_fix.step = 0;
+  with_fix.vars = {{"x", 0, 1, 10}, {"y", 0, 1, 20}};
+  with_fix.properties = {{"gps_x_lo", 8.0}, {"gps_x_hi", 13.0}, {"gps_y_lo", 19.0}, {"gps_y_hi", 21.5}};
+  StepRecord without = with_fix;
+  without.step = 1;
+  without.properties.clear();
+  r.steps = {with_fix, without};
+  const auto x = GpsCorridorRows(r, "x");
+  ASSERT_EQ(x.size(), 2u);
+  EXPECT_EQ(x[0], (std::vector<double>{0, -2, 3}));
+  EXPECT_TRUE(std::isnan(x[1][1]) && std::isnan(x[1][2]));
+  EXPECT_EQ(GpsCorridorRows(r, "y")[0], (std::vector<double>{0, -1, 1.5}));
+}
+
 TEST(FiguresTest, EmptyStoreWritesNothing) {
   const fs::path dir = TempDir("figures_empty");
   PlotOutput out;

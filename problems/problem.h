@@ -25,6 +25,10 @@ struct Step {
   // view's domains (a solution of the CSP inside them); empty when unknown.
   // For tests that check a contractor keeps the truth.
   std::vector<double> csp_truth;
+  // What the problem reports of the step beside its truth, recorded with
+  // the step's properties (e.g. car-track's GPS box in use, gps_x_lo ...,
+  // for paper 000's Fig. 3); for reports and figures, never for estimators.
+  Properties annotations;
 };
 
 class Problem {

@@ -296,6 +296,9 @@ bool CarTrackProblem::Next(Step* step) {
   step->views.space = CarStateSpace();
   step->views.csp = BuildCarWindow(oldest, states);
   step->views.probabilistic = CarProbabilisticView(measurements_[k], prior_, k == 0);
+  if (const CarTrackMeasurement& m = measurements_[k]; m.x.IsBounded() && m.y.IsBounded())
+    step->annotations = {{"gps_x_lo", m.x.lo()}, {"gps_x_hi", m.x.hi()},
+                         {"gps_y_lo", m.y.lo()}, {"gps_y_hi", m.y.hi()}};
   const CarTrackRecord& newest = records_[k];
   if (newest.has_truth) step->truth = {newest.truth_x, newest.truth_y, newest.truth_theta};
   if (!truth_known) return true;

@@ -48,6 +48,10 @@
 //   - sample_global: x and y uniform in the step's GPS box, th uniform in
 //     [-pi, pi]; unset without a fix.
 //
+// Each step with a GPS fix in use is annotated (Step::annotations, stored
+// with the step's properties) with that box: gps_x_lo, gps_x_hi, gps_y_lo,
+// gps_y_hi, for the GPS corridor of Fig. 3.
+//
 // The simulator can be replaced by a recorded drive: a CSV log whose format
 // is documented at ReadCarTrackLog and in problems/car_track/README.md.
 #ifndef ICPBENCH_PROBLEMS_CAR_TRACK_CAR_TRACK_H_

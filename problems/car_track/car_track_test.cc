@@ -220,6 +220,35 @@ TEST(CarTrackTest, GpsOutageGrowsTheBoxAndKeepsTheTruth) {
   });
 }
 
+// Fig. 3's GPS corridor: each step names the GPS box in use, which holds the
+// truth; a step without a fix (an outage) names none.
+TEST(CarTrackTest, StepsAnnotateTheGpsBoxInUse) {
+  auto problem = Make({{"steps", "60"}, {"outage_start", "20"}, {"outage_length", "10"}}, 3);
+  Step step;
+  int annotated = 0;
+  while (problem->Next(&step)) {
+    const int k = step.views.step;
+    const auto x_lo = NumberProperty(step.annotations, "gps_x_lo");
+    const auto x_hi = NumberProperty(step.annotations, "gps_x_hi");
+    const auto y_lo = NumberProperty(step.annotations, "gps_y_lo");
+    const auto y_hi = NumberProperty(step.annotations, "gps_y_hi");
+    if (k >= 20 && k < 30) {
+      EXPECT_TRUE(step.annotations.empty()) << "step " << k;
+      continue;
+    }
+    ASSERT_TRUE(x_lo && x_hi && y_lo && y_hi) << "step " << k;
+    ++annotated;
+    EXPECT_LT(*x_lo, step.truth[0]);
+    EXPECT_GT(*x_hi, step.truth[0]);
+    EXPECT_LT(*y_lo, step.truth[1]);
+    EXPECT_GT(*y_hi, step.truth[1]);
+    // The newest state's domains in the CSP are that box.
+    const int newest_x = Csp(step).num_variables() - 3;
+    EXPECT_EQ(Csp(step).domains()[newest_x], Interval(*x_lo, *x_hi)) << "step " << k;
+  }
+  EXPECT_EQ(annotated, 50);
+}
+
 TEST(CarTrackTest, UnknownStartHeadingIsNarrowedByHC4) {
   // HC4 is local: each step's constraints see one displacement against two
   // GPS boxes, so the heading narrows most when GPS is tight.
