@@ -233,9 +233,14 @@ void PlotSweepFigure(const FigureText& text, const std::string& x_label,
                "\nset ylabel 'area (m^2)'\nset key top right noenhanced\n";
   time.setup = "set title 'Mean time per CSP'\nset xlabel " + Quote(x_label) +
                "\nset ylabel 'time (ms)'\nset key top left noenhanced\n";
+  // An algorithm's colour for all its configurations; its second, third ...
+  // configuration dashed and marked differently, so they stay apart.
+  std::map<std::string, int> configurations;
   for (std::size_t i = 0; i < points.size();) {
     const std::string& label = points[i].label;
-    const std::string style = "with linespoints lw 2 pt 7 ps 0.7 lc rgb " +
+    const int nth = configurations[points[i].algorithm]++;
+    const std::string style = "with linespoints lw 2 dt " + std::to_string(1 + nth % 5) + " pt " +
+                              std::to_string(7 + 2 * (nth % 3)) + " ps 0.7 lc rgb " +
                               Quote(Colour(points[i].algorithm)) + " title " + Quote(label);
     Series a{"using 1:2 " + style, {}, ""};
     Series t{"using 1:2 " + style, {}, ""};
