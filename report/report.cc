@@ -171,8 +171,7 @@ TextTable GroupTable(const std::vector<GroupSummary>& groups) {
         continue;
       }
       ++listed;
-      t.items.push_back(WithParams(g.algorithm, g.algorithm_params) + " on " +
-                        WithParams(g.problem, g.problem_params) + ": " + p);
+      t.items.push_back(ProblemItem(g, p));
     }
   }
   if (unlisted > 0) t.items.push_back("… and " + std::to_string(unlisted) + " more");
@@ -330,6 +329,18 @@ std::string Overview(const std::vector<RunRecord>& runs) {
 }
 
 }  // namespace
+
+std::string OkRunsCell(const GroupSummary& group) {
+  std::string cell = std::to_string(group.ok);
+  if (group.runs.size() != static_cast<std::size_t>(group.ok))
+    cell += " of " + std::to_string(group.runs.size());
+  return cell;
+}
+
+std::string ProblemItem(const GroupSummary& group, const std::string& problem) {
+  return WithParams(group.algorithm, group.algorithm_params) + " on " +
+         WithParams(group.problem, group.problem_params) + ": " + problem;
+}
 
 std::string FormatNumber(double v) {
   if (std::isnan(v)) return kDash;

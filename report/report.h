@@ -142,6 +142,11 @@ std::string CompactParams(const ParamMap& params);
 std::string WithParams(const std::string& name, const ParamMap& params);
 // CompactParams, or "default" for no params: a table cell.
 std::string ParamsCell(const ParamMap& params);
+// A group's runs cell: its ok runs, "2 of 3" when some were not ok.
+std::string OkRunsCell(const GroupSummary& group);
+// A table item for one of a group's problems (a run that was not ok, with
+// its reason): "hc4 on car-track {w=5}: failed (seed 3): threw: boom".
+std::string ProblemItem(const GroupSummary& group, const std::string& problem);
 // FormatNumber(a / b); "—" when either is NaN or b is 0.
 std::string FormatRatio(double a, double b);
 // About 4 significant digits without exponent for 1e-3 <= |v| < 1e9

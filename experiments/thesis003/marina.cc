@@ -80,17 +80,12 @@ TextTable MarinaTable(const std::vector<RunRecord>& runs) {
       run_times.push_back(run_time);
       if (const std::optional<double> n = Restarts(*r)) restarts.push_back(*n);
     }
-    std::string runs_cell = std::to_string(g.ok);
-    if (g.runs.size() != static_cast<std::size_t>(g.ok))
-      runs_cell += " of " + std::to_string(g.runs.size());
     t.rows.push_back({WithParams(DisplayOf(g.algorithm).label, g.algorithm_params),
-                      WithParams(g.problem, g.problem_params), runs_cell, std::to_string(steps),
+                      WithParams(g.problem, g.problem_params), OkRunsCell(g), std::to_string(steps),
                       FormatRatio(contained, known), Cell(std::sqrt(Mean(squared))),
                       Cell(Quantile(errors, 0.5)), Cell(Mean(restarts)),
                       Cell(Quantile(times, 0.5) * 1e3), Cell(Mean(run_times))});
-    for (const std::string& p : g.problems)
-      t.items.push_back(WithParams(g.algorithm, g.algorithm_params) + " on " +
-                        WithParams(g.problem, g.problem_params) + ": " + p);
+    for (const std::string& p : g.problems) t.items.push_back(ProblemItem(g, p));
   }
   // The thesis' own figures for its 600 m run (§6.7), for comparison.
   t.rows.push_back({"published: set membership, C/C++", "the Girona marina data set, 600 m", kDash,

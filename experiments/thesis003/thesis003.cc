@@ -66,17 +66,12 @@ TextTable RelaxedTable(const std::vector<RunRecord>& runs) {
         times.push_back(s.solve_time_s);
       }
     }
-    std::string runs_cell = std::to_string(g.ok);
-    if (g.runs.size() != static_cast<std::size_t>(g.ok))
-      runs_cell += " of " + std::to_string(g.runs.size());
     t.rows.push_back({WithParams(DisplayOf(g.algorithm).label, g.algorithm_params),
-                      WithParams(g.problem, g.problem_params), runs_cell, std::to_string(steps),
+                      WithParams(g.problem, g.problem_params), OkRunsCell(g), std::to_string(steps),
                       FormatRatio(contained, known), FormatNumber(Mean(areas)), FormatNumber(Mean(qs)),
                       FormatNumber(Mean(outliers)), FormatRatio(q_within, compared), FormatRatio(empty, steps),
                       FormatNumber(Quantile(times, 0.5) * 1e3)});
-    for (const std::string& p : g.problems)
-      t.items.push_back(WithParams(g.algorithm, g.algorithm_params) + " on " +
-                        WithParams(g.problem, g.problem_params) + ": " + p);
+    for (const std::string& p : g.problems) t.items.push_back(ProblemItem(g, p));
   }
   t.notes.push_back(
       "Every configuration with a run of experiment relaxed-lines or relaxed-beacons, over the "
