@@ -144,6 +144,7 @@ MarinaMap MakeMarinaMap(const cv::Mat& walls, const ImageFrame& frame) {
   cv::distanceTransform(water, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
   distance *= frame.pixel_size;
   map.distance = std::make_shared<const cv::Mat>(std::move(distance));
+  map.bounds = map.image->Bounds();
   return map;
 }
 

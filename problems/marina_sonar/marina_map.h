@@ -56,6 +56,9 @@ struct MarinaMap {
   // Distance from each pixel's centre to the nearest wall pixel's centre in
   // metres (cv::distanceTransform, L2, precise), CV_32FC1, image-sized.
   std::shared_ptr<const cv::Mat> distance;
+  // The world box the image covers (image->Bounds()), kept for the
+  // likelihood's per-particle check.
+  Box bounds;
 };
 // From an image (nonzero = wall) and its frame.
 MarinaMap MakeMarinaMap(const cv::Mat& walls, const ImageFrame& frame);

@@ -252,7 +252,8 @@ Displacement DeadReckoning(const MarinaRecord& r, const Interval& dt) {
 
 double MarinaLogLikelihood(const MarinaMap& map, const MarinaRecord& r, double max_range,
                            double floor, double x, double y) {
-  if (!map.image->Bounds().Contains({x, y})) return -std::numeric_limits<double>::infinity();
+  if (!map.bounds[0].Contains(x) || !map.bounds[1].Contains(y))
+    return -std::numeric_limits<double>::infinity();
   const double pixel = map.image->frame().pixel_size;
   double sum = 0;
   for (const MarinaReturn& ret : r.returns) {
@@ -444,10 +445,9 @@ MarinaSonarProblem::MarinaSonarProblem(const MarinaSonarParams& params, MarinaMa
                                        std::vector<MarinaRecord> records)
     : params_(params), map_(std::move(map)), records_(std::move(records)) {
   num_steps_ = static_cast<int>(std::min<std::size_t>(records_.size(), params_.steps));
-  bounds_ = map_.image->Bounds();
   for (int k = 0; k < num_steps_; ++k) {
     const MarinaRecord& r = records_[k];
-    if (r.has_truth && !bounds_.Contains({r.truth_x, r.truth_y}))
+    if (r.has_truth && !map_.bounds.Contains({r.truth_x, r.truth_y}))
       throw std::invalid_argument("marina-sonar: step " + std::to_string(k) + ": the truth (" +
                                   FormatDouble(r.truth_x) + ", " + FormatDouble(r.truth_y) +
                                   ") lies outside the map");
@@ -457,7 +457,7 @@ MarinaSonarProblem::MarinaSonarProblem(const MarinaSonarParams& params, MarinaMa
       throw ParamError("marina-sonar.start = known: the first step has no truth");
     start_box_ = Intersect(Box({Around(records_[0].truth_x, params_.start_error),
                                 Around(records_[0].truth_y, params_.start_error)}),
-                           bounds_);
+                           map_.bounds);
   }
   motion_.resize(num_steps_);
   for (int k = 1; k < num_steps_; ++k)
@@ -490,7 +490,7 @@ bool MarinaSonarProblem::Next(Step* step) {
 
   // The measurement set.
   MeasurementSetView set;
-  set.prior = k == 0 && known ? start_box_ : bounds_;
+  set.prior = k == 0 && known ? start_box_ : map_.bounds;
   bool flags_known = true;
   std::vector<bool> outliers;
   // From this step back: carried holds the displacement from step j to k.
@@ -523,7 +523,7 @@ bool MarinaSonarProblem::Next(Step* step) {
   bool truth_known = true;
   for (int j = oldest; j <= k; ++j) {
     const std::string index = "[" + std::to_string(j) + "]";
-    const Box& domain = j == 0 && known ? start_box_ : bounds_;
+    const Box& domain = j == 0 && known ? start_box_ : map_.bounds;
     Expr xj = csp.AddVariable("x" + index, domain[0]);
     Expr yj = csp.AddVariable("y" + index, domain[1]);
     view.states.push_back({j, 0});
@@ -545,10 +545,10 @@ bool MarinaSonarProblem::Next(Step* step) {
 
   // The probabilistic view.
   ProbabilisticView pv;
-  const Box prior = known ? start_box_ : bounds_;
+  const Box prior = known ? start_box_ : map_.bounds;
   auto image = map_.image;
   pv.sample_prior = [prior, image](RandomEngine& rng) { return UniformInWater(prior, *image, rng); };
-  pv.sample_global = [bounds = bounds_, image](RandomEngine& rng) {
+  pv.sample_global = [bounds = map_.bounds, image](RandomEngine& rng) {
     return UniformInWater(bounds, *image, rng);
   };
   if (k == 0) {

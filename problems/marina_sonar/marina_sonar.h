@@ -195,7 +195,7 @@ class MarinaSonarProblem : public Problem {
   MarinaMap map_;
   std::vector<MarinaRecord> records_;
   std::vector<Displacement> motion_;  // motion_[k]: from step k-1 to k (k >= 1)
-  Box bounds_, start_box_;
+  Box start_box_;
   int num_steps_;
   int k_ = 0;
 };
