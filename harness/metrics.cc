@@ -42,13 +42,6 @@ void BootstrapMeanInterval(const std::vector<double>& values, std::uint64_t seed
   *hi = Quantile(std::move(means), 0.975);
 }
 
-struct CorridorSums {
-  Corridor corridor;
-  double sum_lower = 0;
-  double sum_upper = 0;
-  int count = 0;
-};
-
 }  // namespace
 
 bool IsEmptyEstimate(const StepRecord& s) {
@@ -156,65 +149,64 @@ std::string InvalidEstimateReason(const Views& views, const Estimate& estimate) 
   return "";
 }
 
-RunMetrics ComputeMetrics(const std::vector<StepRecord>& steps, std::uint64_t bootstrap_seed) {
-  RunMetrics m;
-  m.steps = static_cast<int>(steps.size());
+void MetricsAccumulator::Add(const StepRecord& s) {
+  ++steps_;
+  const bool empty = IsEmptyEstimate(s);
+  const bool truth_known = TruthKnown(s);
 
-  std::vector<double> areas;
-  std::vector<double> squared_errors;
-  std::vector<double> times;
-  int judged = 0;
-  int consistent = 0;
-  std::vector<CorridorSums> corridors;  // in order of first appearance
-
-  for (const StepRecord& s : steps) {
-    const bool empty = IsEmptyEstimate(s);
-    const bool truth_known = TruthKnown(s);
-
-    if (!empty && !std::isnan(s.area)) areas.push_back(s.area);
-
-    // Paper 004 eq. 31 over the steps whose truth is known; an empty box
-    // holds nothing, so it counts as inconsistent whatever contained says.
-    if (s.contained != -1 || (empty && truth_known)) {
-      ++judged;
-      if (!empty && s.contained == 1) ++consistent;
-    }
-
-    if (!std::isnan(s.centre_error)) squared_errors.push_back(s.centre_error * s.centre_error);
-    if (!std::isnan(s.solve_time_s)) times.push_back(s.solve_time_s);
-
-    for (const VariableRecord& v : s.vars) {
-      auto it = std::find_if(corridors.begin(), corridors.end(),
-                             [&](const CorridorSums& c) { return c.corridor.var == v.name; });
-      if (it == corridors.end()) {
-        CorridorSums c;
-        c.corridor.var = v.name;
-        c.corridor.min_lower = std::numeric_limits<double>::infinity();
-        c.corridor.max_upper = -std::numeric_limits<double>::infinity();
-        corridors.push_back(c);
-        it = corridors.end() - 1;
-      }
-      if (empty || std::isnan(v.truth)) continue;
-      const double lower = v.lo - v.truth;
-      const double upper = v.hi - v.truth;
-      it->sum_lower += lower;
-      it->sum_upper += upper;
-      it->corridor.min_lower = std::min(it->corridor.min_lower, lower);
-      it->corridor.max_upper = std::max(it->corridor.max_upper, upper);
-      ++it->count;
-    }
+  if (!empty && !std::isnan(s.area)) {
+    area_sum_ += s.area;
+    ++areas_;
   }
 
-  m.mean_area = Mean(areas);
-  m.consistency_rate = judged == 0 ? kNaN : static_cast<double>(consistent) / judged;
-  m.centre_rmse = squared_errors.empty() ? kNaN : std::sqrt(Mean(squared_errors));
+  // Paper 004 eq. 31 over the steps whose truth is known; an empty box
+  // holds nothing, so it counts as inconsistent whatever contained says.
+  if (s.contained != -1 || (empty && truth_known)) {
+    ++judged_;
+    if (!empty && s.contained == 1) ++consistent_;
+  }
 
-  m.time_mean_s = Mean(times);
-  m.time_median_s = Quantile(times, 0.5);
-  m.time_p90_s = Quantile(times, 0.9);
-  BootstrapMeanInterval(times, bootstrap_seed, &m.time_mean_ci_lo_s, &m.time_mean_ci_hi_s);
+  if (!std::isnan(s.centre_error)) {
+    squared_error_sum_ += s.centre_error * s.centre_error;
+    ++errors_;
+  }
+  if (!std::isnan(s.solve_time_s)) times_.push_back(s.solve_time_s);
 
-  for (CorridorSums& c : corridors) {
+  for (const VariableRecord& v : s.vars) {
+    auto it = std::find_if(corridors_.begin(), corridors_.end(),
+                           [&](const CorridorSums& c) { return c.corridor.var == v.name; });
+    if (it == corridors_.end()) {
+      CorridorSums c;
+      c.corridor.var = v.name;
+      c.corridor.min_lower = std::numeric_limits<double>::infinity();
+      c.corridor.max_upper = -std::numeric_limits<double>::infinity();
+      corridors_.push_back(c);
+      it = corridors_.end() - 1;
+    }
+    if (empty || std::isnan(v.truth)) continue;
+    const double lower = v.lo - v.truth;
+    const double upper = v.hi - v.truth;
+    it->sum_lower += lower;
+    it->sum_upper += upper;
+    it->corridor.min_lower = std::min(it->corridor.min_lower, lower);
+    it->corridor.max_upper = std::max(it->corridor.max_upper, upper);
+    ++it->count;
+  }
+}
+
+RunMetrics MetricsAccumulator::Finish(std::uint64_t bootstrap_seed) const {
+  RunMetrics m;
+  m.steps = steps_;
+  m.mean_area = areas_ == 0 ? kNaN : area_sum_ / static_cast<double>(areas_);
+  m.consistency_rate = judged_ == 0 ? kNaN : static_cast<double>(consistent_) / judged_;
+  m.centre_rmse = errors_ == 0 ? kNaN : std::sqrt(squared_error_sum_ / static_cast<double>(errors_));
+
+  m.time_mean_s = Mean(times_);
+  m.time_median_s = Quantile(times_, 0.5);
+  m.time_p90_s = Quantile(times_, 0.9);
+  BootstrapMeanInterval(times_, bootstrap_seed, &m.time_mean_ci_lo_s, &m.time_mean_ci_hi_s);
+
+  for (CorridorSums c : corridors_) {
     if (c.count == 0) {
       c.corridor.mean_lower = c.corridor.mean_upper = kNaN;
       c.corridor.min_lower = c.corridor.max_upper = kNaN;
@@ -225,6 +217,12 @@ RunMetrics ComputeMetrics(const std::vector<StepRecord>& steps, std::uint64_t bo
     m.corridors.push_back(c.corridor);
   }
   return m;
+}
+
+RunMetrics ComputeMetrics(const std::vector<StepRecord>& steps, std::uint64_t bootstrap_seed) {
+  MetricsAccumulator metrics;
+  for (const StepRecord& s : steps) metrics.Add(s);
+  return metrics.Finish(bootstrap_seed);
 }
 
 }  // namespace icp

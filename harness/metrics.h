@@ -27,6 +27,33 @@ StepRecord MeasureStep(const Step& step, const Estimate& estimate);
 // a periodic component is compared modulo its period).
 std::string InvalidEstimateReason(const Views& views, const Estimate& estimate);
 
+// The metrics of a run accumulated one step at a time, so a run of any
+// length is measured without keeping its steps (only their solve times, for
+// the median and the bootstrap). Finish gives exactly what ComputeMetrics
+// gives over the same steps in the same order.
+class MetricsAccumulator {
+ public:
+  void Add(const StepRecord& step);
+  RunMetrics Finish(std::uint64_t bootstrap_seed = 1) const;
+
+ private:
+  struct CorridorSums {
+    Corridor corridor;
+    double sum_lower = 0;
+    double sum_upper = 0;
+    int count = 0;
+  };
+  int steps_ = 0;
+  double area_sum_ = 0;
+  int areas_ = 0;
+  double squared_error_sum_ = 0;
+  int errors_ = 0;
+  int judged_ = 0;
+  int consistent_ = 0;
+  std::vector<double> times_;
+  std::vector<CorridorSums> corridors_;  // in order of first appearance
+};
+
 // Aggregates steps: mean area, consistency rate, centre RMSE, corridors, and
 // mean/median/p90 solve time with a bootstrap 95% interval of the mean
 // (resamples drawn with a generator seeded by bootstrap_seed, so reports are

@@ -521,7 +521,9 @@ bool SameMeasurement(const Attempt& a, const Attempt& b) {
 // Writes one run with its steps, replacing a run with the same key (whose
 // summary goes to attempts first, so no measurement vanishes silently). Runs
 // inside the caller's transaction.
-void WriteRun(sqlite3* db, const std::string& path, const RunRecord& run) {
+// The steps come from next_step (run.steps is not read): a run of any
+// length is written without holding its steps.
+void WriteRun(sqlite3* db, const std::string& path, const RunRecord& run, const StepSource& next_step) {
   const std::string key = run.spec.Key();
   {
     if (auto stored = StoredSummary(db, path, key)) {
@@ -593,7 +595,8 @@ void WriteRun(sqlite3* db, const std::string& path, const RunRecord& run) {
   Statement value_insert(db, path,
                          "INSERT INTO step_values (run_id, step, var, pos, lo, hi, truth) "
                          "VALUES (?,?,?,?,?,?,?)");
-  for (const StepRecord& s : run.steps) {
+  StepRecord s;
+  while (next_step(&s)) {
     step_insert.Int(1, run_id);
     step_insert.Int(2, s.step);
     step_insert.Text(3, s.status);
@@ -914,10 +917,20 @@ std::vector<StoredRun> ResultsStore::StoredRuns() const {
   return runs;
 }
 
-void ResultsStore::Insert(const RunRecord& run) {
+void ResultsStore::Insert(const RunRecord& run) { Insert(run, StepsOf(run)); }
+
+void ResultsStore::Insert(const RunRecord& run, const StepSource& steps) {
   if (read_only_) throw StoreError("results store '" + path_ + "': opened read-only");
   std::lock_guard<std::mutex> lock(mutex_);
-  InTransaction(db_, path_, [&] { WriteRun(db_, path_, run); });
+  InTransaction(db_, path_, [&] { WriteRun(db_, path_, run, steps); });
+}
+
+StepSource StepsOf(const RunRecord& run) {
+  return [&run, next = std::size_t{0}](StepRecord* step) mutable {
+    if (next == run.steps.size()) return false;
+    *step = run.steps[next++];
+    return true;
+  };
 }
 
 std::vector<Attempt> ResultsStore::Attempts() const {
@@ -951,7 +964,7 @@ int ResultsStore::MergeFrom(const std::string& other_path) {
           continue;
         }
       }
-      WriteRun(db_, path_, run);  // a replaced copy goes to attempts
+      WriteRun(db_, path_, run, StepsOf(run));  // a replaced copy goes to attempts
       ++copied;
     }
   });
@@ -1066,7 +1079,7 @@ MergeSummary MergeStores(const std::string& out_dir, const std::vector<std::stri
       InTransaction(out.db_, tmp_path, [&] {
         for (const std::string& key : order) {
           const Chosen& c = chosen.at(key);
-          WriteRun(out.db_, tmp_path, *c.run);
+          WriteRun(out.db_, tmp_path, *c.run, StepsOf(*c.run));
           if (c.input >= (out_exists ? 1u : 0u)) ++summary.from_input[c.input - (out_exists ? 1 : 0)];
           ++summary.runs;
         }

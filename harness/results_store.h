@@ -48,6 +48,7 @@
 #ifndef ICPBENCH_HARNESS_RESULTS_STORE_H_
 #define ICPBENCH_HARNESS_RESULTS_STORE_H_
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -66,6 +67,12 @@ class StoreError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// Steps one at a time: fills *step and returns true, or returns false after
+// the last.
+using StepSource = std::function<bool(StepRecord*)>;
+// The steps of run.steps (the record must outlive the source).
+StepSource StepsOf(const RunRecord& run);
 
 // A stored run's key and status (what a resume decides on).
 struct StoredRun {
@@ -124,6 +131,10 @@ class ResultsStore {
   // Appends a run with its steps in one transaction; a run with the same key
   // is replaced (a retry, --force), its summary kept in table attempts.
   void Insert(const RunRecord& run);
+  // The same with the steps read one at a time from `steps` (run.steps is
+  // not read), so a long run is stored in memory independent of its length.
+  // An exception from `steps` rolls the run back and propagates.
+  void Insert(const RunRecord& run, const StepSource& steps);
   // The replaced run summaries, by key then attempt.
   std::vector<Attempt> Attempts() const;
   // Every stored run, in insertion order; steps are loaded only if asked.

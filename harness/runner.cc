@@ -15,6 +15,8 @@
 #include <cstring>
 #include <deque>
 #include <filesystem>
+#include <fstream>
+#include <memory>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <ostream>
@@ -43,7 +45,15 @@ double Seconds(Clock::duration d) { return std::chrono::duration<double>(d).coun
 }  // namespace
 
 RunRecord ExecuteRun(const RunSpec& spec) {
+  std::vector<StepRecord> steps;
+  RunRecord record = ExecuteRun(spec, [&](const StepRecord& s) { steps.push_back(s); });
+  record.steps = std::move(steps);
+  return record;
+}
+
+RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
   RunRecord record;
+  MetricsAccumulator metrics;
   record.spec = spec;
   const auto start = Clock::now();
   int step_index = 0;
@@ -74,7 +84,8 @@ RunRecord ExecuteRun(const RunSpec& spec) {
       for (const Property& p : step.annotations) r.properties.push_back(p);
       for (Property& p : result.estimate->Extras()) r.properties.push_back(std::move(p));
       if (!result.summary.message.empty()) r.properties.push_back({"message", result.summary.message});
-      record.steps.push_back(std::move(r));
+      sink(r);  // first: a step the sink could not take is not counted
+      metrics.Add(r);
       if (result.summary.status == ContractStatus::kStopped && stop.ShouldStop()) {
         record.status = RunStatus::kTimeout;
         record.reason = "time limit of " + FormatDouble(spec.timeout_s) + " s reached at step " +
@@ -101,7 +112,7 @@ RunRecord ExecuteRun(const RunSpec& spec) {
   }
   if (estimator) record.properties = estimator->RunProperties();
   record.wall_time_s = Seconds(Clock::now() - start);
-  record.metrics = ComputeMetrics(record.steps, spec.seed);
+  record.metrics = metrics.Finish(spec.seed);
   return record;
 }
 
@@ -161,43 +172,129 @@ Properties PropertiesFromJson(const nlohmann::json& j) {
   return out;
 }
 
-std::string Serialize(const RunRecord& r) {
-  nlohmann::json steps = nlohmann::json::array();
-  for (const StepRecord& s : r.steps) {
-    nlohmann::json vars = nlohmann::json::array();
-    for (const VariableRecord& v : s.vars) vars.push_back({v.name, D(v.lo), D(v.hi), D(v.truth)});
-    steps.push_back({s.step, s.status, vars, s.contained, D(s.area), D(s.centre_error),
-                     D(s.solve_time_s), s.estimate, PropertiesToJson(s.properties)});
-  }
-  nlohmann::json out = {{"status", ToString(r.status)}, {"reason", r.reason},
-                        {"wall_time_s", D(r.wall_time_s)}, {"steps", steps},
-                        {"properties", PropertiesToJson(r.properties)}};
-  return out.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+nlohmann::json StepToJson(const StepRecord& s) {
+  nlohmann::json vars = nlohmann::json::array();
+  for (const VariableRecord& v : s.vars) vars.push_back({v.name, D(v.lo), D(v.hi), D(v.truth)});
+  return {s.step, s.status, vars, s.contained, D(s.area), D(s.centre_error),
+          D(s.solve_time_s), s.estimate, PropertiesToJson(s.properties)};
 }
 
-RunRecord Deserialize(const std::string& text, const RunSpec& spec) {
+StepRecord StepFromJson(const nlohmann::json& s) {
+  StepRecord sr;
+  sr.step = s.at(0).get<int>();
+  sr.status = s.at(1).get<std::string>();
+  for (const auto& v : s.at(2)) sr.vars.push_back({v.at(0).get<std::string>(), D(v.at(1)), D(v.at(2)), D(v.at(3))});
+  sr.contained = s.at(3).get<int>();
+  sr.area = D(s.at(4));
+  sr.centre_error = D(s.at(5));
+  sr.solve_time_s = D(s.at(6));
+  sr.estimate = s.at(7).get<std::string>();
+  sr.properties = PropertiesFromJson(s.at(8));
+  return sr;
+}
+
+nlohmann::json MetricsToJson(const RunMetrics& m) {
+  nlohmann::json corridors = nlohmann::json::array();
+  for (const Corridor& c : m.corridors)
+    corridors.push_back({c.var, D(c.mean_lower), D(c.mean_upper), D(c.min_lower), D(c.max_upper)});
+  return {m.steps, D(m.mean_area), D(m.consistency_rate), D(m.centre_rmse), D(m.time_mean_s),
+          D(m.time_median_s), D(m.time_p90_s), D(m.time_mean_ci_lo_s), D(m.time_mean_ci_hi_s),
+          corridors};
+}
+
+RunMetrics MetricsFromJson(const nlohmann::json& j) {
+  RunMetrics m;
+  m.steps = j.at(0).get<int>();
+  double* fields[] = {&m.mean_area, &m.consistency_rate, &m.centre_rmse, &m.time_mean_s,
+                      &m.time_median_s, &m.time_p90_s, &m.time_mean_ci_lo_s, &m.time_mean_ci_hi_s};
+  for (std::size_t i = 0; i < std::size(fields); ++i) *fields[i] = D(j.at(i + 1));
+  for (const auto& c : j.at(9))
+    m.corridors.push_back({c.at(0).get<std::string>(), D(c.at(1)), D(c.at(2)), D(c.at(3)), D(c.at(4))});
+  return m;
+}
+
+std::string Dump(const nlohmann::json& j) {
+  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+// The run without its steps (they went to the step file), for the pipe.
+std::string SerializeSummary(const RunRecord& r) {
+  return Dump({{"status", ToString(r.status)}, {"reason", r.reason},
+               {"wall_time_s", D(r.wall_time_s)}, {"metrics", MetricsToJson(r.metrics)},
+               {"properties", PropertiesToJson(r.properties)}});
+}
+
+RunRecord DeserializeSummary(const std::string& text, const RunSpec& spec) {
   const nlohmann::json j = nlohmann::json::parse(text);
   RunRecord r;
   r.spec = spec;
   r.status = ParseRunStatus(j.at("status").get<std::string>());
   r.reason = j.at("reason").get<std::string>();
   r.wall_time_s = D(j.at("wall_time_s"));
-  for (const auto& s : j.at("steps")) {
-    StepRecord sr;
-    sr.step = s.at(0).get<int>();
-    sr.status = s.at(1).get<std::string>();
-    for (const auto& v : s.at(2)) sr.vars.push_back({v.at(0).get<std::string>(), D(v.at(1)), D(v.at(2)), D(v.at(3))});
-    sr.contained = s.at(3).get<int>();
-    sr.area = D(s.at(4));
-    sr.centre_error = D(s.at(5));
-    sr.solve_time_s = D(s.at(6));
-    sr.estimate = s.at(7).get<std::string>();
-    sr.properties = PropertiesFromJson(s.at(8));
-    r.steps.push_back(std::move(sr));
-  }
+  r.metrics = MetricsFromJson(j.at("metrics"));
   r.properties = PropertiesFromJson(j.at("properties"));
-  r.metrics = ComputeMetrics(r.steps, spec.seed);
   return r;
+}
+
+// A worker's step file that cannot be read back: the run failed, the sweep
+// goes on.
+class WorkerOutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The worker writes one JSON line per step to its step file as the run goes
+// (so neither it nor the parent holds the steps); the parent reads them back
+// one at a time into the store. Write errors throw (the run fails with the
+// reason).
+class StepFileWriter {
+ public:
+  explicit StepFileWriter(const std::string& path) : path_(path), file_(std::fopen(path.c_str(), "we")) {
+    if (file_ == nullptr) Fail();
+  }
+  ~StepFileWriter() {
+    if (file_ != nullptr) std::fclose(file_);
+  }
+  StepFileWriter(const StepFileWriter&) = delete;
+  StepFileWriter& operator=(const StepFileWriter&) = delete;
+  void Write(const StepRecord& s) {
+    const std::string line = Dump(StepToJson(s)) + "\n";
+    if (std::fwrite(line.data(), 1, line.size(), file_) != line.size()) Fail();
+  }
+  void Close() {
+    std::FILE* f = file_;
+    file_ = nullptr;
+    if (std::fclose(f) != 0) Fail();
+  }
+
+ private:
+  [[noreturn]] void Fail() const {
+    throw std::runtime_error("cannot write the step file " + path_ + ": " + std::strerror(errno));
+  }
+  std::string path_;
+  std::FILE* file_;
+};
+
+// Reads the steps back; expects exactly `count` of them.
+StepSource ReadStepFile(const std::string& path, int count) {
+  auto in = std::make_shared<std::ifstream>(path);
+  if (!*in) throw WorkerOutputError("cannot open the step file " + path);
+  return [in, path, count, read = 0](StepRecord* step) mutable {
+    std::string line;
+    if (!std::getline(*in, line)) {
+      if (read != count)
+        throw WorkerOutputError("the step file " + path + " holds " + std::to_string(read) +
+                                " steps, the run " + std::to_string(count));
+      return false;
+    }
+    try {
+      *step = StepFromJson(nlohmann::json::parse(line));
+    } catch (const std::exception& e) {
+      throw WorkerOutputError("step file " + path + " line " + std::to_string(read + 1) + ": " + e.what());
+    }
+    ++read;
+    return true;
+  };
 }
 
 bool WriteAll(int fd, const std::string& data) {
@@ -222,6 +319,7 @@ struct Worker {
   double hard_limit_s = 0;  // the worker's own limit (alarm, CPU); 0: none
   bool killed = false;
   PlannedRun run;
+  std::string step_file;  // where the worker writes its steps (removed when it is done)
 };
 
 class Progress {
@@ -274,7 +372,10 @@ class Progress {
   Clock::time_point start_;
 };
 
-RunRecord Finalize(Worker& w, int wait_status) {
+// The finished worker's run without its steps; *steps_in_file tells whether
+// the worker wrote them to w.step_file (a run it reported itself).
+RunRecord Finalize(Worker& w, int wait_status, bool* steps_in_file) {
+  *steps_in_file = false;
   RunRecord r;
   r.spec = w.run.spec;
   if (w.killed) {
@@ -295,7 +396,8 @@ RunRecord Finalize(Worker& w, int wait_status) {
     r.reason = "worker exited with code " + std::to_string(WEXITSTATUS(wait_status));
   } else {
     try {
-      r = Deserialize(w.output, w.run.spec);
+      r = DeserializeSummary(w.output, w.run.spec);
+      *steps_in_file = true;
     } catch (const std::exception& e) {
       r.status = RunStatus::kFailed;
       r.reason = std::string("invalid result: unreadable worker output (") + e.what() + ")";
@@ -423,8 +525,23 @@ void StopWorkers(std::vector<Worker>& workers) {
     close(w.fd);
     while (waitpid(w.pid, nullptr, 0) < 0 && errno == EINTR) {
     }
+    unlink(w.step_file.c_str());
   }
   workers.clear();
+}
+
+constexpr std::string_view kStepFilePrefix = ".steps-";
+constexpr std::string_view kStepFileSuffix = ".ndjson";
+
+// Step files left by a sweep that was killed before it could remove them
+// (the directory lock says no other sweep writes here).
+void RemoveStaleStepFiles(const std::string& dir) {
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.starts_with(kStepFilePrefix) && name.ends_with(kStepFileSuffix))
+      std::filesystem::remove(entry.path(), ec);
+  }
 }
 
 }  // namespace
@@ -437,6 +554,7 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
     if (ec) ThrowErrno("cannot create the output directory " + options.out_dir, ec.value());
   }
   const DirectoryLock lock(options.out_dir, progress_out);
+  RemoveStaleStepFiles(options.out_dir);
   ResultsStore store(StorePath(options.out_dir));
   SweepSummary summary;
   std::deque<PlannedRun> queue;
@@ -457,10 +575,22 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
     queue.push_back(spec.runs[i]);
   }
   Progress progress(progress_out, terminal, static_cast<int>(queue.size()));
-  auto store_record = [&](RunRecord r, const std::string& experiment) {
+  // step_file: where the run's steps are (a worker's), else r.steps.
+  auto store_record = [&](RunRecord r, const std::string& experiment, const std::string& step_file = "") {
     r.spec_file = spec.file + (experiment.empty() ? "" : "#" + experiment);
     r.provenance = CurrentProvenance();
-    store.Insert(r);
+    if (step_file.empty()) {
+      store.Insert(r);
+    } else {
+      try {
+        store.Insert(r, ReadStepFile(step_file, r.metrics.steps));
+      } catch (const WorkerOutputError& e) {  // rolled back: stored as failed, without steps
+        r.status = RunStatus::kFailed;
+        r.reason = std::string("invalid result: unreadable worker output (") + e.what() + ")";
+        r.metrics = RunMetrics{};
+        store.Insert(r);
+      }
+    }
     switch (r.status) {
       case RunStatus::kOk: ++summary.ok; break;
       case RunStatus::kFailed: ++summary.failed; break;
@@ -482,6 +612,7 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
   std::string start_error;  // pipe() or fork() failed: start nothing more
   int start_errno = 0;
   const int jobs = std::max(1, options.jobs);
+  int workers_started = 0;
   while ((!queue.empty() && start_errno == 0) || !workers.empty()) {
     if (g_stop_signal != 0) break;
     while (static_cast<int>(workers.size()) < jobs && !queue.empty() && start_errno == 0) {
@@ -508,6 +639,11 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
         queue.push_front(std::move(run));
         break;
       }
+      const std::string step_file =
+          (std::filesystem::path(options.out_dir) /
+           (std::string(kStepFilePrefix) + std::to_string(getpid()) + "-" + std::to_string(++workers_started) +
+            std::string(kStepFileSuffix)))
+              .string();
       std::fflush(nullptr);
       const pid_t parent = getpid();
       const pid_t pid = fork();
@@ -525,7 +661,18 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
         close(lock.fd());
         for (const Worker& w : workers) close(w.fd);
         signal(SIGPIPE, SIG_IGN);
-        const bool ok = WriteAll(fds[1], Serialize(ExecuteRun(run.spec)));
+        RunRecord record;
+        record.spec = run.spec;
+        try {
+          StepFileWriter steps(step_file);
+          record = ExecuteRun(run.spec, [&](const StepRecord& s) { steps.Write(s); });
+          steps.Close();
+        } catch (const std::exception& e) {  // the step file failed (a failed write is caught in ExecuteRun)
+          record.status = RunStatus::kFailed;
+          record.reason = e.what();
+          record.metrics = RunMetrics{};
+        }
+        const bool ok = WriteAll(fds[1], SerializeSummary(record));
         _exit(ok ? 0 : 3);
       }
       close(fds[1]);
@@ -536,6 +683,7 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
       w.kill_after_s = kill_after_s;
       w.hard_limit_s = hard_limit_s;
       w.run = std::move(run);
+      w.step_file = step_file;
       workers.push_back(std::move(w));
     }
     if (workers.empty()) continue;
@@ -567,7 +715,10 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
       int status = 0;
       while (waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {
       }
-      store_record(Finalize(w, status), w.run.experiment);
+      bool steps_in_file = false;
+      RunRecord r = Finalize(w, status, &steps_in_file);
+      store_record(std::move(r), w.run.experiment, steps_in_file ? w.step_file : "");
+      unlink(w.step_file.c_str());
       fds.erase(fds.begin() + static_cast<std::ptrdiff_t>(i));
       workers.erase(workers.begin() + static_cast<std::ptrdiff_t>(i));
     }

@@ -4,9 +4,14 @@
 // failed with its reason while the sweep goes on. Each finished run is
 // written to the results store at once; runs already stored are skipped,
 // except failed and timed-out ones, which are retried (unless no_retry).
+// A worker writes each step to a file of its own in the output directory as
+// the run goes (.steps-*.ndjson) and its run's summary to a pipe at the end;
+// the parent streams that file into the store, so neither process holds a
+// run's steps and the parent's memory does not grow with a run's length.
 #ifndef ICPBENCH_HARNESS_RUNNER_H_
 #define ICPBENCH_HARNESS_RUNNER_H_
 
+#include <functional>
 #include <iosfwd>
 #include <stdexcept>
 #include <string>
@@ -62,6 +67,13 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
 // each contracted box checked and recorded. Never throws: an exception or an
 // invalid box becomes a failed record with its reason.
 RunRecord ExecuteRun(const RunSpec& spec);
+
+// Receives each step's record as a run makes it.
+using StepSink = std::function<void(const StepRecord&)>;
+// The same, each step handed to sink instead of kept (record.steps stays
+// empty; the metrics are accumulated as the steps go), so memory does not
+// grow with the run. A sink that throws fails the run at that step.
+RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink);
 
 // "i/n" -> (i, n) with 0 <= i < n; throws std::invalid_argument.
 std::pair<int, int> ParseShard(const std::string& text);

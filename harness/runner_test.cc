@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -14,6 +15,7 @@
 
 #include "algorithms/fault/fault.h"
 #include "algorithms/registry.h"
+#include "harness/metrics.h"
 #include "harness/results_store.h"
 
 namespace icp {
@@ -23,6 +25,30 @@ std::string FreshDir(const std::string& name) {
   const std::string dir = ::testing::TempDir() + "runner_" + name;
   std::filesystem::remove_all(dir);
   return dir;
+}
+
+// The peak resident memory of this process, KiB, after resetting it to the
+// current one (/proc/self/clear_refs, Linux >= 4.0); -1 where unsupported.
+long PeakMemoryKiB() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmHWM:", 0) == 0) return std::stol(line.substr(6));
+  }
+  return -1;
+}
+long ResetPeakMemoryKiB() {
+  std::ofstream("/proc/self/clear_refs") << "5";
+  return PeakMemoryKiB();
+}
+
+std::vector<std::string> StepFilesIn(const std::string& dir) {
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind(".steps-", 0) == 0) files.push_back(name);
+  }
+  return files;
 }
 
 SweepSummary Sweep(const std::string& yaml, const std::string& dir, int jobs = 2,
@@ -258,6 +284,45 @@ TEST(RunnerTest, AKilledSweepLosesOnlyTheRunsInFlight) {
   SweepSummary resumed = Sweep(yaml, dir, 2);
   EXPECT_EQ(resumed.already_stored, static_cast<int>(kept.size()));
   EXPECT_EQ(resumed.ok + resumed.already_stored, 16);
+  EXPECT_TRUE(StepFilesIn(dir).empty());  // the killed workers' files are gone
+}
+
+// The parent (this process) streams a worker's steps into the store: its
+// peak memory grows by far less than the run's steps take (they used to
+// cross the pipe as one JSON text parsed whole: ~1.4 kB a step in the
+// parent), and no step file is left behind.
+TEST(RunnerTest, TheParentsMemoryDoesNotGrowWithTheRunsLength) {
+  const std::string dir = FreshDir("long_run");
+  const int steps = 20000;
+  const long before = ResetPeakMemoryKiB();
+  if (before < 0) GTEST_SKIP() << "no /proc/self/status VmHWM here";
+  const SweepSummary s = Sweep("algorithms: [hc4]\nproblems: [{name: car-track, params: {w: 1, steps: " +
+                                   std::to_string(steps) + "}}]\n",
+                               dir, 1);
+  const long growth_kib = PeakMemoryKiB() - before;
+  ASSERT_EQ(s.ok, 1);
+  EXPECT_LT(growth_kib, 16 * 1024) << "the parent's peak memory grew by " << growth_kib << " KiB";
+  EXPECT_TRUE(StepFilesIn(dir).empty());
+  const std::vector<RunRecord> runs = ResultsStore(StorePath(dir)).LoadRuns(true);
+  ASSERT_EQ(runs.size(), 1u);
+  ASSERT_EQ(runs[0].steps.size(), static_cast<std::size_t>(steps));
+  EXPECT_EQ(runs[0].metrics.steps, steps);
+  // The worker's streamed metrics are those of the stored steps.
+  const RunMetrics again = ComputeMetrics(runs[0].steps, runs[0].spec.seed);
+  EXPECT_EQ(again.mean_area, runs[0].metrics.mean_area);
+  EXPECT_EQ(again.time_median_s, runs[0].metrics.time_median_s);
+  EXPECT_EQ(again.consistency_rate, runs[0].metrics.consistency_rate);
+}
+
+// A step file left by a killed sweep is removed by the next one on the
+// directory; one a worker leaves unreadable fails its run, not the sweep.
+TEST(RunnerTest, StaleStepFilesAreRemoved) {
+  const std::string dir = FreshDir("stale_steps");
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "/.steps-1-1.ndjson") << "[1, \"half a line";
+  const SweepSummary s = Sweep("algorithms: [hc4]\nproblems: [chain]\n", dir, 1);
+  EXPECT_EQ(s.ok, 1);
+  EXPECT_TRUE(StepFilesIn(dir).empty());
 }
 
 }  // namespace
