@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "core/random.h"
@@ -127,6 +128,67 @@ StepRecord MeasureStep(const Step& step, const Estimate& estimate) {
       r.centre_error = std::hypot(centre[space.x] - truth[space.x], centre[space.y] - truth[space.y]);
   }
   return r;
+}
+
+void PostStateJudge::Judge(const Step& step, Properties* properties) {
+  if (!step.truth.empty()) truths_.emplace_back(step.views.step, step.truth);
+  const std::optional<double> post = NumberProperty(*properties, "post_step");
+  if (!post) return;
+  const int state = static_cast<int>(*post);
+  while (!truths_.empty() && truths_.front().first < state) truths_.pop_front();
+  if (truths_.empty() || truths_.front().first != state) return;  // its truth is unknown
+  const std::vector<double>& truth = truths_.front().second;
+  const StateSpace& space = step.views.space;
+  std::vector<double> lo(space.size()), hi(space.size()), t(space.size());
+  bool contained = true;
+  for (int c = 0; c < space.size(); ++c) {
+    const std::string& name = space.names[c];
+    const auto l = NumberProperty(*properties, "post_" + name + "_lo");
+    const auto h = NumberProperty(*properties, "post_" + name + "_hi");
+    if (!l || !h) return;  // not every component reported
+    lo[c] = *l;
+    hi[c] = *h;
+    const bool empty = !(lo[c] <= hi[c]);
+    t[c] = empty ? truth[c] : Representative(truth[c], space.Period(c), Interval(lo[c], hi[c]));
+    contained = contained && !empty && lo[c] <= t[c] && t[c] <= hi[c];
+  }
+  for (int c = 0; c < space.size(); ++c) properties->push_back({"post_" + space.names[c] + "_truth", t[c]});
+  properties->push_back({"post_contained", static_cast<std::int64_t>(contained ? 1 : 0)});
+  const int x = space.x, y = space.y;
+  if (x < 0 || y < 0 || !(lo[x] <= hi[x]) || !(lo[y] <= hi[y])) return;
+  properties->push_back(
+      {"post_area", (Interval(Interval(lo[x], hi[x]).Width()) * Interval(Interval(lo[y], hi[y]).Width())).hi()});
+  properties->push_back(
+      {"post_centre_error", std::hypot((lo[x] + hi[x]) / 2 - t[x], (lo[y] + hi[y]) / 2 - t[y])});
+}
+
+std::vector<StepRecord> PostLocalizedStates(const std::vector<StepRecord>& steps) {
+  std::vector<StepRecord> states;
+  for (const StepRecord& s : steps) {
+    const std::optional<double> post = NumberProperty(s.properties, "post_step");
+    const std::optional<double> contained = NumberProperty(s.properties, "post_contained");
+    if (!post || !contained) continue;
+    StepRecord r;
+    r.step = static_cast<int>(*post);
+    r.estimate = "box";
+    r.status = s.status;
+    r.contained = static_cast<int>(*contained);
+    r.area = NumberProperty(s.properties, "post_area").value_or(kNaN);
+    r.centre_error = NumberProperty(s.properties, "post_centre_error").value_or(kNaN);
+    r.solve_time_s = kNaN;
+    for (const VariableRecord& v : s.vars) {
+      const std::string prefix = "post_" + v.name;
+      r.vars.push_back({v.name, NumberProperty(s.properties, prefix + "_lo").value_or(kNaN),
+                        NumberProperty(s.properties, prefix + "_hi").value_or(kNaN),
+                        NumberProperty(s.properties, prefix + "_truth").value_or(kNaN)});
+    }
+    if (!states.empty() && states.back().step == r.step) {
+      states.back() = std::move(r);  // a later, final box of the same state
+    } else {
+      states.push_back(std::move(r));
+    }
+  }
+  return states;
 }
 
 std::string InvalidEstimateReason(const Views& views, const Estimate& estimate) {

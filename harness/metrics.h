@@ -3,6 +3,8 @@
 #define ICPBENCH_HARNESS_METRICS_H_
 
 #include <cstdint>
+#include <deque>
+#include <utility>
 #include <vector>
 
 #include "core/estimate.h"
@@ -26,6 +28,29 @@ StepRecord MeasureStep(const Step& step, const Estimate& estimate);
 // step's domains (the CSP view's newest state, the measurement set's prior;
 // a periodic component is compared modulo its period).
 std::string InvalidEstimateReason(const Views& views, const Estimate& estimate);
+
+// Judges the post-localized state an estimator reports (the properties
+// post_step, post_<name>_lo and post_<name>_hi: paper 004 §4.2, see
+// WindowEstimator) against that state's own truth, kept from the step that
+// estimated it: adds post_<name>_truth (a periodic one moved as in
+// MeasureStep), post_contained (1 or 0), post_area and post_centre_error
+// (when the state is planar). It keeps the truths of the steps not reported
+// yet: as many as the window is long, since post_step never goes back.
+class PostStateJudge {
+ public:
+  void Judge(const Step& step, Properties* properties);
+
+ private:
+  std::deque<std::pair<int, std::vector<double>>> truths_;  // (step, truth), by step
+};
+
+// The post-localized states of a run: one record per state time (its step
+// field), from the last step that reported it (the box it kept once it left
+// the window), with its bounds, truth, contained, area and centre error;
+// in the order of the states. Empty when no step reports post_step.
+// ComputeMetrics over them gives the post-localization's consistency,
+// corridors and mean area.
+std::vector<StepRecord> PostLocalizedStates(const std::vector<StepRecord>& steps);
 
 // The metrics of a run accumulated one step at a time, so a run of any
 // length is measured without keeping its steps (only their solve times, for

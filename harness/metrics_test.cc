@@ -188,5 +188,76 @@ TEST(ComputeMetricsTest, NaNAreaIsLeftOutOfMeanArea) {
   EXPECT_DOUBLE_EQ(m.centre_rmse, 0.1);
 }
 
+// A step of a planar state (x, y, periodic theta) whose truth is
+// (step, 0, 6.2) and whose estimator reported post as its properties.
+struct Step PlanarStep(int step) {
+  struct Step s;
+  s.views.step = step;
+  s.views.space.names = {"x", "y", "theta"};
+  s.views.space.x = 0;
+  s.views.space.y = 1;
+  s.views.space.periods = {0, 0, 2 * 3.141592653589793};
+  s.truth = {static_cast<double>(step), 0, 6.2};
+  return s;
+}
+Properties Post(int state, double x_lo, double x_hi, double theta_lo, double theta_hi) {
+  return {{"post_step", std::int64_t{state}}, {"post_x_lo", x_lo}, {"post_x_hi", x_hi},
+          {"post_y_lo", -1.0}, {"post_y_hi", 1.0}, {"post_theta_lo", theta_lo},
+          {"post_theta_hi", theta_hi}};
+}
+
+TEST(PostStateJudgeTest, JudgesAStateAgainstItsOwnTruth) {
+  PostStateJudge judge;
+  Properties p0 = Post(0, -1, 1, 6, 6.5);
+  judge.Judge(PlanarStep(0), &p0);
+  EXPECT_EQ(NumberProperty(p0, "post_contained"), 1);
+  EXPECT_EQ(NumberProperty(p0, "post_x_truth"), 0);
+  EXPECT_EQ(NumberProperty(p0, "post_area"), 4);
+  EXPECT_EQ(NumberProperty(p0, "post_centre_error"), 0);
+  Properties p1 = Post(0, 0.5, 1, 6, 6.5);  // step 1 reports state 0 again: x = 0 is out
+  judge.Judge(PlanarStep(1), &p1);
+  EXPECT_EQ(NumberProperty(p1, "post_contained"), 0);
+  EXPECT_EQ(NumberProperty(p1, "post_centre_error"), 0.75);
+  // Step 2 reports state 1 (truth x = 1), its heading one turn away: 6.2 - 2 pi is in it.
+  Properties p2 = Post(1, 0, 2, -0.2, 0);
+  judge.Judge(PlanarStep(2), &p2);
+  EXPECT_EQ(NumberProperty(p2, "post_contained"), 1);
+  EXPECT_NEAR(*NumberProperty(p2, "post_theta_truth"), 6.2 - 2 * 3.141592653589793, 1e-12);
+  Properties empty = Post(2, kInf, -kInf, kInf, -kInf);
+  judge.Judge(PlanarStep(3), &empty);
+  EXPECT_EQ(NumberProperty(empty, "post_contained"), 0);
+  EXPECT_FALSE(NumberProperty(empty, "post_area"));
+  Properties none;  // no post_step: nothing added
+  judge.Judge(PlanarStep(4), &none);
+  EXPECT_TRUE(none.empty());
+}
+
+TEST(PostLocalizedStatesTest, EachStateKeepsItsLastReport) {
+  PostStateJudge judge;
+  std::vector<StepRecord> steps;
+  const Properties reports[] = {Post(0, -1, 1, 6, 6.5), Post(0, -0.5, 0.5, 6, 6.5),
+                                Post(1, 0.5, 1.5, 6, 6.5), Post(2, 3, 4, 6, 6.5)};
+  for (int k = 0; k < 4; ++k) {
+    StepRecord r;
+    r.step = k;
+    r.status = "contracted";
+    r.vars = {{"x", 0, 0, 0}, {"y", 0, 0, 0}, {"theta", 0, 0, 0}};
+    r.properties = reports[k];
+    judge.Judge(PlanarStep(k), &r.properties);
+    steps.push_back(r);
+  }
+  const std::vector<StepRecord> states = PostLocalizedStates(steps);
+  ASSERT_EQ(states.size(), 3u);
+  EXPECT_EQ(states[0].step, 0);
+  EXPECT_EQ(states[0].vars[0].lo, -0.5);  // step 1's report, not step 0's
+  EXPECT_EQ(states[0].area, 2);
+  EXPECT_EQ(states[2].contained, 0);      // x = 2 is not in [3, 4]
+  const RunMetrics m = ComputeMetrics(states);
+  EXPECT_DOUBLE_EQ(m.consistency_rate, 2.0 / 3);
+  EXPECT_DOUBLE_EQ(m.mean_area, (2.0 + 2 + 2) / 3);
+  EXPECT_TRUE(std::isnan(m.time_mean_s));
+  EXPECT_TRUE(PostLocalizedStates(HandSteps()).empty());
+}
+
 }  // namespace
 }  // namespace icp

@@ -54,6 +54,7 @@ RunRecord ExecuteRun(const RunSpec& spec) {
 RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
   RunRecord record;
   MetricsAccumulator metrics;
+  PostStateJudge post_states;
   record.spec = spec;
   const auto start = Clock::now();
   int step_index = 0;
@@ -80,6 +81,7 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
       StepRecord r = MeasureStep(step, *result.estimate);
       r.status = std::string(ToString(result.summary.status));
       r.solve_time_s = result.solve_time_s >= 0 ? result.solve_time_s : solve_time;
+      post_states.Judge(step, &result.properties);
       for (Property& p : result.properties) r.properties.push_back(std::move(p));
       for (const Property& p : step.annotations) r.properties.push_back(p);
       for (Property& p : result.estimate->Extras()) r.properties.push_back(std::move(p));

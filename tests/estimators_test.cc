@@ -12,6 +12,7 @@
 
 #include "report/report.h"
 #include "harness/results_store.h"
+#include "harness/metrics.h"
 #include "harness/runner.h"
 #include "plots/figures.h"
 
@@ -115,6 +116,34 @@ TEST(EstimatorsTest, CarryNoneFirstAllAreOrderedAndKeepTheTruth) {
   // oldest state: the window's constraints already pass it on).
   EXPECT_GT(width_none, width_first);
   EXPECT_GE(width_first, width_all);
+}
+
+// Post-localization (paper 004 §4.2): every state that left the window has
+// a box that holds its truth, and, when every shared state is carried, one
+// inside the box it had when it was the newest (later windows only narrow
+// it); it is on the whole narrower than the real-time box.
+TEST(EstimatorsTest, PostLocalizedStatesKeepTheirTruthAndNarrowTheRealTimeBoxes) {
+  const std::vector<StepRecord> steps = Drive("all");
+  const std::vector<StepRecord> post = PostLocalizedStates(steps);
+  // States 0..194 were the oldest of some window (w = 5 spans 6 states).
+  ASSERT_EQ(post.size(), 200u - 5);
+  double width_real_time = 0, width_post = 0;
+  for (std::size_t j = 0; j < post.size(); ++j) {
+    SCOPED_TRACE("state " + std::to_string(j));
+    ASSERT_EQ(post[j].step, static_cast<int>(j));
+    EXPECT_EQ(post[j].contained, 1);
+    const StepRecord& real_time = steps[j];
+    for (std::size_t c = 0; c < 3; ++c) {
+      EXPECT_GE(post[j].vars[c].lo, real_time.vars[c].lo) << post[j].vars[c].name;
+      EXPECT_LE(post[j].vars[c].hi, real_time.vars[c].hi) << post[j].vars[c].name;
+      if (c < 2) {
+        width_real_time += real_time.vars[c].hi - real_time.vars[c].lo;
+        width_post += post[j].vars[c].hi - post[j].vars[c].lo;
+      }
+    }
+  }
+  EXPECT_LT(width_post, width_real_time);
+  EXPECT_EQ(ComputeMetrics(post).consistency_rate, 1.0);
 }
 
 }  // namespace

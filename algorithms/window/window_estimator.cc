@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
+#include <string>
 
 namespace icp {
 
@@ -51,6 +53,47 @@ Interval CarryInto(const Interval& fresh, const Interval& carried, double period
   return out;
 }
 
+namespace {
+// Paper 004 §4.2's post-localization and Fig. 2's second reading, as step
+// properties: the box of the window's oldest state (post_step, its time, and
+// post_<name>_lo/hi), which is the box that state keeps once the next window
+// drops it, smoothed by every later measurement of its windows; and the mean
+// x-y area of the window's states (window_mean_area). An empty box reports
+// the oldest state empty (+inf, -inf) and no area.
+void ReportWindowStates(const CspView& view, const StateSpace& space, const Box& box,
+                        Properties* out) {
+  if (view.states.empty()) return;
+  int oldest = view.states.front().time;
+  for (const StateRef& s : view.states) oldest = std::min(oldest, s.time);
+  out->push_back({"post_step", static_cast<std::int64_t>(oldest)});
+  const bool empty = box.IsEmpty();
+  for (std::size_t i = 0; i < view.states.size(); ++i) {
+    const StateRef& s = view.states[i];
+    if (s.time != oldest) continue;
+    const std::string& name = space.names[s.component];
+    out->push_back({"post_" + name + "_lo", empty ? kInf : box[i].lo()});
+    out->push_back({"post_" + name + "_hi", empty ? -kInf : box[i].hi()});
+  }
+  if (empty || space.x < 0 || space.y < 0) return;
+  // x and y of each state time, by position in the window.
+  std::map<int, std::pair<int, int>> xy;
+  for (std::size_t i = 0; i < view.states.size(); ++i) {
+    const StateRef& s = view.states[i];
+    auto [it, inserted] = xy.try_emplace(s.time, -1, -1);
+    if (s.component == space.x) it->second.first = static_cast<int>(i);
+    if (s.component == space.y) it->second.second = static_cast<int>(i);
+  }
+  double sum = 0;
+  int count = 0;
+  for (const auto& [time, ix_iy] : xy) {
+    if (ix_iy.first < 0 || ix_iy.second < 0) continue;
+    sum += (Interval(box[ix_iy.first].Width()) * Interval(box[ix_iy.second].Width())).hi();
+    ++count;
+  }
+  if (count > 0) out->push_back({"window_mean_area", sum / count});
+}
+}  // namespace
+
 WindowEstimator::WindowEstimator(ContractorFactory make_contractor, ParamMap contractor_params,
                                  Carry carry)
     : make_contractor_(make_contractor),
@@ -95,6 +138,7 @@ StepResult WindowEstimator::Step(const Views& views, const StopCondition& stop) 
                         std::to_string(initial.size()));
   total_work_ += result.summary.work;
   result.properties = WorkProperties(result.summary.work);
+  ReportWindowStates(view, views.space, box, &result.properties);
 
   Box newest = NewestState(view, box, views.space.size());
   if (box.IsEmpty()) newest.SetEmpty();

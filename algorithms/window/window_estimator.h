@@ -9,6 +9,11 @@
 //   all    every state the two windows share (a filter that forgets nothing).
 // An empty previous result (the track was lost) carries nothing.
 //
+// Each step also reports the window's oldest state's box (post_step,
+// post_<name>_lo/hi: paper 004's post-localization, the last report for a
+// state being its final box) and the mean x-y area of the window's states
+// (window_mean_area).
+//
 // Sound when the contractor is: a carried interval holds every solution of
 // the previous window, so intersecting it keeps every solution of this one.
 #ifndef ICPBENCH_ALGORITHMS_WINDOW_WINDOW_ESTIMATOR_H_

@@ -62,6 +62,44 @@ TEST(WindowEstimatorTest, CarriesStatesByIdentity) {
   }
 }
 
+TEST(WindowEstimatorTest, ReportsTheOldestStatesBoxForPostLocalization) {
+  WindowEstimator first(&MakeHC4, {}, Carry::kFirst);
+  for (int t = 1; t <= 3; ++t) {
+    const StepResult r = first.Step(TwoStateWindow(t), StopCondition());
+    EXPECT_EQ(NumberProperty(r.properties, "post_step"), t - 1);
+    // x[t-1] = x[t] - 1 with x[t] <= 10, from [-11 + t, 10] (carried).
+    EXPECT_EQ(NumberProperty(r.properties, "post_x_lo"), -11 + t) << t;
+    EXPECT_EQ(NumberProperty(r.properties, "post_x_hi"), 9) << t;
+    EXPECT_FALSE(NumberProperty(r.properties, "window_mean_area"));  // no y
+  }
+}
+
+// Two planar states, x[1] = x[0] + 1 and y[1] = y[0]: the mean area of the
+// window's states is the mean of their x-y boxes' areas.
+TEST(WindowEstimatorTest, ReportsTheMeanAreaOfTheWindowsStates) {
+  Views views;
+  views.step = 1;
+  views.space.names = {"x", "y"};
+  views.space.x = 0;
+  views.space.y = 1;
+  CspView v;
+  Expr x0 = v.csp.AddVariable("x[0]", Interval(0, 4));
+  Expr y0 = v.csp.AddVariable("y[0]", Interval(0, 2));
+  Expr x1 = v.csp.AddVariable("x[1]", Interval(2, 10));
+  Expr y1 = v.csp.AddVariable("y[1]", Interval(1, 10));
+  v.csp.AddConstraint(x1, Relation::kEq, x0 + v.csp.Constant(1));
+  v.csp.AddConstraint(y1, Relation::kEq, y0);
+  v.states = {{0, 0}, {0, 1}, {1, 0}, {1, 1}};
+  v.newest = 1;
+  views.csp = std::move(v);
+  WindowEstimator hc4(&MakeHC4, {}, Carry::kNone);
+  const StepResult r = hc4.Step(views, StopCondition());
+  // x[0] in [1, 4], y[0] in [1, 2]; x[1] in [2, 5], y[1] in [1, 2].
+  EXPECT_EQ(NumberProperty(r.properties, "window_mean_area"), (3.0 * 1 + 3.0 * 1) / 2);
+  EXPECT_EQ(NumberProperty(r.properties, "post_y_lo"), 1);
+  EXPECT_EQ(NumberProperty(r.properties, "post_x_hi"), 4);
+}
+
 TEST(WindowEstimatorTest, ContractorParamsLeaveCarryOut) {
   EXPECT_EQ(ContractorParams({{"carry", "all"}, {"ratio", "0.1"}}), (ParamMap{{"ratio", "0.1"}}));
   EXPECT_THROW(ParseCarry("some"), ParamError);
