@@ -1,6 +1,7 @@
 #include "experiments/registry.h"
 
 #include "experiments/paper000/paper000.h"
+#include "experiments/paper004/paper004.h"
 #include "experiments/thesis003/thesis003.h"
 
 namespace icp {
@@ -11,6 +12,8 @@ const std::vector<PaperInfo>& Papers() {
        &Paper000Figures},
       {"thesis003", "relaxed solvers on lines and beacons (Figs 5.2, 5.5-5.7, a table); marina sonar vs particle filter (ch. 6)",
        &Thesis003Tables, &Thesis003Figures},
+      {"paper004", "real-time vs post-localization and consistency on the car track (Figs 12-13)",
+       &Paper004Tables, &Paper004Figures},
   };
   return kPapers;
 }

@@ -204,7 +204,12 @@ std::string CorridorRange(const std::vector<std::vector<double>>& rows) {
   return "set yrange [" + std::to_string(lo - margin) + ":" + std::to_string(hi + margin) + "]\n";
 }
 
-// "hc4 (seed 1)", "hc4 {ratio=0.1} (seed 2, steps=60)".
+void Skip(const FigureText& text, PlotOutput* out) {
+  out->messages.push_back(text.name + ": skipped: " + text.skip_reason);
+}
+
+}  // namespace
+
 std::string RunLabel(const RunRecord& r) {
   std::string label = WithParams(r.spec.algorithm, r.spec.algorithm_params) + " (seed " +
                       std::to_string(r.spec.seed);
@@ -212,25 +217,25 @@ std::string RunLabel(const RunRecord& r) {
   return label + ")";
 }
 
-void Skip(const FigureText& text, PlotOutput* out) {
-  out->messages.push_back(text.name + ": skipped: " + text.skip_reason);
-}
-
-}  // namespace
 
 void PlotSweepFigure(const FigureText& text, const std::string& x_label,
                      const std::vector<SweepPoint>& points, const std::string& out_dir,
                      PlotOutput* out) {
   if (points.empty()) return Skip(text, out);
+  const bool window_area = std::any_of(points.begin(), points.end(), [](const SweepPoint& p) {
+    return std::isfinite(p.mean_window_area);
+  });
   Figure f;
   f.name = text.name;
   f.title = text.title;
-  f.width_in = 10;
+  f.cols = window_area ? 3 : 2;
+  f.width_in = 5 * f.cols;
   f.height_in = 4.2;
-  f.cols = 2;
-  Panel area, time;
-  area.setup = "set title 'Mean x-y area'\nset xlabel " + Quote(x_label) +
+  Panel area, window, time;
+  area.setup = "set title 'Mean x-y area of the newest state'\nset xlabel " + Quote(x_label) +
                "\nset ylabel 'area (m^2)'\nset key top right noenhanced\n";
+  window.setup = "set title 'Mean x-y area of the window states'\nset xlabel " +
+                 Quote(x_label) + "\nset ylabel 'area (m^2)'\nset key top right noenhanced\n";
   time.setup = "set title 'Mean time per CSP'\nset xlabel " + Quote(x_label) +
                "\nset ylabel 'time (ms)'\nset key top left noenhanced\n";
   // An algorithm's colour for all its configurations; its second, third ...
@@ -243,15 +248,20 @@ void PlotSweepFigure(const FigureText& text, const std::string& x_label,
                               std::to_string(7 + 2 * (nth % 3)) + " ps 0.7 lc rgb " +
                               Quote(Colour(points[i].algorithm)) + " title " + Quote(label);
     Series a{"using 1:2 " + style, {}, ""};
+    Series w{"using 1:2 " + style, {}, ""};
     Series t{"using 1:2 " + style, {}, ""};
     for (; i < points.size() && points[i].label == label; ++i) {
       a.rows.push_back({points[i].value, Finite(points[i].mean_area)});
+      w.rows.push_back({points[i].value, Finite(points[i].mean_window_area)});
       t.rows.push_back({points[i].value, Finite(points[i].mean_time_s * 1e3)});
     }
     area.series.push_back(std::move(a));
+    if (HasPoint(w)) window.series.push_back(std::move(w));
     time.series.push_back(std::move(t));
   }
-  f.panels = {area, time};
+  f.panels = {area};
+  if (window_area) f.panels.push_back(window);
+  f.panels.push_back(time);
   Render(f, out_dir, out);
 }
 
@@ -276,18 +286,29 @@ std::vector<std::vector<double>> GpsCorridorRows(const RunRecord& run, const std
 
 void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
                         const std::string& out_dir, PlotOutput* out) {
+  std::vector<std::string> labels;
+  for (const RunRecord* r : runs) labels.push_back(RunLabel(*r));
+  PlotCorridorFigure(text, runs, labels, out_dir, out);
+}
+
+void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
+                        const std::vector<std::string>& labels, const std::string& out_dir,
+                        PlotOutput* out) {
   const char* const kVars[2] = {"x", "y"};
   // Corridors of every shown run first: each column shares its y range so
   // the runs compare at a glance.
   std::vector<const RunRecord*> shown;
+  std::vector<std::string> shown_labels;
   std::vector<std::vector<std::vector<double>>> corridors[2];
   std::vector<std::vector<double>> all[2];
-  for (const RunRecord* r : runs) {
+  for (std::size_t n = 0; n < runs.size(); ++n) {
+    const RunRecord* r = runs[n];
     std::vector<std::vector<double>> rows[2] = {CorridorRows(*r, kVars[0]),
                                                 CorridorRows(*r, kVars[1])};
     const Series probe[2] = {{"", rows[0], ""}, {"", rows[1], ""}};
     if (!HasPoint(probe[0]) && !HasPoint(probe[1])) continue;
     shown.push_back(r);
+    shown_labels.push_back(labels.at(n));
     for (int k = 0; k < 2; ++k) {
       all[k].insert(all[k].end(), rows[k].begin(), rows[k].end());
       corridors[k].push_back(std::move(rows[k]));
@@ -315,7 +336,7 @@ void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecor
     const std::string colour = Quote(Colour(r.spec.algorithm));
     for (int k = 0; k < 2; ++k) {
       Panel p;
-      p.setup = "set title " + Quote(RunLabel(r) + ": " + kVars[k]) + " noenhanced\n" +
+      p.setup = "set title " + Quote(shown_labels[i] + ": " + kVars[k]) + " noenhanced\n" +
                 "set ylabel 'error in " + kVars[k] + " (m)'\n" + CorridorRange(all[k]) +
                 (i + 1 == shown.size() ? "set xlabel 'step'\n" : "") +
                 "unset key\n" + x_range;

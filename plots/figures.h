@@ -60,10 +60,14 @@ struct FigureText {
   std::string skip_reason;
 };
 
+// A run's title in figures: "hc4 (seed 1)", "hc4 {ratio=0.1} (seed 2, steps=60)".
+std::string RunLabel(const RunRecord& r);
+
 // The figure kinds; each draws what it is given, in that order, and appends
 // to out.
-// Mean x-y area and mean time per CSP against the swept value (x_label), one
-// line per configuration (points as ParamSweep orders them).
+// Mean x-y area (of the newest state; and over the window's states when the
+// points have it) and mean time per CSP against the swept value (x_label),
+// one line per configuration (points as ParamSweep orders them).
 void PlotSweepFigure(const FigureText& text, const std::string& x_label,
                      const std::vector<SweepPoint>& points, const std::string& out_dir,
                      PlotOutput* out);
@@ -71,6 +75,11 @@ void PlotSweepFigure(const FigureText& text, const std::string& x_label,
 // steps, one row of panels per run, the y range shared by each column.
 void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
                         const std::string& out_dir, PlotOutput* out);
+// The same with a title per run (labels[i] for runs[i]) instead of the run's
+// algorithm, seed and problem parameters.
+void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
+                        const std::vector<std::string>& labels, const std::string& out_dir,
+                        PlotOutput* out);
 // The GPS corridor of var ("x", "y") over a run's steps (paper 000 Fig. 3):
 // rows {step, lo - truth, hi - truth} of the GPS box car-track records as
 // the step properties gps_<var>_lo/hi; NaN where a step has none or the

@@ -499,8 +499,14 @@ std::vector<SweepPoint> ParamSweep(const std::vector<RunRecord>& runs, const std
     if (!others.empty()) label += " [" + CompactParams(others) + "]";
     for (const auto& [value, members] : by_value) {
       const GroupSummary g = Summarise(members);
+      std::vector<double> window_areas;
+      for (const RunRecord* r : members) {
+        for (const StepRecord& s : r->steps) {
+          if (auto a = NumberProperty(s.properties, "window_mean_area")) window_areas.push_back(*a);
+        }
+      }
       points.push_back({label, algorithm, value, g.ok, g.metrics.steps, g.metrics.mean_area,
-                        g.metrics.time_mean_s, members});
+                        g.metrics.time_mean_s, Mean(window_areas), members});
     }
   }
   std::stable_sort(points.begin(), points.end(), [](const SweepPoint& a, const SweepPoint& b) {

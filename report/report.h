@@ -123,6 +123,9 @@ struct SweepPoint {
   int steps = 0;
   double mean_area = 0;    // m^2
   double mean_time_s = 0;  // per CSP
+  // The mean over the steps of window_mean_area (the mean x-y area of the
+  // window's states, reported by window estimators); NaN when none reports it.
+  double mean_window_area = 0;
   std::vector<const RunRecord*> ok_runs;  // pointers into the input vector
 };
 // The points of every configuration of problem with ok runs at two or more
