@@ -24,22 +24,20 @@ bool BoxNarrower::Small(const Interval& j) const {
 }
 
 bool BoxNarrower::Consistent(const Tape& tape, int var, const Interval& j) {
-  work_box_[var] = j;
-  return !Intersect(tape.Forward(work_box_, slots_), tape.range()).IsEmpty();
+  return !Intersect(tape.ForwardUnivariate(var, j, slots_), tape.range()).IsEmpty();
 }
 
 Interval BoxNarrower::Newton(const Tape& tape, int var, Interval j, WorkCounters& work) {
   for (int step = 0; step < 8 && !j.IsEmpty(); ++step) {
     ++work.newton_steps;
-    work_box_[var] = j;
-    Interval derivative;
-    Interval f = tape.ForwardWithDerivative(work_box_, var, slots_, dslots_, &derivative);
-    if (Intersect(f, tape.range()).IsEmpty()) return Interval::Empty();
+    if (!Consistent(tape, var, j)) return Interval::Empty();
     if (Small(j)) return j;
-    // Mean value form: f(t) - f(m) = f'(xi) (t - m), with f(t) in range.
+    // Mean value form: f(t) - f(m) = f'(xi) (t - m), with f(t) in range. The
+    // derivative comes from the slots of the evaluation on j, before the
+    // evaluation at m overwrites them.
+    const Interval derivative = tape.DerivativeUnivariate(var, slots_, dslots_);
     const double m = j.Mid();
-    work_box_[var] = Interval(m);
-    Interval fm = tape.Forward(work_box_, slots_);
+    Interval fm = tape.ForwardUnivariate(var, Interval(m), slots_);
     if (fm.IsEmpty()) return j;  // f undefined at m: no Newton step
     Interval next = Interval(m) + DivideRelational(j - Interval(m), tape.range() - fm, derivative);
     next = Intersect(j, next);
@@ -95,7 +93,9 @@ std::optional<double> BoxNarrower::OuterBound(const Tape& tape, int var, const I
 }
 
 bool BoxNarrower::Narrow(const Tape& tape, int var, Box& box, WorkCounters& work) {
-  work_box_ = box;
+  // Only var changes during the search: the slots that do not depend on it
+  // are evaluated once here.
+  if (!tape.PrepareUnivariate(box, var, slots_, dslots_)) return false;
   const Interval x = box[var];
   std::optional<double> lo = OuterBound(tape, var, x, true, work);
   if (!lo) return false;

@@ -61,7 +61,6 @@ class BoxNarrower {
 
   double epsilon_;
   int max_bisections_;
-  Box work_box_;
   std::vector<Interval> slots_, dslots_;
   std::vector<Interval> stack_;
 };
