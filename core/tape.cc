@@ -124,9 +124,10 @@ bool Tape::PrepareUnivariate(const Box& box, int var, std::vector<Interval>& slo
   return true;
 }
 
-Interval Tape::ForwardUnivariate(int var, const Interval& x, std::vector<Interval>& slots) const {
+Interval Tape::ForwardUnivariate(std::span<const int> dependent, const Interval& x,
+                                 std::vector<Interval>& slots) const {
   if (x.IsEmpty()) return Interval::Empty();
-  for (int s : DependentSlots(var)) {
+  for (int s : dependent) {
     const TapeInstr& in = code_[s];
     Interval& z = slots[s];
     if (in.op == Op::kVar) {
@@ -139,9 +140,10 @@ Interval Tape::ForwardUnivariate(int var, const Interval& x, std::vector<Interva
   return slots[size() - 1];
 }
 
-Interval Tape::DerivativeUnivariate(int var, const std::vector<Interval>& slots,
+Interval Tape::DerivativeUnivariate(std::span<const int> dependent,
+                                    const std::vector<Interval>& slots,
                                     std::vector<Interval>& dslots) const {
-  for (int s : DependentSlots(var)) {
+  for (int s : dependent) {
     const TapeInstr& in = code_[s];
     if (in.op == Op::kVar) {
       dslots[s] = Interval(1.0);

@@ -44,18 +44,22 @@ class Tape {
   // PrepareUnivariate evaluates, once, the slots that do not depend on var
   // (values, and derivatives with respect to var, exactly as
   // ForwardWithDerivative computes them); ForwardUnivariate and
-  // DerivativeUnivariate then sweep only the slots that depend on var. The
-  // results are those of Forward and ForwardWithDerivative on box with var
-  // set to x, bit for bit. PrepareUnivariate returns false when a slot that
-  // does not depend on var is empty: every evaluation on box is then empty.
+  // DerivativeUnivariate then sweep only DependentSlots(var). The results are
+  // those of Forward and ForwardWithDerivative on box with var set to x, bit
+  // for bit. PrepareUnivariate returns false when a slot that does not depend
+  // on var is empty: every evaluation on box is then empty.
   bool PrepareUnivariate(const Box& box, int var, std::vector<Interval>& slots,
                          std::vector<Interval>& dslots) const;
-  // The root's enclosure with var = x (slots as left by PrepareUnivariate on
-  // the same var and box, and any ForwardUnivariate since).
-  Interval ForwardUnivariate(int var, const Interval& x, std::vector<Interval>& slots) const;
+  // The slots that depend on var (its own and every operation above them),
+  // ascending; empty if var does not occur.
+  std::span<const int> DependentSlots(int var) const;
+  // The root's enclosure with var = x; dependent = DependentSlots(var), and
+  // slots as left by PrepareUnivariate on var (and any ForwardUnivariate since).
+  Interval ForwardUnivariate(std::span<const int> dependent, const Interval& x,
+                             std::vector<Interval>& slots) const;
   // The derivative's enclosure at the last ForwardUnivariate, which must have
   // returned a non-empty enclosure.
-  Interval DerivativeUnivariate(int var, const std::vector<Interval>& slots,
+  Interval DerivativeUnivariate(std::span<const int> dependent, const std::vector<Interval>& slots,
                                 std::vector<Interval>& dslots) const;
   // HC4Revise = Forward + Backward. Returns false when box has no solution.
   // If idempotent is given, it is set to whether a second Revise right after
@@ -88,8 +92,6 @@ class Tape {
   // some operation or constant is unbounded.
   template <bool kTrackBounded>
   Interval ForwardSweep(const Box& box, std::vector<Interval>& slots, bool* bounded) const;
-  // The slots that depend on var, ascending; empty if var does not occur.
-  std::span<const int> DependentSlots(int var) const;
 
   std::vector<TapeInstr> code_;
   std::vector<Interval> constants_;  // per slot; used by kConst slots
