@@ -31,6 +31,8 @@ void ContractChain(benchmark::State& state, const AlgorithmInfo* info) {
   };
   state.counters["revise_calls"] = per_iteration(work.revise_calls);
   state.counters["inner_calls"] = per_iteration(work.inner_calls);
+  state.counters["newton_steps"] = per_iteration(work.newton_steps);
+  state.counters["bisections"] = per_iteration(work.bisections);
   state.counters["last_xy_area_m2"] = area;
 }
 

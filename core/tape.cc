@@ -57,6 +57,19 @@ Tape::Tape(const ExprGraph& graph, const Constraint& constraint) : range_(constr
     occurrences_.push_back(count);
     if (count > 1) idempotent_when_bounded_ = false;
   }
+  // Dependent slots: a slot depends on var if an operand does (ids are
+  // topologically ordered, so one upward pass per variable).
+  std::vector<char> depends(code_.size());
+  dependent_begin_.push_back(0);
+  for (int var : variables_) {
+    for (int s = 0; s < size(); ++s) {
+      const TapeInstr& in = code_[s];
+      depends[s] = in.op == Op::kVar ? in.n == var
+                                     : (in.a >= 0 && depends[in.a]) || (in.b >= 0 && depends[in.b]);
+      if (depends[s]) dependent_slots_.push_back(s);
+    }
+    dependent_begin_.push_back(static_cast<int>(dependent_slots_.size()));
+  }
   for (const TapeInstr& in : code_) {
     if (in.op == Op::kDiv || in.op == Op::kTan || in.op == Op::kLog ||
         (in.op == Op::kPow && in.n < 0))
@@ -69,6 +82,77 @@ int Tape::Occurrences(int var) const {
   auto it = std::lower_bound(variables_.begin(), variables_.end(), var);
   if (it == variables_.end() || *it != var) return 0;
   return occurrences_[it - variables_.begin()];
+}
+
+std::span<const int> Tape::DependentSlots(int var) const {
+  auto it = std::lower_bound(variables_.begin(), variables_.end(), var);
+  if (it == variables_.end() || *it != var) return {};
+  const int i = static_cast<int>(it - variables_.begin());
+  return std::span<const int>(dependent_slots_.data() + dependent_begin_[i],
+                              dependent_begin_[i + 1] - dependent_begin_[i]);
+}
+
+bool Tape::PrepareUnivariate(const Box& box, int var, std::vector<Interval>& slots,
+                             std::vector<Interval>& dslots) const {
+  if (slots.size() < code_.size()) slots.resize(code_.size());
+  if (dslots.size() < code_.size()) dslots.resize(code_.size());
+  std::span<const int> dependent = DependentSlots(var);
+  auto next = dependent.begin();
+  const int n = size();
+  for (int s = 0; s < n; ++s) {
+    if (next != dependent.end() && *next == s) {  // swept by ForwardUnivariate
+      ++next;
+      continue;
+    }
+    // As ForwardWithDerivative, on the slots whose operands are all independent.
+    const TapeInstr& in = code_[s];
+    Interval& z = slots[s];
+    Interval& dz = dslots[s];
+    if (in.op == Op::kConst) {
+      z = constants_[s];
+      dz = Interval(0.0);
+    } else if (in.op == Op::kVar) {
+      z = box[in.n];
+      dz = Interval(0.0);
+    } else {
+      const int b = in.b >= 0 ? in.b : in.a;
+      z = EvalOp(in.op, slots[in.a], slots[b], in.n);
+      dz = DerivOp(in.op, slots[in.a], slots[b], z, dslots[in.a], dslots[b], in.n);
+    }
+    if (z.IsEmpty()) return false;
+  }
+  return true;
+}
+
+Interval Tape::ForwardUnivariate(std::span<const int> dependent, const Interval& x,
+                                 std::vector<Interval>& slots) const {
+  if (x.IsEmpty()) return Interval::Empty();
+  for (int s : dependent) {
+    const TapeInstr& in = code_[s];
+    Interval& z = slots[s];
+    if (in.op == Op::kVar) {
+      z = x;
+      continue;
+    }
+    z = EvalOp(in.op, slots[in.a], slots[in.b >= 0 ? in.b : in.a], in.n);
+    if (z.IsEmpty()) return Interval::Empty();
+  }
+  return slots[size() - 1];
+}
+
+Interval Tape::DerivativeUnivariate(std::span<const int> dependent,
+                                    const std::vector<Interval>& slots,
+                                    std::vector<Interval>& dslots) const {
+  for (int s : dependent) {
+    const TapeInstr& in = code_[s];
+    if (in.op == Op::kVar) {
+      dslots[s] = Interval(1.0);
+      continue;
+    }
+    const int b = in.b >= 0 ? in.b : in.a;
+    dslots[s] = DerivOp(in.op, slots[in.a], slots[b], slots[s], dslots[in.a], dslots[b], in.n);
+  }
+  return dslots[size() - 1];
 }
 
 template <bool kTrackBounded>

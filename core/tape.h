@@ -6,6 +6,7 @@
 #ifndef ICPBENCH_CORE_TAPE_H_
 #define ICPBENCH_CORE_TAPE_H_
 
+#include <span>
 #include <vector>
 
 #include "core/box.h"
@@ -38,6 +39,28 @@ class Tape {
   // *derivative. slots and dslots are scratch buffers.
   Interval ForwardWithDerivative(const Box& box, int var, std::vector<Interval>& slots,
                                  std::vector<Interval>& dslots, Interval* derivative) const;
+  // Incremental evaluation for a univariate search over variable var (BC3's
+  // bound search), where only var's value changes between evaluations:
+  // PrepareUnivariate evaluates, once, the slots that do not depend on var
+  // (values, and derivatives with respect to var, exactly as
+  // ForwardWithDerivative computes them); ForwardUnivariate and
+  // DerivativeUnivariate then sweep only DependentSlots(var). The results are
+  // those of Forward and ForwardWithDerivative on box with var set to x, bit
+  // for bit. PrepareUnivariate returns false when a slot that does not depend
+  // on var is empty: every evaluation on box is then empty.
+  bool PrepareUnivariate(const Box& box, int var, std::vector<Interval>& slots,
+                         std::vector<Interval>& dslots) const;
+  // The slots that depend on var (its own and every operation above them),
+  // ascending; empty if var does not occur.
+  std::span<const int> DependentSlots(int var) const;
+  // The root's enclosure with var = x; dependent = DependentSlots(var), and
+  // slots as left by PrepareUnivariate on var (and any ForwardUnivariate since).
+  Interval ForwardUnivariate(std::span<const int> dependent, const Interval& x,
+                             std::vector<Interval>& slots) const;
+  // The derivative's enclosure at the last ForwardUnivariate, which must have
+  // returned a non-empty enclosure.
+  Interval DerivativeUnivariate(std::span<const int> dependent, const std::vector<Interval>& slots,
+                                std::vector<Interval>& dslots) const;
   // HC4Revise = Forward + Backward. Returns false when box has no solution.
   // If idempotent is given, it is set to whether a second Revise right after
   // this one could narrow nothing more (see idempotent_when_bounded()): the
@@ -74,6 +97,10 @@ class Tape {
   std::vector<Interval> constants_;  // per slot; used by kConst slots
   std::vector<int> variables_;
   std::vector<int> occurrences_;     // parallel to variables_
+  // Per variable (parallel to variables_): its dependent slots, ascending,
+  // at dependent_slots_[dependent_begin_[i] .. dependent_begin_[i + 1]).
+  std::vector<int> dependent_slots_;
+  std::vector<int> dependent_begin_;
   Interval range_;
   bool idempotent_when_bounded_ = false;
   bool has_partial_ops_ = false;  // sqrt or log: Backward sweeps every slot

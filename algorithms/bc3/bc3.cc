@@ -24,22 +24,20 @@ bool BoxNarrower::Small(const Interval& j) const {
 }
 
 bool BoxNarrower::Consistent(const Tape& tape, int var, const Interval& j) {
-  work_box_[var] = j;
-  return !Intersect(tape.Forward(work_box_, slots_), tape.range()).IsEmpty();
+  return !Intersect(tape.ForwardUnivariate(dependent_, j, slots_), tape.range()).IsEmpty();
 }
 
 Interval BoxNarrower::Newton(const Tape& tape, int var, Interval j, WorkCounters& work) {
   for (int step = 0; step < 8 && !j.IsEmpty(); ++step) {
     ++work.newton_steps;
-    work_box_[var] = j;
-    Interval derivative;
-    Interval f = tape.ForwardWithDerivative(work_box_, var, slots_, dslots_, &derivative);
-    if (Intersect(f, tape.range()).IsEmpty()) return Interval::Empty();
+    if (!Consistent(tape, var, j)) return Interval::Empty();
     if (Small(j)) return j;
-    // Mean value form: f(t) - f(m) = f'(xi) (t - m), with f(t) in range.
+    // Mean value form: f(t) - f(m) = f'(xi) (t - m), with f(t) in range. The
+    // derivative comes from the slots of the evaluation on j, before the
+    // evaluation at m overwrites them.
+    const Interval derivative = tape.DerivativeUnivariate(dependent_, slots_, dslots_);
     const double m = j.Mid();
-    work_box_[var] = Interval(m);
-    Interval fm = tape.Forward(work_box_, slots_);
+    Interval fm = tape.ForwardUnivariate(dependent_, Interval(m), slots_);
     if (fm.IsEmpty()) return j;  // f undefined at m: no Newton step
     Interval next = Interval(m) + DivideRelational(j - Interval(m), tape.range() - fm, derivative);
     next = Intersect(j, next);
@@ -54,14 +52,18 @@ Interval BoxNarrower::Newton(const Tape& tape, int var, Interval j, WorkCounters
 std::optional<double> BoxNarrower::OuterBound(const Tape& tape, int var, const Interval& x,
                                               bool leftward, WorkCounters& work) {
   auto outer = [leftward](const Interval& j) { return leftward ? j.lo() : j.hi(); };
-  // Fast path: the bound is already a quasi-zero (the usual case at a fixpoint).
-  if (x.IsBounded()) {
-    const double b = outer(x);
+  // The edge slice of a piece: if the constraint can hold there, the piece's
+  // outer bound is a quasi-zero.
+  auto edge_consistent = [&](const Interval& j) {
+    if (!j.IsBounded()) return false;
+    const double b = outer(j);
     const double slice = epsilon_ * std::max(1.0, std::fabs(b));
-    Interval edge = leftward ? Interval(b, std::min(x.hi(), b + slice))
-                             : Interval(std::max(x.lo(), b - slice), b);
-    if (Consistent(tape, var, edge)) return b;
-  }
+    Interval edge = leftward ? Interval(b, std::min(j.hi(), b + slice))
+                             : Interval(std::max(j.lo(), b - slice), b);
+    return Consistent(tape, var, edge);
+  };
+  // Fast path: the bound is already a quasi-zero (the usual case at a fixpoint).
+  if (edge_consistent(x)) return outer(x);
   stack_.clear();
   stack_.push_back(x);
   int bisections = 0;
@@ -95,7 +97,10 @@ std::optional<double> BoxNarrower::OuterBound(const Tape& tape, int var, const I
 }
 
 bool BoxNarrower::Narrow(const Tape& tape, int var, Box& box, WorkCounters& work) {
-  work_box_ = box;
+  // Only var changes during the search: the slots that do not depend on it
+  // are evaluated once here.
+  if (!tape.PrepareUnivariate(box, var, slots_, dslots_)) return false;
+  dependent_ = tape.DependentSlots(var);
   const Interval x = box[var];
   std::optional<double> lo = OuterBound(tape, var, x, true, work);
   if (!lo) return false;

@@ -15,6 +15,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "core/constraint_system.h"
@@ -61,8 +62,8 @@ class BoxNarrower {
 
   double epsilon_;
   int max_bisections_;
-  Box work_box_;
   std::vector<Interval> slots_, dslots_;
+  std::span<const int> dependent_;  // the tape's slots that depend on the narrowed variable
   std::vector<Interval> stack_;
 };
 
