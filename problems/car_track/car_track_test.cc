@@ -468,7 +468,8 @@ TEST(CarTrackTest, NonPhysicalValuesFailWithLineAndColumn) {
        "(unwrapped) but the gyro by 0: more than pi/2 apart"},
   };
   for (const auto& [rows, message] : cases) {
-    const std::string error = ErrorOf([&] { ReadLogText(header + rows); });
+    const std::string text = header + rows;  // (clang 14 cannot capture a structured binding)
+    const std::string error = ErrorOf([&] { ReadLogText(text); });
     EXPECT_NE(error.find(message), std::string::npos)
         << "rows:\n" << rows << "error: " << error << "\nexpected: " << message;
   }
