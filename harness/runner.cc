@@ -458,7 +458,7 @@ void SetUpWorker(pid_t parent, double hard_limit_s, double memory_limit_mb) {
     rlimit cpu{s, s + 1};
     setrlimit(RLIMIT_CPU, &cpu);
   }
-#if !defined(__SANITIZE_ADDRESS__)
+#if !defined(ICPBENCH_SANITIZED)
   // RLIMIT_DATA counts the private writable memory (heap, anonymous maps,
   // thread stacks), not the address space that malloc arenas and libraries
   // reserve, so many threads (TBB, OpenCV) do not use the limit up. (ASan maps

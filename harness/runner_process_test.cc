@@ -343,7 +343,7 @@ TEST(RunnerProcessTest, CliAnUnwritableOutputDirectoryIsTheEnvironment) {
   EXPECT_NE(r.out.find("permissions"), std::string::npos) << r.out;
 }
 
-#if !defined(__SANITIZE_ADDRESS__)
+#if !defined(ICPBENCH_SANITIZED)
 // Out of memory is the environment (exit 3), not a bug: a million variables
 // (about 500 MB) under a 300 MB address-space limit (ulimit -v; ASan builds
 // cannot run under one). The program itself, with its shared libraries

@@ -118,7 +118,7 @@ problems: [chain]
   EXPECT_FALSE(by_mode["hc4"].provenance.date.empty());
 }
 
-#if !defined(__SANITIZE_ADDRESS__)
+#if !defined(ICPBENCH_SANITIZED)
 // A worker that allocates without bound stops at its memory limit
 // (memory_limit_mb) with bad_alloc: its run fails as "out of memory", the
 // others go on. (Sanitizer builds run without the limit.)
@@ -142,7 +142,7 @@ problems: [chain]
 }
 #endif
 
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(ICPBENCH_SANITIZED)
 // Only in the sanitizer build (scripts/sanitize.sh): a report in a forked
 // worker makes it exit with ASAN_OPTIONS' exitcode (86 there), and the harness
 // must record that run as failed, not as a finished one.

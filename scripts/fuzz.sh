@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # CI: builds the libFuzzer targets of fuzz/ with clang++ (the libraries too,
-# with ASan + UBSan, in build-fuzz) and runs each for a bounded time from its
+# with ASan + UBSan, in build-asan: scripts/asan_build.sh) and runs each for a bounded time from its
 # seed corpus (fuzz/corpus/NAME). A crash, a hang (-timeout), an input using
 # too much memory (-rss_limit_mb) or a sanitizer report fails the run and
 # leaves the input in the printed artifact path. ICPBENCH_FUZZ_SECONDS sets
@@ -9,19 +9,17 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/deps.sh
 targets=(minibex spec car_track_log)
-cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g -DNDEBUG" \
-  -DICPBENCH_FUZZ=ON -DICPBENCH_BUILD_TESTS=OFF -DICPBENCH_BUILD_BENCHMARKS=OFF >/dev/null
+source scripts/asan_build.sh
+asan_configure
 # Only the fuzzers and the libraries they link.
-cmake --build build-fuzz -j"${ICPBENCH_JOBS:-2}" --target "${targets[@]/%/_fuzzer}"
+cmake --build build-asan -j"${ICPBENCH_JOBS:-2}" --target "${targets[@]/%/_fuzzer}"
 # New inputs go to a scratch corpus, not into the repository's seeds.
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 for t in "${targets[@]}"; do
   mkdir -p "$work/$t"
   echo "icpbench: fuzzing $t for ${ICPBENCH_FUZZ_SECONDS:-60} s"
-  if ! "build-fuzz/fuzz/${t}_fuzzer" -max_total_time="${ICPBENCH_FUZZ_SECONDS:-60}" \
+  if ! "build-asan/fuzz/${t}_fuzzer" -max_total_time="${ICPBENCH_FUZZ_SECONDS:-60}" \
       -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$work/$t-" \
       "$work/$t" "fuzz/corpus/$t" 2>"$work/$t.log"; then
     tail -n 60 "$work/$t.log"
