@@ -25,19 +25,19 @@ bool WithinFactor(double measured, double published, double factor) {
 TextTable ComparisonTable(const std::string& title, const std::vector<ComparisonRow>& rows) {
   TextTable t;
   t.title = title;
-  t.headers = {"#", "what", "published", "measured", "rule", "verdict"};
-  t.numeric = {true, false, false, false, false, false};
+  t.headers = {"#", "what", "published", "measured", "verdict"};
+  t.numeric = {true, false, false, false, false};
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const ComparisonRow& r = rows[i];
     const std::string n = std::to_string(i + 1);
-    t.rows.push_back(
-        {n, r.item, r.published, r.measured, r.rule, std::string(ToString(r.verdict))});
-    if (!r.reason.empty()) t.items.push_back(n + ". " + r.item + ": " + r.reason);
+    t.rows.push_back({n, r.item, r.published, r.measured, std::string(ToString(r.verdict))});
+    // The rule and the reason below the table keep its columns narrow.
+    t.items.push_back(n + ". " + r.item + ": " + std::string(ToString(r.verdict)) +
+                      " (rule: " + r.rule + ")" + (r.reason.empty() ? "" : "; " + r.reason));
   }
   t.notes.push_back(
-      "Verdicts follow the rules in the rule column, applied by paper/ to the numbers of this "
-      "store." +
-      std::string(t.items.empty() ? "" : " Why a row differs, or which spec produces its runs:"));
+      "Each verdict follows its rule, applied by paper/ to the numbers of this store; the rules, "
+      "and why a row differs or which spec produces its runs:");
   return t;
 }
 

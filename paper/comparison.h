@@ -37,8 +37,8 @@ inline constexpr char kNotMeasured[] = "differs; reason not yet measured";
 // |log(measured / published)| <= log(factor): both positive, finite.
 bool WithinFactor(double measured, double published, double factor);
 
-// The table of rows: item, published, measured, rule, verdict; each row's
-// reason follows in the list below, numbered like the rows.
+// The table of rows: #, item, published, measured, verdict; each row's rule
+// and reason follow in the list below, numbered like the rows.
 TextTable ComparisonTable(const std::string& title, const std::vector<ComparisonRow>& rows);
 
 // The comparisons of each seed paper, from the runs of a store (with their

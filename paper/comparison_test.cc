@@ -133,9 +133,10 @@ TEST(ComparisonTest, TheTableNumbersRowsAndListsReasons) {
       ComparisonTable("T", {{"a", "1", "1", "equal", Verdict::kMatch, ""},
                             {"b", "1", "2", "equal", Verdict::kDiffers, kNotMeasured}});
   ASSERT_EQ(t.rows.size(), 2u);
-  EXPECT_EQ(t.rows[1], (std::vector<std::string>{"2", "b", "1", "2", "equal", "differs"}));
-  ASSERT_EQ(t.items.size(), 1u);
-  EXPECT_EQ(t.items[0], std::string("2. b: ") + kNotMeasured);
+  EXPECT_EQ(t.rows[1], (std::vector<std::string>{"2", "b", "1", "2", "differs"}));
+  ASSERT_EQ(t.items.size(), 2u);
+  EXPECT_EQ(t.items[0], "1. a: match (rule: equal)");
+  EXPECT_EQ(t.items[1], std::string("2. b: differs (rule: equal); ") + kNotMeasured);
 }
 
 }  // namespace

@@ -82,7 +82,8 @@ void AccumulatorRows(const std::vector<RunRecord>& runs, std::vector<ComparisonR
     for (int s = 0; s < sources; ++s)
       if (p.source < 0 || p.source == s) measurements += a.measurements[s];
     const AccumulatorMaximum m = FindMaximum(counts);
-    const bool at_truth = TruthAtMaximum(a, counts, m);
+    // With several maxima the hull spans them all: "at the truth" says nothing.
+    const bool at_truth = m.regions == 1 && TruthAtMaximum(a, counts, m);
     r.measured = Maxima(m.regions) + ", count " + std::to_string(m.count) + " of " +
                  std::to_string(measurements) + (at_truth ? ", at the truth" : "");
     bool match;
@@ -129,9 +130,9 @@ const GroupSummary* Best(const std::vector<GroupSummary>& groups, bool particle_
   return best;
 }
 
+// The configuration a measured cell names (the row says the problem's).
 std::string Config(const GroupSummary& g) {
-  return WithParams(DisplayOf(g.algorithm).label, g.algorithm_params) + " on " +
-         WithParams(g.problem, g.problem_params);
+  return WithParams(DisplayOf(g.algorithm).label, g.algorithm_params);
 }
 
 constexpr char kMarinaSpec[] =
@@ -154,7 +155,7 @@ void MarinaRows(const std::vector<RunRecord>& runs, std::vector<ComparisonRow>* 
     ComparisonRow r{std::string("§6.7: time per run, ") + kMethod[pf],
                     FormatNumber(published) + " s (600 m, " + (pf ? "Matlab" : "C/C++") + ")",
                     "—",
-                    "within a factor 2 (same drive, same machine)",
+                    "within a factor 2",
                     Verdict::kNoData,
                     ""};
     if (!g) {
@@ -239,9 +240,10 @@ void MarinaRows(const std::vector<RunRecord>& runs, std::vector<ComparisonRow>* 
                      "the others, so the assumption of at most q outliers did not hold (README, "
                      "Marina: with q at least the true outliers the truth is always kept)";
         else if (below > 0)
-          r.reason = "measured on " + std::to_string(below) + " of " + std::to_string(lost) +
-                     " such steps: auto_q took fewer outliers than there were; for the others, " +
-                     kNotMeasured;
+          r.reason = "measured on " + std::to_string(below) + " of the " + std::to_string(lost) +
+                     " steps whose set misses the truth: auto_q took fewer outliers (step "
+                     "property q) than there were (true_outliers); for the other " +
+                     std::to_string(lost - below) + ": " + kNotMeasured;
         else
           r.reason = kNotMeasured;
       }
