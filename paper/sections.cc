@@ -38,9 +38,27 @@ std::string FigureTex(const FigureSet& figures, const std::string& name,
   }
   std::string why = "no figure was written";
   for (const std::string& m : figures.skipped)
-    if (m.rfind(name + ":", 0) == 0) why = m.substr(name.size() + 1);
+    if (m.rfind(name + ": skipped: ", 0) == 0) why = m.substr(name.size() + 11);
   return "\\emph{" + TexEscape(caption) + "} (" + Tt(name) + ") is not drawn: " + TexEscape(why) +
          ".\n\n";
+}
+
+// A table as LaTeX, in parts of at most kPartRows rows: the template keeps
+// a table on one page, so a long one is cut (titles "..., continued"; the
+// notes and items after the last part).
+constexpr std::size_t kPartRows = 45;
+std::string PagedTable(const TextTable& table) {
+  if (table.rows.size() <= kPartRows) return TexTable(table);
+  std::string out;
+  for (std::size_t first = 0; first < table.rows.size(); first += kPartRows) {
+    TextTable part = table;
+    const std::size_t last = std::min(table.rows.size(), first + kPartRows);
+    part.rows.assign(table.rows.begin() + first, table.rows.begin() + last);
+    if (first > 0) part.title += ", continued";
+    if (last < table.rows.size()) part.notes.clear(), part.items.clear();
+    out += TexTable(part);
+  }
+  return out;
 }
 
 std::string Paragraph(const std::string& text) { return TexEscape(text) + "\n\n"; }
@@ -143,12 +161,12 @@ std::string Paper000Tex(const std::vector<RunRecord>& runs, const FigureSet& fig
         "Table 1 and Figs. 2 to 4 of paper 000 on the simulated car track; the "
         "runs are those of the spec experiments table1 and window "
         "(specs/default.yaml).");
-    for (const TextTable& t : Paper000Tables(runs)) out << TexTable(t);
+    for (const TextTable& t : Paper000Tables(runs)) out << PagedTable(t);
     out << FigureTex(figures, "fig2_window", "Fig. 2: mean area and time per CSP against w");
     out << FigureTex(figures, "fig3_corridors", "Fig. 3: interval error corridors over the lap");
     out << FigureTex(figures, "fig4_area", "Fig. 4: x-y area over the lap");
   }
-  out << TexTable(ComparisonTable("Paper 000: published vs measured", Paper000Comparison(runs)));
+  out << PagedTable(ComparisonTable("Paper 000: published vs measured", Paper000Comparison(runs)));
   return out.str();
 }
 
@@ -164,7 +182,7 @@ std::string Thesis003Tex(const std::vector<RunRecord>& runs, const FigureSet& fi
         "relaxed-beacons: icpbench run specs/default.yaml (a short sweep) or "
         "specs/relaxed.yaml (the whole one) produces them.");
   } else {
-    out << TexTable(tables.at(0));
+    out << PagedTable(tables.at(0));
     out << FigureTex(figures, "fig5_2_accumulator", "Fig. 5.2: accumulator of lines with outliers");
     out << FigureTex(figures, "fig5_5_robot_a", "Fig. 5.5: robot A alone");
     out << FigureTex(figures, "fig5_6_robot_b", "Fig. 5.6: robot B alone");
@@ -177,13 +195,14 @@ std::string Thesis003Tex(const std::vector<RunRecord>& runs, const FigureSet& fi
         "icpbench run specs/marina.yaml (or specs/default.yaml, experiment "
         "marina-short) produces them.");
   } else {
-    out << TexTable(tables.at(1));
+    out << PagedTable(tables.at(1));
     out << FigureTex(figures, "fig6_8_marina_tracks",
                      "Figs. 6.8 and 6.9: the marina, the truth, the set-membership boxes and "
                      "the particle filter's mean");
     out << FigureTex(figures, "fig6_errors", "Centre error over time, both methods");
   }
-  out << TexTable(ComparisonTable("Thesis 003: published vs measured", Thesis003Comparison(runs)));
+  out << PagedTable(
+      ComparisonTable("Thesis 003: published vs measured", Thesis003Comparison(runs)));
   return out.str();
 }
 
@@ -197,7 +216,7 @@ std::string Paper004Tex(const std::vector<RunRecord>& runs) {
       std::to_string(kPaper004.post_localization_window) +
       " steps; icpbench does not implement it yet, so its rows below name the spec experiment "
       "that will produce them.");
-  out << TexTable(ComparisonTable("Paper 004: published vs measured", Paper004Comparison(runs)));
+  out << PagedTable(ComparisonTable("Paper 004: published vs measured", Paper004Comparison(runs)));
   return out.str();
 }
 
@@ -231,7 +250,7 @@ std::string PerformanceTex(const std::vector<RunRecord>& runs, const FigureSet& 
   if (t.rows.empty())
     t.notes.push_back("No ok run in the store: icpbench run specs/default.yaml produces them.");
   std::ostringstream out;
-  out << TexTable(t);
+  out << PagedTable(t);
   out << FigureTex(figures, "fig_timing", "Solve time per step, per algorithm");
   return out.str();
 }
