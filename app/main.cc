@@ -1,7 +1,8 @@
 // icpbench: the command-line tool. Exit codes: 0 success, 2 bad input
 // (unknown algorithm or parameter, unreadable or malformed file, bad option,
 // an output directory locked by another run), 3 the environment (disk full,
-// descriptors, processes or memory exhausted, permissions), 130/143 `run`
+// descriptors, processes or memory exhausted, permissions, LaTeX missing
+// for `paper`), 130/143 `run`
 // stopped by SIGINT/SIGTERM, 1 an unexpected internal error.
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -23,6 +24,7 @@
 #include "harness/runner.h"
 #include "harness/solve_command.h"
 #include "harness/spec.h"
+#include "paper/paper.h"
 #include "plots/figures.h"
 
 namespace {
@@ -95,6 +97,11 @@ int main(int argc, char** argv) {
   plot_cmd->add_option("DIR", plot_dir, "output directory of `icpbench run`")->required();
   plot_cmd->add_option("--out,-o", plot_out, "where to write the figures (default DIR/figures)");
 
+  std::string paper_dir;
+  CLI::App* paper_cmd =
+      app.add_subcommand("paper", "the LaTeX paper of a results store (DIR/paper/icpbench.pdf)");
+  paper_cmd->add_option("DIR", paper_dir, "output directory of `icpbench run`")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -149,6 +156,10 @@ int main(int argc, char** argv) {
            icp::PlotDirectory(plot_dir, plot_out, &messages, icp::PaperFigures))
         std::cout << file << "\n";
       for (const std::string& m : messages) std::cerr << "icpbench: " << m << "\n";
+    } else if (*paper_cmd) {
+      const icp::PaperOutput paper = icp::BuildPaper(paper_dir);
+      for (const std::string& m : paper.messages) std::cerr << "icpbench: " << m << "\n";
+      std::cout << paper.pdf << "\n";
     } else if (*merge_cmd) {
       // Validates every input, then writes OUT in one rename (MergeStores).
       const icp::MergeSummary m = icp::MergeStores(merge_out, merge_in);

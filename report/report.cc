@@ -155,7 +155,6 @@ TextTable GroupTable(const std::vector<GroupSummary>& groups) {
                "centre RMSE (m)", "time median (µs)", "time p90 (µs)",
                "time mean (µs) [95% CI]"};
   t.numeric = {false, false, false, false, true, true, true, true, true, true, true, true};
-  t.wide = true;
   int listed = 0, unlisted = 0;
   for (const GroupSummary& g : groups) {
     const RunMetrics& m = g.metrics;
@@ -224,7 +223,9 @@ std::string TexEscape(const std::string& text) {
       {"\\", "\\textbackslash{}"}, {"_", "\\_"}, {"&", "\\&"}, {"%", "\\%"}, {"#", "\\#"},
       {"{", "\\{"}, {"}", "\\}"}, {"$", "\\$"}, {"~", "\\textasciitilde{}"},
       {"^", "\\textasciicircum{}"}, {"—", "---"}, {"µ", "$\\mu$"}, {"²", "$^2$"},
-      {"×", "$\\times$"}, {"∞", "$\\infty$"}, {"…", "\\ldots{}"}};
+      {"×", "$\\times$"}, {"∞", "$\\infty$"}, {"…", "\\ldots{}"}, {"≤", "$\\leq$"},
+      {"≥", "$\\geq$"}, {"§", "\\S{}"}, {"−", "$-$"}, {"±", "$\\pm$"}, {"≈", "$\\approx$"},
+      {"<", "$<$"}, {">", "$>$"}, {"|", "\\textbar{}"}};
   std::string out;
   const std::string line = OneLine(text);
   for (std::size_t i = 0; i < line.size();) {
@@ -242,13 +243,15 @@ std::string TexEscape(const std::string& text) {
   return out;
 }
 
-namespace {
-
-void WriteTex(const TextTable& t, std::ostream& out) {
+std::string TexTable(const TextTable& t) {
+  std::ostringstream out;
   out << "% " << OneLine(t.title) << "\n";
   if (!t.rows.empty() || !t.omit_if_empty) {
     out << "\\begin{table}[htbp]\n\\centering\n\\small\n\\caption{" << TexEscape(t.title)
-        << "}\n" << (t.wide ? "\\resizebox{\\linewidth}{!}{%\n" : "") << "\\begin{tabular}{";
+        << "}\n"
+        // Shrunk to the line width when wider, never enlarged.
+        << "\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}{%\n"
+        << "\\begin{tabular}{";
     for (bool n : t.numeric) out << (n ? 'r' : 'l');
     out << "}\n\\toprule\n";
     for (std::size_t i = 0; i < t.headers.size(); ++i) {
@@ -259,7 +262,7 @@ void WriteTex(const TextTable& t, std::ostream& out) {
       for (std::size_t i = 0; i < row.size(); ++i) out << (i ? " & " : "") << TexEscape(row[i]);
       out << " \\\\\n";
     }
-    out << "\\bottomrule\n\\end{tabular}" << (t.wide ? "}" : "") << "\n\\end{table}\n\n";
+    out << "\\bottomrule\n\\end{tabular}}\n\\end{table}\n\n";
   }
   for (const std::string& n : t.notes) out << TexEscape(n) << "\n\n";
   if (!t.items.empty()) {
@@ -267,7 +270,10 @@ void WriteTex(const TextTable& t, std::ostream& out) {
     for (const std::string& i : t.items) out << "\\item " << TexEscape(i) << "\n";
     out << "\\end{itemize}\n\n";
   }
+  return out.str();
 }
+
+namespace {
 
 std::string CsvField(const std::string& text) {
   if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
@@ -536,7 +542,7 @@ std::string Report(const std::vector<RunRecord>& runs, const std::string& format
   } else {
     out << "% icpbench report; needs \\usepackage{booktabs,graphicx}\n% " << OneLine(Overview(runs))
         << "\n\n";
-    for (const TextTable& t : tables) WriteTex(t, out);
+    for (const TextTable& t : tables) out << TexTable(t);
   }
   return out.str();
 }

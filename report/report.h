@@ -48,7 +48,6 @@ struct TextTable {
   std::vector<std::string> notes;  // paragraphs after the table
   std::vector<std::string> items;  // a bullet list after the notes
   bool omit_if_empty = false;      // no rows: the notes only, no header
-  bool wide = false;               // LaTeX: scaled to the line width
 };
 
 // Tables a caller adds after the generic one (md and tex only).
@@ -157,8 +156,13 @@ std::string FormatRatio(double a, double b);
 // exponent form otherwise; "—" for NaN, "∞"/"-∞" for infinities.
 std::string FormatNumber(double v);
 // LaTeX text for a table cell: _ & % # { } $ ~ ^ \ escaped, the few
-// non-ASCII signs of the tables (— µ ² × ∞ …) written as LaTeX.
+// non-ASCII signs of the tables (— µ ² × ∞ … ≤ ≥ § − ± ≈) and < > | (which
+// the default text font lacks) written as LaTeX.
 std::string TexEscape(const std::string& text);
+// One table as `report --format tex` writes it (a booktabs table float,
+// shrunk to the line width when wider, its notes as paragraphs, its items as
+// a list): what paper/ includes too.
+std::string TexTable(const TextTable& table);
 
 }  // namespace icp
 

@@ -224,6 +224,9 @@ TEST(ReportTest, TexUsesBooktabsAndEscapes) {
   EXPECT_EQ(TexEscape("a_b & {c} 100% #1 ~ ^ \\"),
             "a\\_b \\& \\{c\\} 100\\% \\#1 \\textasciitilde{} \\textasciicircum{} "
             "\\textbackslash{}");
+  // Signs the default (OT1) text font lacks or LaTeX cannot read as UTF-8.
+  EXPECT_EQ(TexEscape("q ≤ 2 < 3 > 1 | §5 ≥ −1"),
+            "q $\\leq$ 2 $<$ 3 $>$ 1 \\textbar{} \\S{}5 $\\geq$ $-$1");
 }
 
 TEST(ReportTest, CsvParsesBackWithOneColumnPerHeader) {

@@ -11,6 +11,9 @@ packages=(
   gnuplot-nox libgnuplot-iostream-dev
   libmrpt-bayes-dev  # optional: the particle filter's cross-check against MRPT's
   clang libclang-rt-14-dev  # scripts/fuzz.sh: clang++ and its libFuzzer/ASan runtimes
+  # icpbench paper: pdflatex (base; recommended for booktabs), latexmk, and
+  # pdftotext for its test; about 150 MB installed, a minute to install.
+  texlive-latex-base texlive-latex-recommended latexmk poppler-utils
 )
 missing=()
 for p in "${packages[@]}"; do

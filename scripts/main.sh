@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job of the README: installs what is missing, builds, runs the
 # default benchmark suite (specs/default.yaml) into results/default, then
-# writes its tables (Markdown, LaTeX, CSV) and figures (PNG, PDF).
+# writes its tables (Markdown, LaTeX, CSV), figures (PNG, PDF) and, last,
+# the paper (PDF).
 # Rerunning resumes: runs already stored are skipped.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,7 +14,9 @@ out=${ICPBENCH_OUT:-results/default}
 ./build/icpbench report "$out" --format tex > "$out/report.tex"
 ./build/icpbench report "$out" --format csv > "$out/report.csv"
 ./build/icpbench plot "$out" --out "$out/figures" > /dev/null
+paper=$(./build/icpbench paper "$out")
 echo
 echo "results store: $out/results.sqlite"
 echo "tables:        $out/report.md, $out/report.tex, $out/report.csv"
 echo "figures:       $out/figures/ ($(ls "$out/figures" | tr '\n' ' '))"
+echo "paper:         $paper"

@@ -12,15 +12,7 @@ namespace icp {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kPaperWindow = 50;  // Ξ of paper 004 Fig. 13
-
-// The mean width of var's interval-error corridor (mean of hi - lo over the
-// steps with a known truth).
-double CorridorWidth(const RunMetrics& m, const std::string& var) {
-  for (const Corridor& c : m.corridors)
-    if (c.var == var) return c.mean_upper - c.mean_lower;
-  return kNaN;
-}
+constexpr double kPaperWindow = kPaper004.post_localization_window;  // Ξ of Fig. 13
 
 std::string Percent(double share) { return FormatNumber(100 * share); }
 
@@ -45,15 +37,9 @@ TextTable PostLocalizationTable(const std::vector<RunRecord>& runs) {
                "RTL area (m²)", "PL area (m²)", "PL / RTL area", "RTL width x (m)",
                "PL width x (m)", "RTL width y (m)", "PL width y (m)"};
   t.numeric = {false, true, true, true, true, true, true, true, true, true, true, true, true};
-  t.wide = true;
-  for (const SweepPoint& p : PostLocalizationPoints(runs)) {
-    std::vector<StepRecord> real_time, post;
-    for (const RunRecord* r : p.ok_runs) {
-      real_time.insert(real_time.end(), r->steps.begin(), r->steps.end());
-      const std::vector<StepRecord> states = PostLocalizedStates(r->steps);
-      post.insert(post.end(), states.begin(), states.end());
-    }
-    const RunMetrics rtl = ComputeMetrics(real_time), pl = ComputeMetrics(post);
+  for (const PostLocalizationPoint& row : Paper004PostLocalization(runs)) {
+    const SweepPoint& p = row.point;
+    const RunMetrics &rtl = row.real_time, &pl = row.post;
     t.rows.push_back({p.label, FormatNumber(p.value), std::to_string(p.runs),
                       std::to_string(pl.steps), Percent(rtl.consistency_rate),
                       Percent(pl.consistency_rate), FormatNumber(rtl.mean_area),
@@ -84,6 +70,26 @@ TextTable PostLocalizationTable(const std::vector<RunRecord>& runs) {
 }
 
 }  // namespace
+
+double CorridorWidth(const RunMetrics& m, const std::string& var) {
+  for (const Corridor& c : m.corridors)
+    if (c.var == var) return c.mean_upper - c.mean_lower;
+  return kNaN;
+}
+
+std::vector<PostLocalizationPoint> Paper004PostLocalization(const std::vector<RunRecord>& runs) {
+  std::vector<PostLocalizationPoint> out;
+  for (const SweepPoint& p : PostLocalizationPoints(runs)) {
+    std::vector<StepRecord> real_time, post;
+    for (const RunRecord* r : p.ok_runs) {
+      real_time.insert(real_time.end(), r->steps.begin(), r->steps.end());
+      const std::vector<StepRecord> states = PostLocalizedStates(r->steps);
+      post.insert(post.end(), states.begin(), states.end());
+    }
+    out.push_back({p, ComputeMetrics(real_time), ComputeMetrics(post)});
+  }
+  return out;
+}
 
 const RunRecord* Paper004FigureRun(const std::vector<RunRecord>& runs) {
   const RunRecord* best = nullptr;

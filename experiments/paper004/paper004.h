@@ -30,6 +30,29 @@
 
 namespace icp {
 
+// The paper's published values (for paper/'s comparison): its localization
+// is consistent at every step (eq. 31, §5.2, Fig. 12), and so is its
+// post-localization over a window of Xi = 50 steps, whose corridors are
+// narrower (§4.2, Fig. 13).
+struct Paper004Published {
+  double consistency_rate = 1;        // share of steps whose box holds the truth
+  int post_localization_window = 50;  // Xi, steps
+};
+inline constexpr Paper004Published kPaper004;
+
+// One configuration and w of the table (see the top): its real-time boxes'
+// and its post-localized states' metrics, pooled over its ok runs.
+struct PostLocalizationPoint {
+  SweepPoint point;
+  RunMetrics real_time;
+  RunMetrics post;
+};
+std::vector<PostLocalizationPoint> Paper004PostLocalization(const std::vector<RunRecord>& runs);
+
+// The mean width of var's interval-error corridor (mean hi - lo); NaN when
+// the metrics have no such corridor.
+double CorridorWidth(const RunMetrics& m, const std::string& var);
+
 // The run fig13_post_localization draws (see the top), or nullptr.
 const RunRecord* Paper004FigureRun(const std::vector<RunRecord>& runs);
 

@@ -35,6 +35,16 @@ namespace icp {
 inline constexpr char kThesis003Marina[] = "marina";
 inline constexpr char kThesis003MarinaShort[] = "marina-short";
 
+// Whether a spec experiment's runs are chapter 6's: `marina` or `marina-*`.
+bool IsMarinaExperiment(const std::string& experiment);
+
+// The thesis' own run times for its 600 m drive on the real data set
+// (§6.7): set membership in C/C++ on one core of a 2 GHz Centrino Duo
+// T2500, 1 h 10 min; the particle filter (600 particles) in Matlab on a
+// 2.2 GHz Core2, 31 min.
+inline constexpr double kThesis003SetMembershipRunS = 4200;
+inline constexpr double kThesis003ParticleFilterRunS = 1860;
+
 // The runs the figures draw (see the top), in algorithm display order;
 // empty when neither experiment has an ok run.
 std::vector<const RunRecord*> MarinaFigureRuns(const std::vector<RunRecord>& runs);

@@ -39,7 +39,6 @@ TextTable RelaxedTable(const std::vector<RunRecord>& runs) {
                "empty",
                "median time (ms)"};
   t.numeric = {false, false, true, true, true, true, true, true, true, true, true};
-  t.wide = true;
   for (const GroupSummary& g : SummariseGroups(runs)) {
     if (!HasExperiment(g, kThesis003RelaxedLines) && !HasExperiment(g, kThesis003RelaxedBeacons))
       continue;
@@ -203,6 +202,16 @@ void Fig55To57(const std::vector<RunRecord>& runs, const std::string& out_dir, P
 }
 
 }  // namespace
+
+const std::vector<AccumulatorPublished>& Thesis003PublishedAccumulators() {
+  static const std::vector<AccumulatorPublished> kFigures = {
+      {"fig5_2_accumulator", "Fig. 5.2", -1, 1, 13, 20},
+      {"fig5_5_robot_a", "Fig. 5.5", 0, 3, 0, 3},
+      {"fig5_6_robot_b", "Fig. 5.6", 1, 0, 0, 4},
+      {"fig5_7_sum", "Fig. 5.7", -1, 1, 4, 7},
+  };
+  return kFigures;
+}
 
 const RunRecord* Thesis003FigureRun(const std::vector<RunRecord>& runs,
                                     const std::string& experiment) {

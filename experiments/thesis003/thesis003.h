@@ -47,6 +47,23 @@ inline constexpr char kThesis003RelaxedBeacons[] = "relaxed-beacons";
 const RunRecord* Thesis003FigureRun(const std::vector<RunRecord>& runs,
                                     const std::string& experiment);
 
+// What the thesis shows in an accumulator figure: its maxima (the number of
+// separate regions of highest count; 0: "several", at least two) and, for a
+// single maximum, its count out of the measurements, at the truth.
+struct AccumulatorPublished {
+  const char* figure;   // the plot's name, e.g. "fig5_2_accumulator"
+  const char* caption;  // the thesis' figure
+  int source;           // the accumulator drawn: a source, or -1 for the sum
+  int maxima;
+  int count;            // of the single maximum; 0 when several
+  int measurements;
+};
+// Fig. 5.2 (§5.1.4: 20 lines, 7 not through the common point: one peak
+// where the 13 others cross), Figs. 5.5-5.7 (§5.2.3: robot A's 3 ranges with
+// 1 outlier give 3 maxima, robot B's 4 with 2 outliers several, their sum a
+// single maximum where 4 of the 7 agree).
+const std::vector<AccumulatorPublished>& Thesis003PublishedAccumulators();
+
 // An accumulator recomputed from a run's definition (see the top).
 struct RecomputedAccumulator {
   // Each source's counts (sources numbered from 0; one when the view names

@@ -1,0 +1,44 @@
+#include "paper/comparison.h"
+
+#include <cmath>
+
+namespace icp {
+
+std::string_view ToString(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::kMatch:
+      return "match";
+    case Verdict::kDiffers:
+      return "differs";
+    case Verdict::kNoData:
+      return "no data";
+  }
+  return "?";
+}
+
+bool WithinFactor(double measured, double published, double factor) {
+  if (!(measured > 0) || !(published > 0) || !std::isfinite(measured) || !std::isfinite(published))
+    return false;
+  return std::fabs(std::log(measured / published)) <= std::log(factor) * (1 + 1e-12);
+}
+
+TextTable ComparisonTable(const std::string& title, const std::vector<ComparisonRow>& rows) {
+  TextTable t;
+  t.title = title;
+  t.headers = {"#", "what", "published", "measured", "verdict"};
+  t.numeric = {true, false, false, false, false};
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const ComparisonRow& r = rows[i];
+    const std::string n = std::to_string(i + 1);
+    t.rows.push_back({n, r.item, r.published, r.measured, std::string(ToString(r.verdict))});
+    // The rule and the reason below the table keep its columns narrow.
+    t.items.push_back(n + ". " + r.item + ": " + std::string(ToString(r.verdict)) +
+                      " (rule: " + r.rule + ")" + (r.reason.empty() ? "" : "; " + r.reason));
+  }
+  t.notes.push_back(
+      "Each verdict follows its rule, applied by paper/ to the numbers of this store; the rules, "
+      "and why a row differs or which spec produces its runs:");
+  return t;
+}
+
+}  // namespace icp

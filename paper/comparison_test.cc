@@ -1,0 +1,139 @@
+// The published-vs-measured rules on synthetic runs: the verdicts follow
+// the numbers, and rows without runs name the spec that produces them.
+#include "paper/comparison.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "experiments/paper000/paper000.h"
+#include "experiments/paper004/paper004.h"
+#include "report/report_testing.h"
+
+namespace icp {
+namespace {
+
+using testing::InExperiment;
+using testing::MakeRun;
+
+const ComparisonRow& Row(const std::vector<ComparisonRow>& rows, const std::string& item) {
+  for (const ComparisonRow& r : rows)
+    if (r.item == item) return r;
+  static const ComparisonRow kNone{"(no such row)", "", "", "", Verdict::kNoData, ""};
+  ADD_FAILURE() << "no row " << item;
+  return kNone;
+}
+
+// A run whose every step has the given x-y area.
+RunRecord WithArea(RunRecord run, double area) {
+  for (StepRecord& s : run.steps) s.area = area;
+  run.metrics = ComputeMetrics(run.steps);
+  return run;
+}
+
+TEST(ComparisonTest, WithinFactorIsSymmetricAndRejectsNonPositive) {
+  EXPECT_TRUE(WithinFactor(1.5, 1, 1.5));
+  EXPECT_TRUE(WithinFactor(1, 1.5, 1.5));
+  EXPECT_FALSE(WithinFactor(1.51, 1, 1.5));
+  EXPECT_FALSE(WithinFactor(0, 1, 1.5));
+  EXPECT_FALSE(WithinFactor(std::numeric_limits<double>::quiet_NaN(), 1, 1.5));
+}
+
+TEST(ComparisonTest, AnEmptyStoreGivesNoDataRowsThatNameTheirSpec) {
+  for (const auto& rows :
+       {Paper000Comparison({}), Thesis003Comparison({}), Paper004Comparison({})}) {
+    ASSERT_FALSE(rows.empty());
+    for (const ComparisonRow& r : rows) {
+      EXPECT_EQ(r.verdict, Verdict::kNoData) << r.item;
+      EXPECT_FALSE(r.published.empty()) << r.item;
+      EXPECT_NE(r.reason.find("specs/"), std::string::npos)
+          << r.item << ": " << r.reason;
+    }
+  }
+  const ComparisonRow& post =
+      Row(Paper004Comparison({}), "§4.2, Fig. 13: post-localization stays consistent");
+  EXPECT_NE(post.reason.find("specs/default.yaml (experiment window)"), std::string::npos) << post.reason;
+}
+
+TEST(ComparisonTest, Table1RatiosToHc4DecideTheVerdicts) {
+  auto t1 = [](RunRecord r) { return InExperiment(std::move(r), kPaper000Table1); };
+  std::vector<RunRecord> runs = {
+      t1(MakeRun("hc4", {}, {}, 1, {0.4e-3})), t1(MakeRun("bc3", {}, {}, 1, {0.8e-3})),
+      t1(MakeRun("bc4", {}, {}, 1, {0.45e-3})), t1(MakeRun("3b-bc4", {}, {}, 1, {1.2}))};
+  std::vector<ComparisonRow> rows = Paper000Comparison(runs);
+  EXPECT_EQ(Row(rows, "Table 1: BC3 / HC4").measured, "2");
+  EXPECT_EQ(Row(rows, "Table 1: BC3 / HC4").verdict, Verdict::kMatch);
+  EXPECT_EQ(Row(rows, "Table 1: 3B-BC4 / HC4").verdict, Verdict::kMatch);  // 3000 vs 2692
+  EXPECT_EQ(Row(rows, "Table 1: algorithms by time").verdict, Verdict::kMatch);
+  EXPECT_EQ(Row(rows, "Table 1: algorithms by time").measured, "HC4 < BC4 < BC3 < 3B-BC4");
+  // 0.4 ms against the published 0.52: within the factor.
+  EXPECT_EQ(Row(rows, "Table 1: HC4, ms per CSP").verdict, Verdict::kMatch);
+  EXPECT_EQ(Row(rows, "Fig. 3: every box holds the truth").verdict, Verdict::kMatch);
+  EXPECT_EQ(Row(rows, "Fig. 4: HC4, BC3 and BC4 give similar areas").verdict, Verdict::kMatch);
+  // Same areas: 3B-BC4 is not tighter.
+  EXPECT_EQ(Row(rows, "Fig. 4: 3B-BC4 slightly tighter than the others").verdict,
+            Verdict::kDiffers);
+
+  runs[1] = t1(MakeRun("bc3", {}, {}, 1, {20e-3}));  // 50 x HC4
+  runs[0] = t1(MakeRun("hc4", {}, {}, 1, {0.02e-3}));
+  rows = Paper000Comparison(runs);
+  EXPECT_EQ(Row(rows, "Table 1: BC3 / HC4").verdict, Verdict::kDiffers);
+  EXPECT_EQ(Row(rows, "Table 1: BC3 / HC4").reason, kNotMeasured);
+  const ComparisonRow& absolute = Row(rows, "Table 1: HC4, ms per CSP");
+  EXPECT_EQ(absolute.verdict, Verdict::kDiffers);
+  EXPECT_NE(absolute.reason.find("by construction"), std::string::npos);
+}
+
+TEST(ComparisonTest, Fig2FlatCarriedWindowsCiteTheMemorylessRow) {
+  auto window = [](const std::string& carry, double w, double area) {
+    ParamMap params;
+    if (!carry.empty()) params["carry"] = carry;
+    return InExperiment(
+        WithArea(MakeRun("hc4", params, {{"w", FormatNumber(w)}}, 1, {1e-5 * w, 1e-5 * w}), area),
+        kPaper000Window);
+  };
+  const std::vector<RunRecord> runs = {window("", 1, 16),        window("", 20, 16),
+                                       window("", 50, 16),       window("none", 1, 21.3),
+                                       window("none", 20, 17.8), window("none", 50, 16.8)};
+  const std::vector<ComparisonRow> rows = Paper000Comparison(runs);
+  const ComparisonRow& memoryless = Row(rows, "Fig. 2: area, w = 1 to 20, hc4 {carry=none}");
+  EXPECT_EQ(memoryless.verdict, Verdict::kMatch) << memoryless.measured;
+  const ComparisonRow& carried = Row(rows, "Fig. 2: area, w = 1 to 20, hc4");
+  EXPECT_EQ(carried.verdict, Verdict::kDiffers);
+  EXPECT_EQ(carried.measured, "0 % (16 to 16 m²)");
+  // The reason cites the memoryless row by its number.
+  std::size_t number = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    if (&rows[i] == &memoryless) number = i + 1;
+  EXPECT_NE(carried.reason.find("carry=none, row " + std::to_string(number) + ")"),
+            std::string::npos)
+      << carried.reason;
+  EXPECT_EQ(Row(rows, "Fig. 2: area, w = 20 to 50, hc4 {carry=none}").verdict, Verdict::kMatch);
+  EXPECT_EQ(Row(rows, "Fig. 2: time per CSP grows linearly with w").verdict, Verdict::kMatch);
+}
+
+TEST(ComparisonTest, Paper004ConsistencyFollowsTheSteps) {
+  std::vector<RunRecord> runs = {MakeRun("hc4", {}, {}, 1, {1e-5, 1e-5})};
+  const std::string item = "eq. 31: every ICP box holds the truth";
+  EXPECT_EQ(Row(Paper004Comparison(runs), item).verdict, Verdict::kMatch);
+  runs[0].steps[1].contained = 0;
+  runs[0].metrics = ComputeMetrics(runs[0].steps);
+  const ComparisonRow r = Row(Paper004Comparison(runs), item);
+  EXPECT_EQ(r.verdict, Verdict::kDiffers);
+  EXPECT_NE(r.measured.find("lowest 0.5"), std::string::npos) << r.measured;
+}
+
+TEST(ComparisonTest, TheTableNumbersRowsAndListsReasons) {
+  const TextTable t =
+      ComparisonTable("T", {{"a", "1", "1", "equal", Verdict::kMatch, ""},
+                            {"b", "1", "2", "equal", Verdict::kDiffers, kNotMeasured}});
+  ASSERT_EQ(t.rows.size(), 2u);
+  EXPECT_EQ(t.rows[1], (std::vector<std::string>{"2", "b", "1", "2", "differs"}));
+  ASSERT_EQ(t.items.size(), 2u);
+  EXPECT_EQ(t.items[0], "1. a: match (rule: equal)");
+  EXPECT_EQ(t.items[1], std::string("2. b: differs (rule: equal); ") + kNotMeasured);
+}
+
+}  // namespace
+}  // namespace icp

@@ -1,0 +1,64 @@
+#include "paper/paper.h"
+
+#include <filesystem>
+#include <fstream>
+
+#include "experiments/registry.h"
+#include "harness/environment_error.h"
+#include "harness/results_store.h"
+#include "paper/latex.h"
+#include "paper/sections.h"
+#include "paper/template.h"
+#include "plots/figures.h"
+#include "report/report.h"
+
+namespace icp {
+
+namespace {
+
+constexpr char kName[] = "icpbench";
+
+void WriteText(const std::string& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  out.close();
+  if (!out) ThrowErrno("cannot write " + path, errno);
+}
+
+}  // namespace
+
+PaperSources GeneratePaper(const std::vector<RunRecord>& runs, const std::string& store_path,
+                           const std::string& figures_dir,
+                           const std::vector<std::string>& skipped) {
+  const FigureSet figures{figures_dir, skipped};
+  PaperSources s;
+  s.files = {
+      {std::string(kName) + ".tex", PaperTemplate()},
+      {"generated/meta.tex", MetaTex(runs)},
+      {"generated/provenance.tex", ProvenanceTex(runs, store_path)},
+      {"generated/registry.tex", RegistryTex()},
+      {"generated/paper000.tex", Paper000Tex(runs, figures)},
+      {"generated/thesis003.tex", Thesis003Tex(runs, figures)},
+      {"generated/paper004.tex", Paper004Tex(runs, figures)},
+      {"generated/performance.tex", PerformanceTex(runs, figures)},
+  };
+  return s;
+}
+
+PaperOutput BuildPaper(const std::string& dir) {
+  const std::vector<RunRecord> runs = LoadRunsFromDirectory(dir);  // no store: exit 2
+  RequireLatex();                                                  // before drawing anything
+  const std::string paper_dir = dir + "/paper";
+  std::error_code error;
+  std::filesystem::create_directories(paper_dir + "/generated", error);
+  if (error) ThrowErrno("cannot create " + paper_dir, error.value());
+  // The figures as `plot` draws them (every paper's, then the generic ones).
+  const PlotOutput plots = PlotRuns(runs, paper_dir + "/figures", PaperFigures);
+  for (const auto& [path, text] :
+       GeneratePaper(runs, StorePath(dir), paper_dir + "/figures", plots.messages).files)
+    WriteText(paper_dir + "/" + path, text);
+  RunLatexmk(paper_dir, kName);
+  return {paper_dir + "/" + kName + ".pdf", plots.messages};
+}
+
+}  // namespace icp

@@ -1,0 +1,80 @@
+// The generated paper without a store's runs: every section says which spec
+// produces them, and (with LaTeX installed) the sources compile; long
+// tables are cut into parts that fit a page.
+#include "paper/paper.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+
+#include "paper/latex.h"
+#include "paper/sections.h"
+#include "report/report_testing.h"
+
+namespace icp {
+namespace {
+
+std::map<std::string, std::string> Files(const PaperSources& sources) {
+  return {sources.files.begin(), sources.files.end()};
+}
+
+TEST(PaperTest, AnEmptyStoreNamesTheSpecsOfEverySection) {
+  const auto files = Files(GeneratePaper({}, "results/x/results.sqlite", "/nonexistent", {}));
+  ASSERT_EQ(files.count("icpbench.tex"), 1u);
+  for (const char* fragment :
+       {"meta", "provenance", "registry", "paper000", "thesis003", "paper004", "performance"}) {
+    const std::string name = std::string("generated/") + fragment + ".tex";
+    ASSERT_EQ(files.count(name), 1u) << name;
+    EXPECT_NE(files.at("icpbench.tex").find(std::string("\\input{generated/") + fragment + "}"),
+              std::string::npos)
+        << fragment;
+  }
+  EXPECT_NE(files.at("generated/provenance.tex").find("results/x/results.sqlite"),
+            std::string::npos);
+  EXPECT_NE(files.at("generated/paper000.tex").find("icpbench run specs/default.yaml produces"),
+            std::string::npos);
+  EXPECT_NE(files.at("generated/thesis003.tex").find("specs/marina.yaml"), std::string::npos);
+  EXPECT_NE(files.at("generated/thesis003.tex").find("specs/relaxed.yaml"), std::string::npos);
+  EXPECT_NE(files.at("generated/paper004.tex").find("specs/default.yaml (experiment window) produces"),
+            std::string::npos);
+  // A figure the plots skipped says why in its place.
+  const auto with_figures = Files(
+      GeneratePaper({testing::InExperiment(testing::MakeRun("hc4", {}, {}, 1, {1e-5}), "table1")},
+                    "s", "/nonexistent", {"fig3_corridors: skipped: gnuplot not found"}));
+  EXPECT_NE(with_figures.at("generated/paper000.tex").find("is not drawn: gnuplot not found."),
+            std::string::npos)
+      << with_figures.at("generated/paper000.tex");
+}
+
+TEST(PaperTest, LongTablesAreCutIntoParts) {
+  std::vector<RunRecord> runs;
+  for (int w = 1; w <= 50; ++w)
+    runs.push_back(testing::MakeRun("hc4", {}, {{"w", std::to_string(w)}}, 1, {1e-5}));
+  const std::string tex = PerformanceTex(runs, {"/nonexistent", {}});
+  EXPECT_NE(tex.find("\\caption{Time per step of every configuration}"), std::string::npos);
+  EXPECT_NE(tex.find("\\caption{Time per step of every configuration, continued}"),
+            std::string::npos);
+  // The notes once, after the last part.
+  EXPECT_EQ(tex.find("Solve time per step over"), tex.rfind("Solve time per step over"));
+  EXPECT_GT(tex.find("Solve time per step over"), tex.find("continued"));
+}
+
+TEST(PaperTest, TheEmptyPaperCompiles) {
+  if (FindOnPath("latexmk").empty() || FindOnPath("pdflatex").empty())
+    GTEST_SKIP() << "LaTeX not installed (bash scripts/deps.sh installs it)";
+  const std::string dir = ::testing::TempDir() + "paper_test_empty_" + std::to_string(getpid());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir + "/generated");
+  for (const auto& [path, text] : GeneratePaper({}, "s", dir + "/figures", {}).files)
+    std::ofstream(dir + "/" + path) << text;
+  RunLatexmk(dir, "icpbench");
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir + "/icpbench.pdf"));
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace icp

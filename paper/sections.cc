@@ -1,0 +1,266 @@
+#include "paper/sections.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "algorithms/registry.h"
+#include "experiments/paper000/paper000.h"
+#include "experiments/paper004/paper004.h"
+#include "experiments/thesis003/marina.h"
+#include "experiments/thesis003/thesis003.h"
+#include "paper/comparison.h"
+#include "problems/registry.h"
+#include "report/report.h"
+
+namespace icp {
+
+namespace {
+
+std::string Tt(const std::string& text) { return "\\texttt{" + TexEscape(text) + "}"; }
+
+bool HasRunOf(const std::vector<RunRecord>& runs, bool (*of)(const std::string& experiment)) {
+  return std::any_of(runs.begin(), runs.end(),
+                     [&](const RunRecord& r) { return of(ExperimentOf(r)); });
+}
+
+// A figure drawn from the store, or why it is not.
+std::string FigureTex(const FigureSet& figures, const std::string& name,
+                      const std::string& caption) {
+  if (std::filesystem::is_regular_file(figures.dir + "/" + name + ".pdf")) {
+    return "\\begin{figure}[htbp]\n\\centering\n\\includegraphics[width=\\linewidth,height=0.42"
+           "\\textheight,keepaspectratio]{figures/" +
+           name + ".pdf}\n\\caption{" + TexEscape(caption + " (" + name + ")") +
+           "}\n\\end{figure}\n\n";
+  }
+  std::string why = "no figure was written";
+  for (const std::string& m : figures.skipped)
+    if (m.rfind(name + ": skipped: ", 0) == 0) why = m.substr(name.size() + 11);
+  return "\\emph{" + TexEscape(caption) + "} (" + Tt(name) + ") is not drawn: " + TexEscape(why) +
+         ".\n\n";
+}
+
+// A table as LaTeX, in parts of at most kPartRows rows: the template keeps
+// a table on one page, so a long one is cut (titles "..., continued"; the
+// notes and items after the last part).
+constexpr std::size_t kPartRows = 45;
+std::string PagedTable(const TextTable& table) {
+  if (table.rows.size() <= kPartRows) return TexTable(table);
+  std::string out;
+  for (std::size_t first = 0; first < table.rows.size(); first += kPartRows) {
+    TextTable part = table;
+    const std::size_t last = std::min(table.rows.size(), first + kPartRows);
+    part.rows.assign(table.rows.begin() + first, table.rows.begin() + last);
+    if (first > 0) part.title += ", continued";
+    if (last < table.rows.size()) part.notes.clear(), part.items.clear();
+    out += TexTable(part);
+  }
+  return out;
+}
+
+std::string Paragraph(const std::string& text) { return TexEscape(text) + "\n\n"; }
+
+// The run counts by status, "87 ok, 1 failed".
+std::string StatusCounts(const std::vector<RunRecord>& runs) {
+  std::map<std::string, int> counts;
+  for (const RunRecord& r : runs) ++counts[std::string(ToString(r.status))];
+  std::string out;
+  for (const auto& [status, n] : counts)
+    out += (out.empty() ? "" : ", ") + std::to_string(n) + " " + status;
+  return out.empty() ? "none" : out;
+}
+
+// The distinct values of one provenance field with their run counts.
+std::string Distinct(const std::vector<RunRecord>& runs, std::string Provenance::*field) {
+  std::map<std::string, int> values;
+  for (const RunRecord& r : runs)
+    ++values[(r.provenance.*field).empty() ? "unknown" : r.provenance.*field];
+  std::string out;
+  for (const auto& [value, n] : values)
+    out += (out.empty() ? "" : "; ") + value +
+           (values.size() > 1 ? " (" + std::to_string(n) + " runs)" : "");
+  return out.empty() ? "none" : out;
+}
+
+bool IsPaper000Experiment(const std::string& e) {
+  return e == kPaper000Table1 || e == kPaper000Window;
+}
+bool IsAccumulatorExperiment(const std::string& e) {
+  return e == kThesis003Fig52 || e == kThesis003Fig55 || e == kThesis003RelaxedLines ||
+         e == kThesis003RelaxedBeacons;
+}
+bool IsMarina(const std::string& e) { return IsMarinaExperiment(e); }
+
+}  // namespace
+
+std::string MetaTex(const std::vector<RunRecord>& runs) {
+  std::string newest;
+  for (const RunRecord& r : runs) newest = std::max(newest, r.provenance.date);
+  return "\\newcommand{\\icpbenchdate}{" +
+         TexEscape(newest.empty() ? "a store without runs" : "runs up to " + newest) + "}\n";
+}
+
+std::string ProvenanceTex(const std::vector<RunRecord>& runs, const std::string& store_path) {
+  std::string first, last;
+  for (const RunRecord& r : runs) {
+    if (r.provenance.date.empty()) continue;
+    if (first.empty() || r.provenance.date < first) first = r.provenance.date;
+    last = std::max(last, r.provenance.date);
+  }
+  std::ostringstream out;
+  out << "\\begin{center}\\small\n\\begin{tabular}{@{}lp{0.78\\linewidth}@{}}\n\\toprule\n"
+      << "results store & " << Tt(store_path) << " \\\\\n"
+      << "runs & " << TexEscape(std::to_string(runs.size()) + " (" + StatusCounts(runs) + ")")
+      << " \\\\\n"
+      << "code revision & " << TexEscape(Distinct(runs, &Provenance::git_revision)) << " \\\\\n"
+      << "machine & " << TexEscape(Distinct(runs, &Provenance::machine)) << " \\\\\n"
+      << "compiler & " << TexEscape(Distinct(runs, &Provenance::compiler)) << " \\\\\n"
+      << "flags & " << TexEscape(Distinct(runs, &Provenance::flags)) << " \\\\\n"
+      << "run dates & " << TexEscape(first.empty() ? "unknown" : first + " to " + last) << " \\\\\n"
+      << "\\bottomrule\n\\end{tabular}\n\\end{center}\n\n";
+  std::set<std::string> revisions;
+  for (const RunRecord& r : runs)
+    if (r.status == RunStatus::kOk) revisions.insert(r.provenance.git_revision);
+  if (revisions.size() > 1)
+    out << Paragraph("Note: the runs come from " + std::to_string(revisions.size()) +
+                     " code revisions; rerun the spec with --force to measure one.");
+  return out.str();
+}
+
+std::string RegistryTex() {
+  std::ostringstream out;
+  out << "\\begin{description}\\small\n";
+  for (const AlgorithmInfo& a : Algorithms()) {
+    if (a.test_only) continue;
+    out << "\\item[" << Tt(a.name) << "] (needs the " << TexEscape(std::string(ToString(a.needs)))
+        << " view) " << TexEscape(a.description) << "\n";
+  }
+  out << "\\end{description}\n\\begin{description}\\small\n";
+  for (const ProblemInfo& p : Problems()) {
+    std::string views;
+    for (View v : p.offers) views += (views.empty() ? "" : ", ") + std::string(ToString(v));
+    out << "\\item[" << Tt(p.name) << "] (offers " << TexEscape(views) << ") "
+        << TexEscape(p.description) << "\n";
+  }
+  out << "\\end{description}\n";
+  return out.str();
+}
+
+std::string Paper000Tex(const std::vector<RunRecord>& runs, const FigureSet& figures) {
+  std::ostringstream out;
+  if (!HasRunOf(runs, IsPaper000Experiment)) {
+    out << Paragraph(
+        "This store holds no run of paper 000's experiments (table1, window): "
+        "icpbench run specs/default.yaml produces them. Its published values "
+        "are compared below as far as the store allows.");
+  } else {
+    out << Paragraph(
+        "Table 1 and Figs. 2 to 4 of paper 000 on the simulated car track; the "
+        "runs are those of the spec experiments table1 and window "
+        "(specs/default.yaml).");
+    for (const TextTable& t : Paper000Tables(runs)) out << PagedTable(t);
+    out << FigureTex(figures, "fig2_window", "Fig. 2: mean area and time per CSP against w");
+    out << FigureTex(figures, "fig3_corridors", "Fig. 3: interval error corridors over the lap");
+    out << FigureTex(figures, "fig4_area", "Fig. 4: x-y area over the lap");
+  }
+  out << PagedTable(ComparisonTable("Paper 000: published vs measured", Paper000Comparison(runs)));
+  return out.str();
+}
+
+std::string Thesis003Tex(const std::vector<RunRecord>& runs, const FigureSet& figures) {
+  std::ostringstream out;
+  const bool relaxed = HasRunOf(runs, IsAccumulatorExperiment);
+  const bool marina = HasRunOf(runs, IsMarina);
+  const std::vector<TextTable> tables = Thesis003Tables(runs);  // relaxed, then marina
+  out << "\\subsection{Relaxed solvers: Figs. 5.2 and 5.5 to 5.7}\n";
+  if (!relaxed) {
+    out << Paragraph(
+        "This store holds no run of experiments fig5_2, fig5_5, relaxed-lines or "
+        "relaxed-beacons: icpbench run specs/default.yaml (a short sweep) or "
+        "specs/relaxed.yaml (the whole one) produces them.");
+  } else {
+    out << PagedTable(tables.at(0));
+    out << FigureTex(figures, "fig5_2_accumulator", "Fig. 5.2: accumulator of lines with outliers");
+    out << FigureTex(figures, "fig5_5_robot_a", "Fig. 5.5: robot A alone");
+    out << FigureTex(figures, "fig5_6_robot_b", "Fig. 5.6: robot B alone");
+    out << FigureTex(figures, "fig5_7_sum", "Fig. 5.7: the sum of both robots");
+  }
+  out << "\\subsection{Chapter 6: set membership against the particle filter}\n";
+  if (!marina) {
+    out << Paragraph(
+        "This store holds no run of experiment marina or marina-*: "
+        "icpbench run specs/marina.yaml (or specs/default.yaml, experiment "
+        "marina-short) produces them.");
+  } else {
+    out << PagedTable(tables.at(1));
+    out << FigureTex(figures, "fig6_8_marina_tracks",
+                     "Figs. 6.8 and 6.9: the marina, the truth, the set-membership boxes and "
+                     "the particle filter's mean");
+    out << FigureTex(figures, "fig6_errors", "Centre error over time, both methods");
+  }
+  out << PagedTable(
+      ComparisonTable("Thesis 003: published vs measured", Thesis003Comparison(runs)));
+  return out.str();
+}
+
+std::string Paper004Tex(const std::vector<RunRecord>& runs, const FigureSet& figures) {
+  std::ostringstream out;
+  out << Paragraph(
+      "Paper 004 calls a localization consistent at a step when its box holds the reference "
+      "(eq. 31: 0 lies in the interval error of eq. 30), and its method consistent when every "
+      "step is; the runs' consistency above is that share. Its post-localization (§4.2, Fig. "
+      "13) propagates each new observation back through a window of Xi = " +
+      std::to_string(kPaper004.post_localization_window) +
+      " steps: a state's box once the window has moved past it. icpbench's window estimators "
+      "report each window's oldest state, whose last report is that box; the table sets it "
+      "beside the real-time box (the newest state's) for every configuration and w of the "
+      "window sweep.");
+  const TextTable table = Paper004Tables(runs).at(0);
+  out << PagedTable(table);
+  if (!table.rows.empty())
+    out << FigureTex(figures, "fig13_post_localization",
+                     "Figs. 12 and 13: interval error of the real-time boxes (top) and of the "
+                     "post-localized states (bottom)");
+  out << PagedTable(ComparisonTable("Paper 004: published vs measured", Paper004Comparison(runs)));
+  return out.str();
+}
+
+std::string PerformanceTex(const std::vector<RunRecord>& runs, const FigureSet& figures) {
+  const std::vector<GroupSummary> groups = SummariseGroups(runs);
+  TextTable t;
+  t.title = "Time per step of every configuration";
+  t.headers = {"algorithm",   "problem",  "runs",      "steps",
+               "median (µs)", "p90 (µs)", "mean (µs)", "mean / HC4"};
+  t.numeric = {false, false, true, true, true, true, true, true};
+  t.omit_if_empty = true;
+  for (const GroupSummary& g : groups) {
+    if (g.ok == 0 || g.metrics.steps == 0) continue;
+    double hc4 = std::numeric_limits<double>::quiet_NaN();
+    for (const GroupSummary& h : groups) {
+      if (h.algorithm == "hc4" && h.algorithm_params.empty() && h.ok > 0 &&
+          h.problem == g.problem && h.problem_params == g.problem_params)
+        hc4 = h.metrics.time_mean_s;
+    }
+    t.rows.push_back(
+        {WithParams(DisplayOf(g.algorithm).label, g.algorithm_params),
+         WithParams(g.problem, g.problem_params), OkRunsCell(g), std::to_string(g.metrics.steps),
+         FormatNumber(g.metrics.time_median_s * 1e6), FormatNumber(g.metrics.time_p90_s * 1e6),
+         FormatNumber(g.metrics.time_mean_s * 1e6), FormatRatio(g.metrics.time_mean_s, hc4)});
+  }
+  t.notes.push_back(
+      "Solve time per step over the steps of each configuration's ok runs (for ICP the "
+      "contraction of one window alone, building it excluded), on the machines of the first "
+      "page; mean / HC4 divides by HC4 at default parameters on the same problem configuration "
+      "(— where there is none).");
+  if (t.rows.empty())
+    t.notes.push_back("No ok run in the store: icpbench run specs/default.yaml produces them.");
+  std::ostringstream out;
+  out << PagedTable(t);
+  out << FigureTex(figures, "fig_timing", "Solve time per step, per algorithm");
+  return out.str();
+}
+
+}  // namespace icp
