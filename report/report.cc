@@ -225,6 +225,8 @@ std::string TexEscape(const std::string& text) {
       {"^", "\\textasciicircum{}"}, {"—", "---"}, {"µ", "$\\mu$"}, {"²", "$^2$"},
       {"×", "$\\times$"}, {"∞", "$\\infty$"}, {"…", "\\ldots{}"}, {"≤", "$\\leq$"},
       {"≥", "$\\geq$"}, {"§", "\\S{}"}, {"−", "$-$"}, {"±", "$\\pm$"}, {"≈", "$\\approx$"},
+      {"π", "$\\pi$"}, {"Ξ", "$\\Xi$"}, {"ψ", "$\\psi$"}, {"θ", "$\\theta$"},
+      {"ε", "$\\varepsilon$"}, {"·", "$\\cdot$"}, {"–", "--"},
       {"<", "$<$"}, {">", "$>$"}, {"|", "\\textbar{}"}};
   std::string out;
   const std::string line = OneLine(text);

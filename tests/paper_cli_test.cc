@@ -126,7 +126,14 @@ TEST_F(PaperCliTest, ThePdfHoldsTheTablesNumbersAndTheRevision) {
   EXPECT_NE(text.out.find("published vs measured"), std::string::npos);
   EXPECT_NE(text.out.find("match"), std::string::npos);
   EXPECT_NE(text.out.find("specs/marina.yaml"), std::string::npos);
-  EXPECT_NE(text.out.find("not implemented yet"), std::string::npos);
+  // Paper 004's post-localization table: the PL area of a window run.
+  const std::size_t paper004 = report.out.find("Paper 004: real-time vs post-localization");
+  ASSERT_NE(paper004, std::string::npos) << report.out;
+  const std::vector<std::string> post = Cells(report.out.substr(paper004), "hc4 {carry=none} [steps=40]");
+  ASSERT_GE(post.size(), 8u) << report.out.substr(paper004);
+  EXPECT_NE(post[7], "—");
+  EXPECT_NE(text.out.find(post[7]), std::string::npos) << "post-localized area " << post[7];
+  EXPECT_NE(text.out.find("real-time vs post-localization"), std::string::npos);
 }
 
 TEST_F(PaperCliTest, NoStoreExitsTwo) {
