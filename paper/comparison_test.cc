@@ -113,6 +113,23 @@ TEST(ComparisonTest, Fig2FlatCarriedWindowsCiteTheMemorylessRow) {
   EXPECT_EQ(Row(rows, "Fig. 2: time per CSP grows linearly with w").verdict, Verdict::kMatch);
 }
 
+// Carried windows read as the mean area over the window's states (the steps'
+// window_mean_area): 10 -> 8.5 m² is paper 000's fall within 5 points.
+TEST(ComparisonTest, Fig2AsTheWindowsMeanArea) {
+  auto window = [](double w, double window_area) {
+    RunRecord r = WithArea(MakeRun("hc4", {}, {{"w", FormatNumber(w)}}, 1, {1e-5, 1e-5}), 16);
+    for (StepRecord& s : r.steps) s.properties.push_back({"window_mean_area", window_area});
+    return InExperiment(std::move(r), kPaper000Window);
+  };
+  const std::vector<ComparisonRow> rows =
+      Paper000Comparison({window(1, 10), window(20, 8.5), window(50, 8.4)});
+  const ComparisonRow& fall = Row(rows, "Fig. 2 as the mean area over the window's states, w = 1 to 20, hc4");
+  EXPECT_EQ(fall.verdict, Verdict::kMatch) << fall.measured;
+  EXPECT_EQ(fall.measured, "-15 % (10 to 8.5 m²)");
+  EXPECT_EQ(Row(rows, "Fig. 2 as the mean area over the window's states, w = 20 to 50, hc4").verdict,
+            Verdict::kMatch);
+}
+
 TEST(ComparisonTest, Paper004ConsistencyFollowsTheSteps) {
   std::vector<RunRecord> runs = {MakeRun("hc4", {}, {}, 1, {1e-5, 1e-5})};
   const std::string item = "eq. 31: every ICP box holds the truth";

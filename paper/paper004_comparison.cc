@@ -113,21 +113,35 @@ std::vector<ComparisonRow> Paper004Comparison(const std::vector<RunRecord>& runs
                     "narrower than real-time localization (" + xi + ")",
                     "—",
                     "mean width of x plus y of the post-localized states below that of the "
-                    "real-time boxes, for every configuration and w of experiment window",
+                    "real-time boxes, for every configuration and w of experiment window whose "
+                    "windows carry their previous result (carry first or all: the paper's "
+                    "graph keeps its past)",
                     Verdict::kNoData,
                     ""};
-    int compared = 0, narrower = 0;
+    int compared = 0, narrower = 0, memoryless = 0, memoryless_narrower = 0;
     for (const PostLocalizationPoint& p : post) {
       const double a = CorridorWidth(p.post, "x") + CorridorWidth(p.post, "y");
       const double b = CorridorWidth(p.real_time, "x") + CorridorWidth(p.real_time, "y");
       if (std::isnan(a) || std::isnan(b)) continue;
+      const ParamMap& params = p.point.ok_runs.front()->spec.algorithm_params;
+      const auto carry = params.find("carry");
+      if (carry != params.end() && carry->second == "none") {
+        ++memoryless;
+        memoryless_narrower += a < b;
+        continue;
+      }
       ++compared;
       narrower += a < b;
     }
     if (compared == 0) {
-      r.reason = kPostLocalizationMissing;
+      r.reason = memoryless == 0 ? std::string(kPostLocalizationMissing)
+                                 : "experiment window ran only memoryless windows (carry=none)";
     } else {
       r.measured = std::to_string(narrower) + " of " + std::to_string(compared) + " narrower";
+      if (memoryless > 0)
+        r.measured += " (carry=none: " + std::to_string(memoryless_narrower) + " of " +
+                      std::to_string(memoryless) +
+                      ", a memoryless window's oldest state starts from its measurements alone)";
       if (const RunRecord* shown = Paper004FigureRun(runs)) {
         for (const PostLocalizationPoint& p : post) {
           if (std::find(p.point.ok_runs.begin(), p.point.ok_runs.end(), shown) == p.point.ok_runs.end())
