@@ -104,22 +104,10 @@ bool Tape::PrepareUnivariate(const Box& box, int var, std::vector<Interval>& slo
       ++next;
       continue;
     }
-    // As ForwardWithDerivative, on the slots whose operands are all independent.
-    const TapeInstr& in = code_[s];
-    Interval& z = slots[s];
-    Interval& dz = dslots[s];
-    if (in.op == Op::kConst) {
-      z = constants_[s];
-      dz = Interval(0.0);
-    } else if (in.op == Op::kVar) {
-      z = box[in.n];
-      dz = Interval(0.0);
-    } else {
-      const int b = in.b >= 0 ? in.b : in.a;
-      z = EvalOp(in.op, slots[in.a], slots[b], in.n);
-      dz = DerivOp(in.op, slots[in.a], slots[b], z, dslots[in.a], dslots[b], in.n);
-    }
-    if (z.IsEmpty()) return false;
+    // As ForwardWithDerivative, on the slots whose operands are all
+    // independent (their derivatives are 0).
+    EvalWithDerivative(s, box, var, slots, dslots);
+    if (slots[s].IsEmpty()) return false;
   }
   return true;
 }
@@ -181,27 +169,32 @@ Interval Tape::Forward(const Box& box, std::vector<Interval>& slots) const {
   return ForwardSweep<false>(box, slots, nullptr);
 }
 
+void Tape::EvalWithDerivative(int s, const Box& box, int var, std::vector<Interval>& slots,
+                              std::vector<Interval>& dslots) const {
+  const TapeInstr& in = code_[s];
+  Interval& z = slots[s];
+  Interval& dz = dslots[s];
+  if (in.op == Op::kConst) {
+    z = constants_[s];
+    dz = Interval(0.0);
+  } else if (in.op == Op::kVar) {
+    z = box[in.n];
+    dz = Interval(in.n == var ? 1.0 : 0.0);
+  } else {
+    const int b = in.b >= 0 ? in.b : in.a;
+    z = EvalOp(in.op, slots[in.a], slots[b], in.n);
+    dz = DerivOp(in.op, slots[in.a], slots[b], z, dslots[in.a], dslots[b], in.n);
+  }
+}
+
 Interval Tape::ForwardWithDerivative(const Box& box, int var, std::vector<Interval>& slots,
                                      std::vector<Interval>& dslots, Interval* derivative) const {
   if (slots.size() < code_.size()) slots.resize(code_.size());
   if (dslots.size() < code_.size()) dslots.resize(code_.size());
   const int n = size();
   for (int s = 0; s < n; ++s) {
-    const TapeInstr& in = code_[s];
-    Interval& z = slots[s];
-    Interval& dz = dslots[s];
-    if (in.op == Op::kConst) {
-      z = constants_[s];
-      dz = Interval(0.0);
-    } else if (in.op == Op::kVar) {
-      z = box[in.n];
-      dz = Interval(in.n == var ? 1.0 : 0.0);
-    } else {
-      const int b = in.b >= 0 ? in.b : in.a;
-      z = EvalOp(in.op, slots[in.a], slots[b], in.n);
-      dz = DerivOp(in.op, slots[in.a], slots[b], z, dslots[in.a], dslots[b], in.n);
-    }
-    if (z.IsEmpty()) {
+    EvalWithDerivative(s, box, var, slots, dslots);
+    if (slots[s].IsEmpty()) {
       *derivative = Interval::Empty();
       return Interval::Empty();
     }

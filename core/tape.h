@@ -92,6 +92,10 @@ class Tape {
   // some operation or constant is unbounded.
   template <bool kTrackBounded>
   Interval ForwardSweep(const Box& box, std::vector<Interval>& slots, bool* bounded) const;
+  // Slot s's value and derivative with respect to variable var from its
+  // operands' (forward-mode differentiation, one slot).
+  void EvalWithDerivative(int s, const Box& box, int var, std::vector<Interval>& slots,
+                          std::vector<Interval>& dslots) const;
 
   std::vector<TapeInstr> code_;
   std::vector<Interval> constants_;  // per slot; used by kConst slots
