@@ -364,6 +364,11 @@ TEST(RunnerProcessTest, CliOutOfMemoryIsTheEnvironment) {
 #endif
 
 TEST(RunnerProcessTest, CliDescriptorExhaustionIsTheEnvironmentAndLeavesNoWorker) {
+#if defined(ICPBENCH_SANITIZED)
+  // UBSan's vptr check tests memory with a pipe; without descriptors it
+  // reports every virtual call as on an invalid object.
+  GTEST_SKIP() << "the sanitizers' runtime needs descriptors of its own";
+#endif
   const std::string dir = FreshDir("cli_fds");
   const std::string spec = testing::WriteFile(
       "process_fds.yaml", "repetitions: 16\nalgorithms: [hc4]\nproblems: [chain]\n");

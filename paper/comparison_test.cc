@@ -51,8 +51,8 @@ TEST(ComparisonTest, AnEmptyStoreGivesNoDataRowsThatNameTheirSpec) {
           << r.item << ": " << r.reason;
     }
   }
-  const ComparisonRow& post =
-      Row(Paper004Comparison({}), "§4.2, Fig. 13: post-localization stays consistent");
+  const std::vector<ComparisonRow> rows = Paper004Comparison({});  // Row refers into it
+  const ComparisonRow& post = Row(rows, "§4.2, Fig. 13: post-localization stays consistent");
   EXPECT_NE(post.reason.find("specs/default.yaml (experiment window)"), std::string::npos) << post.reason;
 }
 
