@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -278,8 +279,15 @@ TEST(RunnerTest, RecordRunsStoresNoStepsButTheSameMetrics) {
   EXPECT_EQ(Sweep(body, steps_dir).ok, 2);
   EXPECT_EQ(Sweep("record: runs\n" + body, runs_dir).ok, 2);
   EXPECT_TRUE(StepFilesIn(runs_dir).empty());
-  const std::vector<RunRecord> with = ResultsStore(StorePath(steps_dir)).LoadRuns(true);
-  const std::vector<RunRecord> without = ResultsStore(StorePath(runs_dir)).LoadRuns(true);
+  // In the order of their keys: two workers may finish in either order.
+  auto load = [](const std::string& dir) {
+    std::vector<RunRecord> runs = ResultsStore(StorePath(dir)).LoadRuns(true);
+    std::sort(runs.begin(), runs.end(),
+              [](const RunRecord& a, const RunRecord& b) { return a.spec.Key() < b.spec.Key(); });
+    return runs;
+  };
+  const std::vector<RunRecord> with = load(steps_dir);
+  const std::vector<RunRecord> without = load(runs_dir);
   ASSERT_EQ(with.size(), 2u);
   ASSERT_EQ(without.size(), 2u);
   for (std::size_t i = 0; i < 2; ++i) {
