@@ -251,7 +251,8 @@ TEST(RunnerTest, ShardsSplitTheMatrixWithoutOverlap) {
 // A shard's runs are the same after a rerun (--force), and are the ones
 // ShardRuns names.
 TEST(RunnerTest, AShardHoldsTheSameRunsAfterARerun) {
-  const std::string yaml = "seeds: [1, 2, 3, 4, 5, 6, 7]\nalgorithms: [hc4, bc4]\nproblems: [chain]\n";
+  const std::string yaml =
+      "seeds: [1, 2, 3, 4, 5, 6, 7]\nalgorithms: [hc4, bc4]\nproblems: [chain]\n";
   const Spec spec = ParseSpec(yaml, "test.yaml");
   std::set<std::string> expected;
   for (std::size_t i : ShardRuns(spec, 1, 3)) expected.insert(spec.runs[i].spec.Key());

@@ -39,8 +39,9 @@ TEST(ShardTest, SlurmArrayTasksGiveTheirShard) {
                             {"SLURM_ARRAY_TASK_MAX", "4"},
                             {"SLURM_ARRAY_TASK_COUNT", "4"}})),
             std::make_pair(3, 4));
-  EXPECT_EQ(ParseShard("auto", Env({{"SLURM_ARRAY_TASK_ID", "0"}, {"SLURM_ARRAY_TASK_COUNT", "1"}})),
-            std::make_pair(0, 1));
+  EXPECT_EQ(
+      ParseShard("auto", Env({{"SLURM_ARRAY_TASK_ID", "0"}, {"SLURM_ARRAY_TASK_COUNT", "1"}})),
+      std::make_pair(0, 1));
 }
 
 TEST(ShardTest, MissingOrInconsistentSlurmVariablesAreErrors) {
@@ -110,12 +111,13 @@ TEST(ShardTest, ShardsAreStableAndPartitionTheMatrix) {
       total += keys.size();
       all.insert(keys.begin(), keys.end());
     }
-    EXPECT_EQ(total, first.runs.size()) << count;  // no run in two shards
+    EXPECT_EQ(total, first.runs.size()) << count;       // no run in two shards
     EXPECT_EQ(all.size(), first.runs.size()) << count;  // every run in one
   }
   // The documented order (harness/spec.h): problems, then algorithms, then
   // grid points (last key fastest), then seeds.
-  EXPECT_EQ(first.runs[0].spec.Key(), ParseSpec("algorithms: [hc4]\nproblems: [chain]\n", "x").runs[0].spec.Key());
+  EXPECT_EQ(first.runs[0].spec.Key(),
+            ParseSpec("algorithms: [hc4]\nproblems: [chain]\n", "x").runs[0].spec.Key());
   EXPECT_EQ(first.runs[1].spec.seed, 2u);
   EXPECT_EQ(first.runs[3].spec.algorithm, "bc4");
   EXPECT_EQ(first.runs[3].spec.algorithm_params.at("ratio"), "0.01");

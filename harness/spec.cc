@@ -296,8 +296,9 @@ class Reader {
         for (const ParamMap& pp : p.grid)
           for (const ParamMap& ap : a.grid)
             for (std::uint64_t seed : seeds) {
-              PlannedRun run{RunSpec{a.name, ap, p.name, pp, seed, timeout, memory_limit, record_steps},
-                             name, skip};
+              PlannedRun run{
+                  RunSpec{a.name, ap, p.name, pp, seed, timeout, memory_limit, record_steps}, name,
+                  skip};
               if (seen->insert(run.spec.Key()).second) spec->runs.push_back(std::move(run));
             }
       }

@@ -205,8 +205,8 @@ std::string CorridorRange(const std::vector<std::vector<double>>& rows) {
 }
 
 int CountRunsOnly(const std::vector<const RunRecord*>& runs) {
-  return static_cast<int>(
-      std::count_if(runs.begin(), runs.end(), [](const RunRecord* r) { return RecordedRunsOnly(*r); }));
+  return static_cast<int>(std::count_if(runs.begin(), runs.end(),
+                                        [](const RunRecord* r) { return RecordedRunsOnly(*r); }));
 }
 
 std::string RunsOnlyText(int n) {
@@ -219,13 +219,14 @@ std::string RunsOnlyText(int n) {
 // the generic reason.
 void Skip(const FigureText& text, PlotOutput* out, const std::vector<const RunRecord*>& runs = {}) {
   const int runs_only = CountRunsOnly(runs);
-  out->messages.push_back(text.name + ": skipped: " +
-                          (runs_only > 0 ? "it needs step rows, and " + RunsOnlyText(runs_only)
-                                         : text.skip_reason));
+  out->messages.push_back(
+      text.name + ": skipped: " +
+      (runs_only > 0 ? "it needs step rows, and " + RunsOnlyText(runs_only) : text.skip_reason));
 }
 
 // Drawn, but without the runs that have no step rows.
-void NoteRunsOnly(const FigureText& text, const std::vector<const RunRecord*>& runs, PlotOutput* out) {
+void NoteRunsOnly(const FigureText& text, const std::vector<const RunRecord*>& runs,
+                  PlotOutput* out) {
   if (const int n = CountRunsOnly(runs); n > 0)
     out->messages.push_back(text.name + ": left out " + RunsOnlyText(n));
 }
@@ -497,7 +498,8 @@ void PlotTimingFigure(const FigureText& text, const std::vector<const GroupSumma
   Panel panel;
   std::string xtics;
   std::vector<const RunRecord*> ok_runs;
-  for (const GroupSummary* g : groups) ok_runs.insert(ok_runs.end(), g->ok_runs.begin(), g->ok_runs.end());
+  for (const GroupSummary* g : groups)
+    ok_runs.insert(ok_runs.end(), g->ok_runs.begin(), g->ok_runs.end());
   for (const GroupSummary* g : groups) {
     const double x = static_cast<double>(panel.series.size() + 1);
     Series s{"using (" + std::to_string(x) + "):1 with boxplot lw 1.2 lc rgb " +

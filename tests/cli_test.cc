@@ -2,10 +2,10 @@
 // round-trip and enclose, null for infinite bounds, exit code 2 on bad input.
 #include <gtest/gtest.h>
 
-#include <nlohmann/json.hpp>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
@@ -226,19 +226,21 @@ TEST(CliTest, BadInputExitsWithTwoAndAClearMessage) {
   EXPECT_EQ(Icpbench("frobnicate").exit_code, 2);
 }
 
-
 // Runs icpbench with only the given Slurm array variables set (any the test
 // itself runs under are removed).
 Result IcpbenchInArray(const std::string& vars, const std::string& args) {
   return icp::testing::RunCommand(
       "env -u SLURM_ARRAY_TASK_ID -u SLURM_ARRAY_TASK_COUNT -u SLURM_ARRAY_TASK_MIN "
-      "-u SLURM_ARRAY_TASK_MAX " + vars + " " + ICPBENCH_BINARY, args);
+      "-u SLURM_ARRAY_TASK_MAX " +
+          vars + " " + ICPBENCH_BINARY,
+      args);
 }
 
 // Key -> (status, the metrics but the times) of every run in dir's store.
 std::map<std::string, std::string> RunsOf(const std::string& dir) {
   std::map<std::string, std::string> out;
-  for (const icp::RunRecord& r : icp::ResultsStore::OpenReadOnly(icp::StorePath(dir))->LoadRuns(false)) {
+  for (const icp::RunRecord& r :
+       icp::ResultsStore::OpenReadOnly(icp::StorePath(dir))->LoadRuns(false)) {
     const icp::RunMetrics& m = r.metrics;
     std::ostringstream text;
     text.precision(17);
@@ -257,10 +259,11 @@ std::map<std::string, std::string> RunsOf(const std::string& dir) {
 TEST(CliTest, ShardAutoTakesTheSlurmArrayTaskAndMergesToTheWholeSweep) {
   const std::string dir = ::testing::TempDir() + "cli_shard_auto";
   std::filesystem::remove_all(dir);
-  const std::string spec = WriteFile("cli_shard_auto.yaml",
-                                     "seeds: [1, 2, 3, 4, 5]\n"
-                                     "algorithms: [hc4, bc4]\n"
-                                     "problems: [chain, {name: car-track, params: {steps: 3, w: 2}}]\n");
+  const std::string spec =
+      WriteFile("cli_shard_auto.yaml",
+                "seeds: [1, 2, 3, 4, 5]\n"
+                "algorithms: [hc4, bc4]\n"
+                "problems: [chain, {name: car-track, params: {steps: 3, w: 2}}]\n");
   Result r = Icpbench("run " + spec + " --out " + dir + "/all --jobs 2");
   ASSERT_EQ(r.exit_code, 0) << r.out;
   const std::map<std::string, std::string> all = RunsOf(dir + "/all");
@@ -296,15 +299,21 @@ TEST(CliTest, ShardAutoTakesTheSlurmArrayTaskAndMergesToTheWholeSweep) {
 TEST(CliTest, ShardAutoWithoutConsistentSlurmVariablesExitsWithTwo) {
   const std::string dir = ::testing::TempDir() + "cli_shard_auto_bad";
   std::filesystem::remove_all(dir);
-  const std::string spec = WriteFile("cli_shard_auto_bad.yaml", "algorithms: [hc4]\nproblems: [chain]\n");
+  const std::string spec =
+      WriteFile("cli_shard_auto_bad.yaml", "algorithms: [hc4]\nproblems: [chain]\n");
   const std::pair<std::string, std::string> cases[] = {
       {"", "SLURM_ARRAY_TASK_ID is not set"},
       {"SLURM_ARRAY_TASK_ID=1", "neither SLURM_ARRAY_TASK_COUNT"},
-      {"SLURM_ARRAY_TASK_ID=one SLURM_ARRAY_TASK_COUNT=2", "SLURM_ARRAY_TASK_ID='one' is not a non-negative integer"},
+      {"SLURM_ARRAY_TASK_ID=one SLURM_ARRAY_TASK_COUNT=2",
+       "SLURM_ARRAY_TASK_ID='one' is not a non-negative integer"},
       {"SLURM_ARRAY_TASK_ID=2 SLURM_ARRAY_TASK_COUNT=2", "is not below SLURM_ARRAY_TASK_COUNT=2"},
-      {"SLURM_ARRAY_TASK_ID=0 SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_MAX=3", "outside [SLURM_ARRAY_TASK_MIN, SLURM_ARRAY_TASK_MAX] = [1, 3]"},
-      {"SLURM_ARRAY_TASK_ID=1 SLURM_ARRAY_TASK_MAX=3", "SLURM_ARRAY_TASK_MAX is set but SLURM_ARRAY_TASK_MIN is not"},
-      {"SLURM_ARRAY_TASK_ID=2 SLURM_ARRAY_TASK_MIN=0 SLURM_ARRAY_TASK_MAX=8 SLURM_ARRAY_TASK_COUNT=5", "disagrees"},
+      {"SLURM_ARRAY_TASK_ID=0 SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_MAX=3",
+       "outside [SLURM_ARRAY_TASK_MIN, SLURM_ARRAY_TASK_MAX] = [1, 3]"},
+      {"SLURM_ARRAY_TASK_ID=1 SLURM_ARRAY_TASK_MAX=3",
+       "SLURM_ARRAY_TASK_MAX is set but SLURM_ARRAY_TASK_MIN is not"},
+      {"SLURM_ARRAY_TASK_ID=2 SLURM_ARRAY_TASK_MIN=0 SLURM_ARRAY_TASK_MAX=8 "
+       "SLURM_ARRAY_TASK_COUNT=5",
+       "disagrees"},
   };
   for (const auto& [vars, message] : cases) {
     Result r = IcpbenchInArray(vars, "run " + spec + " --out " + dir + " --shard auto");
