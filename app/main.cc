@@ -73,7 +73,9 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--out,-o", run.out_dir, "output directory (default results/<spec name>)");
   run_cmd->add_option("--jobs,-j", run.jobs, "runs in parallel (default: the number of cores)")
       ->capture_default_str();
-  run_cmd->add_option("--shard", shard, "run only share i of n (i/n, 0-based) of the matrix")
+  run_cmd->add_option("--shard", shard,
+                      "run only share i of n (i/n, 0-based) of the matrix; auto: this Slurm "
+                      "array task's (SLURM_ARRAY_TASK_ID and _COUNT or _MIN/_MAX)")
       ->capture_default_str();
   run_cmd->add_flag("--force", run.force, "rerun runs that are already stored");
   run_cmd->add_flag("--no-retry", run.no_retry,
@@ -136,7 +138,10 @@ int main(int argc, char** argv) {
       if (run.out_dir.empty())
         run.out_dir = "results/" + std::filesystem::path(spec_file).stem().string();
       const bool terminal = isatty(STDERR_FILENO);
-      std::cerr << "icpbench: " << spec.runs.size() << " runs in " << spec_file << ", " << run.jobs
+      std::cerr << "icpbench: " << spec.runs.size() << " runs in " << spec_file;
+      if (run.shard_count > 1)
+        std::cerr << ", shard " << run.shard_index << "/" << run.shard_count << " of them";
+      std::cerr << ", " << run.jobs
                 << " in parallel, results in " << icp::StorePath(run.out_dir) << "\n";
       icp::SweepSummary s = icp::RunSweep(spec, run, std::cerr, terminal);
       std::cerr << "icpbench: " << s.planned << " planned, " << s.already_stored

@@ -1,6 +1,7 @@
 // The results store: one SQLite file per output directory, append-only. A
 // row per run (spec, status, reason, wall time, provenance, metrics) and a
-// row per step, plus the step's reported variables. Each run is written in
+// row per step, plus the step's reported variables (none for a run whose
+// spec said record: runs; its runs.steps still counts them). Each run is written in
 // one transaction when it finishes, so a sweep that dies loses only the runs
 // in flight; reading a spec again skips the runs whose key is stored (and
 // retries the failed and timed-out ones, see RunSweep).

@@ -70,6 +70,10 @@ struct RunSpec {
   // Memory limit of the run's worker process (RLIMIT_DATA), MiB; 0: none. Not part
   // of the key. A run that exceeds it fails with "out of memory".
   double memory_limit_mb = 0;
+  // Whether the run's steps are stored (spec key record: steps) or only the
+  // run row with its metrics and properties (record: runs), for sweeps too
+  // big to keep every step. Not part of the key.
+  bool record_steps = true;
   // A canonical text of everything but the limits, e.g.
   // "hc4{carry=first,max_revise_calls=1000000,ratio=0.001}|car-track{...}|seed=3".
   // The harness keys runs on effective parameters (every declared one,

@@ -118,20 +118,6 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
   return record;
 }
 
-std::pair<int, int> ParseShard(const std::string& text) {
-  const auto slash = text.find('/');
-  try {
-    if (slash != std::string::npos) {
-      std::size_t a = 0, b = 0;
-      const int i = std::stoi(text.substr(0, slash), &a);
-      const int n = std::stoi(text.substr(slash + 1), &b);
-      if (a == slash && b == text.size() - slash - 1 && n >= 1 && i >= 0 && i < n) return {i, n};
-    }
-  } catch (const std::exception&) {
-  }
-  throw std::invalid_argument("--shard " + text + ": expected i/n with 0 <= i < n");
-}
-
 namespace {
 
 // --- Child-to-parent transport (JSON; NaN and infinities as strings) -----
@@ -567,8 +553,7 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
     const bool finished = r.status == RunStatus::kOk || r.status == RunStatus::kSkipped;
     if (finished || options.no_retry) stored.insert(r.key);
   }
-  for (std::size_t i = 0; i < spec.runs.size(); ++i) {
-    if (static_cast<int>(i % options.shard_count) != options.shard_index) continue;
+  for (std::size_t i : ShardRuns(spec, options.shard_index, options.shard_count)) {
     ++summary.planned;
     if (!options.force && stored.count(spec.runs[i].spec.Key())) {
       ++summary.already_stored;
@@ -666,9 +651,13 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
         RunRecord record;
         record.spec = run.spec;
         try {
-          StepFileWriter steps(step_file);
-          record = ExecuteRun(run.spec, [&](const StepRecord& s) { steps.Write(s); });
-          steps.Close();
+          if (run.spec.record_steps) {
+            StepFileWriter steps(step_file);
+            record = ExecuteRun(run.spec, [&](const StepRecord& s) { steps.Write(s); });
+            steps.Close();
+          } else {  // record: runs: the metrics are accumulated all the same
+            record = ExecuteRun(run.spec, [](const StepRecord&) {});
+          }
         } catch (const std::exception& e) {  // the step file failed (a failed write is caught in ExecuteRun)
           record.status = RunStatus::kFailed;
           record.reason = e.what();
@@ -719,7 +708,8 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
       }
       bool steps_in_file = false;
       RunRecord r = Finalize(w, status, &steps_in_file);
-      store_record(std::move(r), w.run.experiment, steps_in_file ? w.step_file : "");
+      const bool has_step_file = steps_in_file && w.run.spec.record_steps;
+      store_record(std::move(r), w.run.experiment, has_step_file ? w.step_file : "");
       unlink(w.step_file.c_str());
       fds.erase(fds.begin() + static_cast<std::ptrdiff_t>(i));
       workers.erase(workers.begin() + static_cast<std::ptrdiff_t>(i));

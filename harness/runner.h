@@ -8,6 +8,8 @@
 // the run goes (.steps-*.ndjson) and its run's summary to a pipe at the end;
 // the parent streams that file into the store, so neither process holds a
 // run's steps and the parent's memory does not grow with a run's length.
+// A run whose spec says record: runs writes no step file: the store gets its
+// run row (metrics accumulated in the worker, properties) and no step rows.
 #ifndef ICPBENCH_HARNESS_RUNNER_H_
 #define ICPBENCH_HARNESS_RUNNER_H_
 
@@ -17,6 +19,7 @@
 #include <string>
 
 #include "harness/run_record.h"
+#include "harness/shard.h"
 #include "harness/spec.h"
 
 namespace icp {
@@ -24,7 +27,7 @@ namespace icp {
 struct RunnerOptions {
   std::string out_dir;
   int jobs = 1;
-  int shard_index = 0;  // this machine's share: runs whose index % count == index
+  int shard_index = 0;  // this machine's share (ShardRuns, harness/shard.h)
   int shard_count = 1;
   bool force = false;   // rerun runs that are already stored
   bool no_retry = false;  // keep stored failed/timeout runs instead of retrying them
@@ -74,9 +77,6 @@ using StepSink = std::function<void(const StepRecord&)>;
 // empty; the metrics are accumulated as the steps go), so memory does not
 // grow with the run. A sink that throws fails the run at that step.
 RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink);
-
-// "i/n" -> (i, n) with 0 <= i < n; throws std::invalid_argument.
-std::pair<int, int> ParseShard(const std::string& text);
 
 }  // namespace icp
 

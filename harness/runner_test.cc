@@ -5,9 +5,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -244,6 +246,86 @@ TEST(RunnerTest, ShardsSplitTheMatrixWithoutOverlap) {
   EXPECT_EQ(ParseShard("1/3"), std::make_pair(1, 3));
   EXPECT_THROW(ParseShard("3/3"), std::invalid_argument);
   EXPECT_THROW(ParseShard("a/b"), std::invalid_argument);
+}
+
+// A shard's runs are the same after a rerun (--force), and are the ones
+// ShardRuns names.
+TEST(RunnerTest, AShardHoldsTheSameRunsAfterARerun) {
+  const std::string yaml =
+      "seeds: [1, 2, 3, 4, 5, 6, 7]\nalgorithms: [hc4, bc4]\nproblems: [chain]\n";
+  const Spec spec = ParseSpec(yaml, "test.yaml");
+  std::set<std::string> expected;
+  for (std::size_t i : ShardRuns(spec, 1, 3)) expected.insert(spec.runs[i].spec.Key());
+  ASSERT_EQ(expected.size(), 5u);  // runs 1, 4, 7, 10, 13 of 14
+  const std::string dir = FreshDir("shard_rerun");
+  for (bool force : {false, true}) {
+    RunnerOptions options;
+    options.out_dir = dir;
+    options.shard_index = 1;
+    options.shard_count = 3;
+    options.force = force;
+    std::ostringstream progress;
+    EXPECT_EQ(RunSweep(ParseSpec(yaml, "test.yaml"), options, progress, false).ok, 5);
+    const std::vector<std::string> keys = ResultsStore(StorePath(dir)).RunKeys();
+    EXPECT_EQ(std::set<std::string>(keys.begin(), keys.end()), expected);
+  }
+}
+
+// record: runs keeps the run rows (metrics, properties) and no step rows;
+// the metrics equal those of record: steps, except the times.
+TEST(RunnerTest, RecordRunsStoresNoStepsButTheSameMetrics) {
+  const std::string body =
+      "seeds: [1, 2]\nalgorithms: [hc4]\nproblems: [{name: car-track, params: {steps: 6, w: 3}}]\n";
+  const std::string steps_dir = FreshDir("record_steps"), runs_dir = FreshDir("record_runs");
+  EXPECT_EQ(Sweep(body, steps_dir).ok, 2);
+  EXPECT_EQ(Sweep("record: runs\n" + body, runs_dir).ok, 2);
+  EXPECT_TRUE(StepFilesIn(runs_dir).empty());
+  // In the order of their keys: two workers may finish in either order.
+  auto load = [](const std::string& dir) {
+    std::vector<RunRecord> runs = ResultsStore(StorePath(dir)).LoadRuns(true);
+    std::sort(runs.begin(), runs.end(),
+              [](const RunRecord& a, const RunRecord& b) { return a.spec.Key() < b.spec.Key(); });
+    return runs;
+  };
+  const std::vector<RunRecord> with = load(steps_dir);
+  const std::vector<RunRecord> without = load(runs_dir);
+  ASSERT_EQ(with.size(), 2u);
+  ASSERT_EQ(without.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(with[i].spec.Key(), without[i].spec.Key());  // record is not part of the key
+    EXPECT_EQ(with[i].steps.size(), 6u);
+    EXPECT_TRUE(without[i].steps.empty());
+    const RunMetrics &a = with[i].metrics, &b = without[i].metrics;
+    EXPECT_EQ(a.steps, 6);
+    EXPECT_EQ(a.steps, b.steps);
+    EXPECT_EQ(a.mean_area, b.mean_area);
+    EXPECT_EQ(a.consistency_rate, b.consistency_rate);
+    EXPECT_EQ(a.centre_rmse, b.centre_rmse);
+    ASSERT_EQ(a.corridors.size(), b.corridors.size());
+    for (std::size_t k = 0; k < a.corridors.size(); ++k) {
+      EXPECT_EQ(a.corridors[k].var, b.corridors[k].var);
+      EXPECT_EQ(a.corridors[k].mean_lower, b.corridors[k].mean_lower);
+      EXPECT_EQ(a.corridors[k].max_upper, b.corridors[k].max_upper);
+    }
+    ASSERT_EQ(with[i].properties.size(), without[i].properties.size());
+    for (std::size_t k = 0; k < with[i].properties.size(); ++k)
+      EXPECT_EQ(with[i].properties[k].name, without[i].properties[k].name);
+  }
+  // Per experiment, overriding the top level.
+  const Spec spec = ParseSpec(
+      "record: runs\nexperiments:\n  - {name: a, algorithms: [hc4], problems: [chain]}\n"
+      "  - {name: b, record: steps, algorithms: [bc4], problems: [chain]}\n",
+      "test.yaml");
+  ASSERT_EQ(spec.runs.size(), 2u);
+  EXPECT_FALSE(spec.runs[0].spec.record_steps);
+  EXPECT_TRUE(spec.runs[1].spec.record_steps);
+  EXPECT_TRUE(ParseSpec("algorithms: [hc4]\nproblems: [chain]\n", "t").runs[0].spec.record_steps);
+  try {
+    ParseSpec("algorithms: [hc4]\nproblems: [chain]\nrecord: all\n", "t.yaml");
+    ADD_FAILURE() << "record: all was accepted";
+  } catch (const SpecError& e) {
+    EXPECT_EQ(std::string(e.what()), "t.yaml:3:9: key 'record': 'all' must be steps or runs");
+  }
 }
 
 // A sweep killed with SIGKILL keeps every run it finished; running the spec

@@ -89,6 +89,13 @@ class Reader {
     return Positive(node, key);
   }
 
+  // record: steps (every step row) or runs (the run row only); true for steps.
+  bool RecordSteps(const YAML::Node& node, const std::string& key) const {
+    const std::string text = Scalar(node, key);
+    if (text != "steps" && text != "runs") Fail(node, key, "'" + text + "' must be steps or runs");
+    return text == "steps";
+  }
+
   // A memory limit in MiB; 0 means none.
   double MemoryLimit(const YAML::Node& node, const std::string& key) const {
     const std::string text = Scalar(node, key);
@@ -204,8 +211,9 @@ class Reader {
   }
 
   void Experiment(const YAML::Node& node, const std::string& where, const std::string& name,
-                  double timeout, double memory_limit, const std::vector<std::uint64_t>& seeds,
-                  Spec* spec, std::set<std::string>* seen) const {
+                  double timeout, double memory_limit, bool record_steps,
+                  const std::vector<std::uint64_t>& seeds, Spec* spec,
+                  std::set<std::string>* seen) const {
     const YAML::Node algorithms = node["algorithms"];
     const YAML::Node problems = node["problems"];
     if (!algorithms || !algorithms.IsSequence() || algorithms.size() == 0)
@@ -288,7 +296,9 @@ class Reader {
         for (const ParamMap& pp : p.grid)
           for (const ParamMap& ap : a.grid)
             for (std::uint64_t seed : seeds) {
-              PlannedRun run{RunSpec{a.name, ap, p.name, pp, seed, timeout, memory_limit}, name, skip};
+              PlannedRun run{
+                  RunSpec{a.name, ap, p.name, pp, seed, timeout, memory_limit, record_steps}, name,
+                  skip};
               if (seen->insert(run.spec.Key()).second) spec->runs.push_back(std::move(run));
             }
       }
@@ -316,12 +326,13 @@ Spec ParseSpecText(const std::string& text, const std::string& source) {
   if (!root || root.IsNull()) throw SpecError(source + ": empty spec");
   reader.CheckDocument(root, "");
   reader.CheckKeys(root, "",
-                   {"name", "description", "timeout_s", "memory_limit_mb", "seeds", "repetitions",
-                    "experiments", "algorithms", "problems"});
+                   {"name", "description", "timeout_s", "memory_limit_mb", "record", "seeds",
+                    "repetitions", "experiments", "algorithms", "problems"});
   const double timeout = root["timeout_s"] ? reader.Timeout(root["timeout_s"], "timeout_s") : 600;
   const double memory = root["memory_limit_mb"]
                             ? reader.MemoryLimit(root["memory_limit_mb"], "memory_limit_mb")
                             : kDefaultMemoryLimitMb;
+  const bool record_steps = root["record"] ? reader.RecordSteps(root["record"], "record") : true;
   const std::vector<std::uint64_t> seeds = reader.Seeds(root, "", {1});
   Spec spec;
   spec.file = source;
@@ -337,7 +348,7 @@ Spec ParseSpecText(const std::string& text, const std::string& source) {
       const std::string where = "experiments[" + std::to_string(i) + "]";
       reader.CheckKeys(e, where,
                        {"name", "description", "algorithms", "problems", "seeds", "repetitions",
-                        "timeout_s", "memory_limit_mb"});
+                        "timeout_s", "memory_limit_mb", "record"});
       const std::string name =
           e["name"] ? reader.Scalar(e["name"], where + ".name") : "experiment" + std::to_string(i + 1);
       // Runs are stored under SPEC#name: two experiments of one name would mix.
@@ -349,11 +360,14 @@ Spec ParseSpecText(const std::string& text, const std::string& source) {
       const double mem = e["memory_limit_mb"]
                              ? reader.MemoryLimit(e["memory_limit_mb"], where + ".memory_limit_mb")
                              : memory;
-      reader.Experiment(e, where, name, t, mem, reader.Seeds(e, where, seeds), &spec, &seen);
+      const bool record =
+          e["record"] ? reader.RecordSteps(e["record"], where + ".record") : record_steps;
+      reader.Experiment(e, where, name, t, mem, record, reader.Seeds(e, where, seeds), &spec,
+                        &seen);
     }
   } else {
     const std::string name = root["name"] ? reader.Scalar(root["name"], "name") : "main";
-    reader.Experiment(root, "", name, timeout, memory, seeds, &spec, &seen);
+    reader.Experiment(root, "", name, timeout, memory, record_steps, seeds, &spec, &seen);
   }
   return spec;
 }

@@ -4,6 +4,7 @@
 //
 //   timeout_s: 300            # per run (default 600)
 //   memory_limit_mb: 4096     # per worker process (default 4096; 0: none)
+//   record: steps             # steps (default): every step row; runs: the run rows only
 //   seeds: [1, 2]             # or repetitions: 3 (seeds 1..3); default [1]
 //   experiments:
 //     - name: table1
@@ -17,6 +18,15 @@
 // A spec with no `experiments` is one experiment with top-level
 // `algorithms` and `problems`. Every name, key and value is checked against
 // the registries before anything runs; errors name the file, line and key.
+//
+// The matrix order (Spec::runs), which shards are cut from (harness/shard.h),
+// depends only on the spec's text: experiments in order; within one, for
+// each problem entry in order, each algorithm entry in order, then the
+// problem's grid points, the algorithm's grid points and the seeds. A grid
+// varies its last-given key fastest, each key's values in the order given.
+// A run that an earlier entry or experiment already planned (the same key)
+// is dropped. Nothing is hashed or read from the machine, so every machine
+// expands a spec to the same list.
 #ifndef ICPBENCH_HARNESS_SPEC_H_
 #define ICPBENCH_HARNESS_SPEC_H_
 

@@ -107,7 +107,7 @@ experiments:
 TEST(SpecTest, ErrorsNameTheFileLineAndKey) {
   EXPECT_EQ(ErrorOf("algorithms: [hc4]\nproblems: [chain]\nspeed: 3\n"),
             "spec.yaml:3:1: key 'speed': unknown key (expected one of: algorithms, description, "
-            "experiments, memory_limit_mb, name, problems, repetitions, seeds, timeout_s)");
+            "experiments, memory_limit_mb, name, problems, record, repetitions, seeds, timeout_s)");
   EXPECT_EQ(ErrorOf("algorithms: [hc5]\nproblems: [chain]\n").substr(0, 60),
             "spec.yaml:1:14: key 'algorithms[0]': unknown algorithm 'hc5'");
   std::string e = ErrorOf("algorithms:\n  - {name: hc4, params: {ratio: 2}}\nproblems: [chain]\n");

@@ -204,8 +204,31 @@ std::string CorridorRange(const std::vector<std::vector<double>>& rows) {
   return "set yrange [" + std::to_string(lo - margin) + ":" + std::to_string(hi + margin) + "]\n";
 }
 
-void Skip(const FigureText& text, PlotOutput* out) {
-  out->messages.push_back(text.name + ": skipped: " + text.skip_reason);
+int CountRunsOnly(const std::vector<const RunRecord*>& runs) {
+  return static_cast<int>(std::count_if(runs.begin(), runs.end(),
+                                        [](const RunRecord* r) { return RecordedRunsOnly(*r); }));
+}
+
+std::string RunsOnlyText(int n) {
+  return std::to_string(n) + (n == 1 ? " run was" : " runs were") +
+         " recorded with `record: runs` (run metrics only, no step rows; rerun with record: steps "
+         "to draw them)";
+}
+
+// A figure over steps whose runs were stored without them says so, not
+// the generic reason.
+void Skip(const FigureText& text, PlotOutput* out, const std::vector<const RunRecord*>& runs = {}) {
+  const int runs_only = CountRunsOnly(runs);
+  out->messages.push_back(
+      text.name + ": skipped: " +
+      (runs_only > 0 ? "it needs step rows, and " + RunsOnlyText(runs_only) : text.skip_reason));
+}
+
+// Drawn, but without the runs that have no step rows.
+void NoteRunsOnly(const FigureText& text, const std::vector<const RunRecord*>& runs,
+                  PlotOutput* out) {
+  if (const int n = CountRunsOnly(runs); n > 0)
+    out->messages.push_back(text.name + ": left out " + RunsOnlyText(n));
 }
 
 }  // namespace
@@ -314,7 +337,8 @@ void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecor
       corridors[k].push_back(std::move(rows[k]));
     }
   }
-  if (shown.empty()) return Skip(text, out);
+  if (shown.empty()) return Skip(text, out, runs);
+  NoteRunsOnly(text, runs, out);
   // One step axis for all, so a shorter run shows as shorter.
   double last_step = 0;
   for (const RunRecord* r : shown) {
@@ -374,7 +398,8 @@ void PlotStepValueFigure(const FigureText& text, const std::string& y_label,
       s.rows.push_back({static_cast<double>(step.step), Positive(value(step))});
     if (HasPoint(s)) panel.series.push_back(std::move(s));
   }
-  if (panel.series.empty()) return Skip(text, out);
+  if (panel.series.empty()) return Skip(text, out, runs);
+  NoteRunsOnly(text, runs, out);
   Figure f;
   f.name = text.name;
   f.width_in = 9;
@@ -423,7 +448,8 @@ std::pair<double, double> StepCentre(const StepRecord& s) {
 void PlotTrackFigure(const FigureText& text, const std::vector<std::pair<double, double>>& wall_points,
                      const std::vector<const RunRecord*>& runs, int boxes_every,
                      const std::string& out_dir, PlotOutput* out) {
-  if (runs.empty() || runs[0]->steps.empty()) return Skip(text, out);
+  if (runs.empty() || runs[0]->steps.empty()) return Skip(text, out, runs);
+  NoteRunsOnly(text, runs, out);
   Panel panel;
   panel.setup = "set title " + MultiLine(text.title) +
                 " noenhanced\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset size ratio -1\n"
@@ -471,6 +497,9 @@ void PlotTimingFigure(const FigureText& text, const std::vector<const GroupSumma
                       const std::string& out_dir, PlotOutput* out) {
   Panel panel;
   std::string xtics;
+  std::vector<const RunRecord*> ok_runs;
+  for (const GroupSummary* g : groups)
+    ok_runs.insert(ok_runs.end(), g->ok_runs.begin(), g->ok_runs.end());
   for (const GroupSummary* g : groups) {
     const double x = static_cast<double>(panel.series.size() + 1);
     Series s{"using (" + std::to_string(x) + "):1 with boxplot lw 1.2 lc rgb " +
@@ -484,7 +513,8 @@ void PlotTimingFigure(const FigureText& text, const std::vector<const GroupSumma
              Quote(WithParams(g->algorithm, g->algorithm_params)) + " " + std::to_string(x);
     panel.series.push_back(std::move(s));
   }
-  if (panel.series.empty()) return Skip(text, out);
+  if (panel.series.empty()) return Skip(text, out, ok_runs);
+  NoteRunsOnly(text, ok_runs, out);
   panel.setup = "set title " + Quote(text.title) +
                 " noenhanced\nset ylabel 'time per CSP (µs)'\nset logscale y\nset format y '10^{%L}'\n"
                 "set style boxplot outliers pointtype 7\nset pointsize 0.3\nset boxwidth 0.5\n"
@@ -644,6 +674,12 @@ PlotOutput PlotRuns(const std::vector<RunRecord>& runs, const std::string& out_d
   PlotTimingFigure({"fig_timing", "Solve time per CSP (" + setting + ")",
                     "no ok run with per-step solve times"},
                    timing, out_dir, &out);
+  std::vector<const RunRecord*> all;
+  for (const RunRecord& r : runs) all.push_back(&r);
+  if (const int n = CountRunsOnly(all); n > 0)
+    out.messages.push_back("of the store's runs, " + RunsOnlyText(n) +
+                           ": figures over steps (corridors, area, centre error, track, timing) "
+                           "leave them out");
   return out;
 }
 

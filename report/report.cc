@@ -319,6 +319,14 @@ std::string Distinct(const std::vector<RunRecord>& runs, std::string Provenance:
   return out.empty() ? "unknown" : out;
 }
 
+}  // namespace
+
+bool RecordedRunsOnly(const RunRecord& run) {
+  return run.status == RunStatus::kOk && run.steps.empty() && run.metrics.steps > 0;
+}
+
+namespace {
+
 std::string Overview(const std::vector<RunRecord>& runs) {
   int counts[4] = {0, 0, 0, 0};
   for (const RunRecord& r : runs) ++counts[static_cast<int>(r.status)];
@@ -333,6 +341,13 @@ std::string Overview(const std::vector<RunRecord>& runs) {
   if (revisions.size() > 1)
     out << " Note: the tables mix runs of " << revisions.size()
         << " code revisions; rerun with --force to measure one.";
+  const auto runs_only = std::count_if(runs.begin(), runs.end(), RecordedRunsOnly);
+  if (runs_only > 0)
+    out << " Note: " << runs_only << (runs_only == 1 ? " ok run was" : " ok runs were")
+        << " recorded with `record: runs` (run metrics only, no step rows): the runs per "
+           "configuration table combines their stored metrics (median, p90 and CI only for a "
+           "single run); tables over steps leave them out (rerun with record: steps to include "
+           "them).";
   return out.str();
 }
 

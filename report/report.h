@@ -95,6 +95,10 @@ struct GroupSummary {
   std::vector<const RunRecord*> ok_runs;
 };
 
+// An ok run stored with `record: runs`: metrics over its steps, no step
+// rows. Tables use its run metrics; tables and figures over steps cannot.
+bool RecordedRunsOnly(const RunRecord& run);
+
 // The experiment of the spec that planned a run: what follows the last '#'
 // of its spec_file ("specs/default.yaml#table1" -> "table1"); "" when none.
 // A run that two experiments of one spec plan is stored once, under the

@@ -2,12 +2,15 @@
 // round-trip and enclose, null for infinite bounds, exit code 2 on bad input.
 #include <gtest/gtest.h>
 
-#include <nlohmann/json.hpp>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 #include "core/minibex_parser.h"
+#include "harness/results_store.h"
 #include "tests/cli_helpers.h"
 
 namespace {
@@ -223,6 +226,128 @@ TEST(CliTest, BadInputExitsWithTwoAndAClearMessage) {
   EXPECT_EQ(Icpbench("frobnicate").exit_code, 2);
 }
 
+// Runs icpbench with only the given Slurm array variables set (any the test
+// itself runs under are removed).
+Result IcpbenchInArray(const std::string& vars, const std::string& args) {
+  return icp::testing::RunCommand(
+      "env -u SLURM_ARRAY_TASK_ID -u SLURM_ARRAY_TASK_COUNT -u SLURM_ARRAY_TASK_MIN "
+      "-u SLURM_ARRAY_TASK_MAX " +
+          vars + " " + ICPBENCH_BINARY,
+      args);
+}
+
+// Key -> (status, the metrics but the times) of every run in dir's store.
+std::map<std::string, std::string> RunsOf(const std::string& dir) {
+  std::map<std::string, std::string> out;
+  for (const icp::RunRecord& r :
+       icp::ResultsStore::OpenReadOnly(icp::StorePath(dir))->LoadRuns(false)) {
+    const icp::RunMetrics& m = r.metrics;
+    std::ostringstream text;
+    text.precision(17);
+    text << icp::ToString(r.status) << " " << m.steps << " " << m.mean_area << " "
+         << m.consistency_rate << " " << m.centre_rmse;
+    for (const icp::Corridor& c : m.corridors)
+      text << " " << c.var << " " << c.mean_lower << " " << c.mean_upper << " " << c.min_lower
+           << " " << c.max_upper;
+    out[r.spec.Key()] = text.str();
+  }
+  return out;
+}
+
+// --shard auto reads the shard of a Slurm array task (both forms of the
+// variables); the shards' stores merged equal a one-shot run.
+TEST(CliTest, ShardAutoTakesTheSlurmArrayTaskAndMergesToTheWholeSweep) {
+  const std::string dir = ::testing::TempDir() + "cli_shard_auto";
+  std::filesystem::remove_all(dir);
+  const std::string spec =
+      WriteFile("cli_shard_auto.yaml",
+                "seeds: [1, 2, 3, 4, 5]\n"
+                "algorithms: [hc4, bc4]\n"
+                "problems: [chain, {name: car-track, params: {steps: 3, w: 2}}]\n");
+  Result r = Icpbench("run " + spec + " --out " + dir + "/all --jobs 2");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const std::map<std::string, std::string> all = RunsOf(dir + "/all");
+  ASSERT_EQ(all.size(), 20u);
+  // --array=0-2 (COUNT) and --array=1-3 (MIN/MAX).
+  std::string count_shards, range_shards;
+  for (int task = 0; task < 3; ++task) {
+    const std::string out = dir + "/count" + std::to_string(task);
+    r = IcpbenchInArray("SLURM_ARRAY_TASK_ID=" + std::to_string(task) + " SLURM_ARRAY_TASK_COUNT=3",
+                        "run " + spec + " --out " + out + " --jobs 2 --shard auto");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    EXPECT_NE(r.out.find("shard " + std::to_string(task) + "/3"), std::string::npos) << r.out;
+    count_shards += " " + out;
+    const std::string range = dir + "/range" + std::to_string(task);
+    r = IcpbenchInArray("SLURM_ARRAY_TASK_ID=" + std::to_string(task + 1) +
+                            " SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_MAX=3",
+                        "run " + spec + " --out " + range + " --jobs 2 --shard auto");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    EXPECT_NE(r.out.find((task < 2 ? "7" : "6") + std::string(" planned")), std::string::npos)
+        << r.out;
+    range_shards += " " + range;
+    EXPECT_EQ(RunsOf(out), RunsOf(range));  // shard TASK_ID - MIN
+  }
+  ASSERT_EQ(Icpbench("merge " + dir + "/merged_count" + count_shards).exit_code, 0);
+  r = Icpbench("merge " + dir + "/merged_range" + range_shards);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(r.out.find("conflicting"), std::string::npos) << r.out;  // no run in two shards
+  EXPECT_EQ(RunsOf(dir + "/merged_count"), all);
+  EXPECT_EQ(RunsOf(dir + "/merged_range"), all);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliTest, ShardAutoWithoutConsistentSlurmVariablesExitsWithTwo) {
+  const std::string dir = ::testing::TempDir() + "cli_shard_auto_bad";
+  std::filesystem::remove_all(dir);
+  const std::string spec =
+      WriteFile("cli_shard_auto_bad.yaml", "algorithms: [hc4]\nproblems: [chain]\n");
+  const std::pair<std::string, std::string> cases[] = {
+      {"", "SLURM_ARRAY_TASK_ID is not set"},
+      {"SLURM_ARRAY_TASK_ID=1", "neither SLURM_ARRAY_TASK_COUNT"},
+      {"SLURM_ARRAY_TASK_ID=one SLURM_ARRAY_TASK_COUNT=2",
+       "SLURM_ARRAY_TASK_ID='one' is not a non-negative integer"},
+      {"SLURM_ARRAY_TASK_ID=2 SLURM_ARRAY_TASK_COUNT=2", "is not below SLURM_ARRAY_TASK_COUNT=2"},
+      {"SLURM_ARRAY_TASK_ID=0 SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_MAX=3",
+       "outside [SLURM_ARRAY_TASK_MIN, SLURM_ARRAY_TASK_MAX] = [1, 3]"},
+      {"SLURM_ARRAY_TASK_ID=1 SLURM_ARRAY_TASK_MAX=3",
+       "SLURM_ARRAY_TASK_MAX is set but SLURM_ARRAY_TASK_MIN is not"},
+      {"SLURM_ARRAY_TASK_ID=2 SLURM_ARRAY_TASK_MIN=0 SLURM_ARRAY_TASK_MAX=8 "
+       "SLURM_ARRAY_TASK_COUNT=5",
+       "disagrees"},
+  };
+  for (const auto& [vars, message] : cases) {
+    Result r = IcpbenchInArray(vars, "run " + spec + " --out " + dir + " --shard auto");
+    EXPECT_EQ(r.exit_code, 2) << vars << ": " << r.out;
+    EXPECT_NE(r.out.find(message), std::string::npos) << vars << ": " << r.out;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir + "/results.sqlite"));
+}
+
+// record: runs: report's table still works from the run metrics, and report
+// and plot say what they leave out.
+TEST(CliTest, ReportAndPlotSayWhatARunsOnlyStoreLacks) {
+  const std::string dir = ::testing::TempDir() + "cli_record_runs";
+  std::filesystem::remove_all(dir);
+  const std::string spec = WriteFile("cli_record_runs.yaml",
+                                     "record: runs\nseeds: [1, 2]\nalgorithms: [hc4]\n"
+                                     "problems: [{name: car-track, params: {steps: 4, w: 2}}]\n");
+  Result r = Icpbench("run " + spec + " --out " + dir + " --jobs 2");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  r = Icpbench("report " + dir);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("2 ok runs were recorded with `record: runs`"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("| hc4 "), std::string::npos) << r.out;  // the table's row
+  r = Icpbench("report " + dir + " --format csv");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("hc4,"), std::string::npos) << r.out;
+  r = Icpbench("plot " + dir + " --out " + dir + "/figures");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("fig_timing: skipped: it needs step rows, and 2 runs were recorded with "
+                       "`record: runs`"),
+            std::string::npos)
+      << r.out;
+  std::filesystem::remove_all(dir);
+}
 
 // Resume, merge and report over stores (README "icpbench run", "The results
 // store"): a rerun retries the failed run unless --no-retry; merge and
