@@ -4,8 +4,9 @@
 # fuzzers and the test suite so CI compiles the project once under the
 # sanitizers. -O1 -g: fast enough to run the tests, with usable stacks; no
 # benchmarks (they test speed, not correctness).
+source scripts/ccache.sh
 asan_configure() {
-  cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "${ccache_args[@]}" \
     -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g -DNDEBUG" \
     -DICPBENCH_SANITIZE=ON -DICPBENCH_FUZZ=ON -DICPBENCH_BUILD_BENCHMARKS=OFF >/dev/null
 }

@@ -2,5 +2,6 @@
 # Configures and builds icpbench (Release) into build/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+source scripts/ccache.sh
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "${ccache_args[@]}" >/dev/null
 cmake --build build -j"${ICPBENCH_JOBS:-2}"
