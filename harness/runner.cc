@@ -224,6 +224,11 @@ RunRecord DeserializeSummary(const std::string& text, const RunSpec& spec) {
   return r;
 }
 
+// Why a run failed whose worker's summary or step file cannot be read back.
+std::string UnreadableWorkerOutput(const std::string& what) {
+  return "invalid result: unreadable worker output (" + what + ")";
+}
+
 // A worker's step file that cannot be read back: the run failed, the sweep
 // goes on.
 class WorkerOutputError : public std::runtime_error {
@@ -388,7 +393,7 @@ RunRecord Finalize(Worker& w, int wait_status, bool* steps_in_file) {
       *steps_in_file = true;
     } catch (const std::exception& e) {
       r.status = RunStatus::kFailed;
-      r.reason = std::string("invalid result: unreadable worker output (") + e.what() + ")";
+      r.reason = UnreadableWorkerOutput(e.what());
     }
   }
   if (r.status != RunStatus::kOk && r.wall_time_s == 0) r.wall_time_s = Seconds(Clock::now() - w.started);
@@ -573,7 +578,7 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
         store.Insert(r, ReadStepFile(step_file, r.metrics.steps));
       } catch (const WorkerOutputError& e) {  // rolled back: stored as failed, without steps
         r.status = RunStatus::kFailed;
-        r.reason = std::string("invalid result: unreadable worker output (") + e.what() + ")";
+        r.reason = UnreadableWorkerOutput(e.what());
         r.metrics = RunMetrics{};
         store.Insert(r);
       }
