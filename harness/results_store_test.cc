@@ -441,6 +441,11 @@ TEST(ResultsStoreTest, MergeFromMissingStoreFailsAndCreatesNothing) {
 // code 3 in the CLI), not bad input. Run in a child, whose limit is lowered
 // to the descriptors it already has.
 TEST(ResultsStoreTest, NoDescriptorLeftToOpenIsTheEnvironment) {
+#if defined(ICPBENCH_SANITIZED)
+  // UBSan's vptr check tests memory with a pipe; without descriptors it
+  // reports a virtual call on a valid object (e.what() here) as invalid.
+  GTEST_SKIP() << "the sanitizers' runtime needs descriptors of its own";
+#endif
   const std::string path = FreshPath("no_fd");
   const pid_t pid = fork();
   ASSERT_GE(pid, 0);
