@@ -1,0 +1,147 @@
+#include "harness/sweep_recorder.h"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <filesystem>
+#include <ostream>
+#include <set>
+
+#include "harness/environment_error.h"
+#include "harness/provenance.h"
+#include "harness/shard.h"
+#include "harness/worker_output.h"
+
+namespace icp {
+
+namespace {
+
+volatile std::sig_atomic_t g_stop_signal = 0;
+extern "C" void OnStopSignal(int sig) { g_stop_signal = sig; }
+
+std::string CreatedDirectory(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) ThrowErrno("cannot create the output directory " + dir, ec.value());
+  return dir;
+}
+
+}  // namespace
+
+DirectoryLock::DirectoryLock(const std::string& dir, std::ostream& messages) {
+  const std::string path = (std::filesystem::path(dir) / ".lock").string();
+  fd_ = open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd_ < 0) ThrowErrno("cannot create the lock file " + path, errno);
+  const std::string holder = ReadPid();
+  if (flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    const int e = errno;
+    close(fd_);
+    fd_ = -1;
+    if (e != EWOULDBLOCK) ThrowErrno("cannot lock " + path, e);
+    throw DirectoryLockedError("output directory " + dir + " is in use by another run: " + path +
+                               " is held by PID " + (holder.empty() ? "?" : holder));
+  }
+  if (!holder.empty() && holder != std::to_string(getpid()))
+    messages << "icpbench: took over stale lock of PID " << holder << " (" << path << ")\n";
+  const std::string pid = std::to_string(getpid()) + "\n";
+  if (ftruncate(fd_, 0) != 0 || pwrite(fd_, pid.data(), pid.size(), 0) < 0)
+    ThrowErrno("cannot write " + path, errno);
+}
+
+DirectoryLock::~DirectoryLock() {
+  if (fd_ < 0) return;
+  if (ftruncate(fd_, 0) != 0) {
+  }
+  close(fd_);
+}
+
+std::string DirectoryLock::ReadPid() const {
+  char buf[32] = {};
+  const ssize_t n = pread(fd_, buf, sizeof buf - 1, 0);
+  std::string s = n > 0 ? std::string(buf, static_cast<std::size_t>(n)) : "";
+  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+  return s;
+}
+
+StopSignals::StopSignals() {
+  g_stop_signal = 0;
+  struct sigaction sa {};
+  sa.sa_handler = OnStopSignal;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, &old_int_);
+  sigaction(SIGTERM, &sa, &old_term_);
+}
+
+StopSignals::~StopSignals() {
+  sigaction(SIGINT, &old_int_, nullptr);
+  sigaction(SIGTERM, &old_term_, nullptr);
+}
+
+int StopSignals::Caught() { return g_stop_signal; }
+
+SweepRecorder::SweepRecorder(const Spec& spec, const RunnerOptions& options, std::ostream& progress,
+                             bool terminal)
+    : out_dir_(CreatedDirectory(options.out_dir)),
+      spec_file_(spec.file),
+      lock_(out_dir_, progress),
+      // Step files of a killed sweep go once the lock says none is running.
+      store_((RemoveStaleStepFiles(out_dir_), StorePath(out_dir_))) {
+  // Kept: ok and skipped runs; failed and timed-out ones are retried (a
+  // transient kill must not be permanent) unless no_retry.
+  std::set<std::string> stored;
+  for (const StoredRun& r : store_.StoredRuns()) {
+    const bool finished = r.status == RunStatus::kOk || r.status == RunStatus::kSkipped;
+    if (finished || options.no_retry) stored.insert(r.key);
+  }
+  for (std::size_t i : ShardRuns(spec, options.shard_index, options.shard_count)) {
+    ++summary_.planned;
+    if (!options.force && stored.count(spec.runs[i].spec.Key())) {
+      ++summary_.already_stored;
+      continue;
+    }
+    queue_.push_back(spec.runs[i]);
+  }
+  progress_.emplace(progress, terminal, static_cast<int>(queue_.size()));
+  // Computed once (it runs git) while descriptors are still free: a sweep
+  // that exhausts them must not store an empty provenance.
+  CurrentProvenance();
+}
+
+void SweepRecorder::Record(RunRecord r, const std::string& experiment, const std::string& step_file,
+                           const std::string& where, const std::string& in_flight) {
+  r.spec_file = spec_file_ + (experiment.empty() ? "" : "#" + experiment);
+  const std::string machine = r.provenance.machine;  // where it ran, when not here
+  r.provenance = CurrentProvenance();
+  if (!machine.empty()) r.provenance.machine = machine;
+  if (step_file.empty()) {
+    store_.Insert(r);
+  } else {
+    try {
+      store_.Insert(r, ReadStepFile(step_file, r.metrics.steps));
+    } catch (const WorkerOutputError& e) {  // rolled back: stored as failed, without steps
+      r.status = RunStatus::kFailed;
+      r.reason = UnreadableWorkerOutput(e.what());
+      r.metrics = RunMetrics{};
+      store_.Insert(r);
+    }
+  }
+  switch (r.status) {
+    case RunStatus::kOk: ++summary_.ok; break;
+    case RunStatus::kFailed: ++summary_.failed; break;
+    case RunStatus::kTimeout: ++summary_.timed_out; break;
+    case RunStatus::kSkipped: ++summary_.skipped; break;
+  }
+  progress_->Done(r, summary_, where, in_flight);
+}
+
+void SweepRecorder::RecordSkipped(const PlannedRun& run) {
+  RunRecord r;
+  r.spec = run.spec;
+  r.status = RunStatus::kSkipped;
+  r.reason = run.skip_reason;
+  Record(r, run.experiment);
+}
+
+}  // namespace icp

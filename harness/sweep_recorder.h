@@ -1,0 +1,88 @@
+// The recording side of a sweep, in the one process that writes the output
+// directory (the local runner, or rank 0 of an MPI sweep): it holds the
+// directory's lock, plans which runs of the spec are left to do, and stores
+// each finished run at once, counting it and reporting progress.
+#ifndef ICPBENCH_HARNESS_SWEEP_RECORDER_H_
+#define ICPBENCH_HARNESS_SWEEP_RECORDER_H_
+
+#include <csignal>
+#include <deque>
+#include <iosfwd>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "harness/progress.h"
+#include "harness/results_store.h"
+#include "harness/runner.h"
+#include "harness/spec.h"
+
+namespace icp {
+
+// An exclusive flock on DIR/.lock holding the holder's PID; the kernel
+// drops it when the holder dies, so a PID left in an unlocked file is stale
+// (taking it over is said on `messages`). The file is emptied, not removed,
+// on release (removing it would let a waiting process lock a deleted file).
+class DirectoryLock {
+ public:
+  DirectoryLock(const std::string& dir, std::ostream& messages);  // throws DirectoryLockedError
+  ~DirectoryLock();
+  DirectoryLock(const DirectoryLock&) = delete;
+  DirectoryLock& operator=(const DirectoryLock&) = delete;
+  int fd() const { return fd_; }
+
+ private:
+  std::string ReadPid() const;
+  int fd_ = -1;
+};
+
+// SIGINT/SIGTERM are caught while one lives (Caught() says which came, 0
+// while none); the previous handlers come back after it.
+class StopSignals {
+ public:
+  StopSignals();
+  ~StopSignals();
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+  static int Caught();
+
+ private:
+  struct sigaction old_int_ {}, old_term_ {};
+};
+
+class SweepRecorder {
+ public:
+  // Creates the output directory, takes its lock, removes stale step files,
+  // opens the store, and plans this shard's runs: those stored are skipped
+  // (failed and timed-out ones are retried unless no_retry; all rerun with
+  // force). Throws DirectoryLockedError, StoreError, EnvironmentError.
+  SweepRecorder(const Spec& spec, const RunnerOptions& options, std::ostream& progress, bool terminal);
+
+  // The runs left to do, in matrix order; the sweep takes them from the front.
+  std::deque<PlannedRun>& queue() { return queue_; }
+  SweepSummary& summary() { return summary_; }
+  Progress& progress() { return *progress_; }
+  int lock_fd() const { return lock_.fd(); }
+  const std::string& out_dir() const { return out_dir_; }
+
+  // Stores a finished run, its steps read from step_file when one is given
+  // (a step file that cannot be read stores the run as failed); `where` and
+  // `in_flight` go to the progress (Progress::Done).
+  void Record(RunRecord r, const std::string& experiment, const std::string& step_file = "",
+              const std::string& where = "", const std::string& in_flight = "");
+  // Records a run the spec marks as skipped (incompatible views).
+  void RecordSkipped(const PlannedRun& run);
+
+ private:
+  std::string out_dir_;
+  std::string spec_file_;
+  DirectoryLock lock_;
+  ResultsStore store_;
+  std::deque<PlannedRun> queue_;
+  SweepSummary summary_;
+  std::optional<Progress> progress_;
+};
+
+}  // namespace icp
+
+#endif  // ICPBENCH_HARNESS_SWEEP_RECORDER_H_

@@ -1,0 +1,241 @@
+#include "harness/worker_pool.h"
+
+#include <poll.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <utility>
+
+#include "core/params.h"
+#include "harness/runner.h"
+#include "harness/worker_output.h"
+
+namespace icp {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double Seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+// Values beyond this (inf, 1e300) mean no limit: alarm() and the clocks
+// overflow long before.
+constexpr double kNoLimitAbove = 1e8;
+
+bool WriteAll(int fd, const std::string& data) {
+  std::size_t done = 0;
+  while (done < data.size()) {
+    ssize_t n = write(fd, data.data() + done, data.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+// In the forked worker: die with the parent whatever kills it (a parent that
+// died before prctl is caught by the getppid check), keep the terminal's
+// Ctrl-C for the parent (it stops the workers itself), and enforce a hard
+// limit of its own in case the parent cannot kill it.
+void SetUpWorker(pid_t parent, double hard_limit_s, double memory_limit_mb) {
+  prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (getppid() != parent) _exit(4);
+  setpgid(0, 0);
+  signal(SIGINT, SIG_DFL);
+  signal(SIGTERM, SIG_DFL);
+  sigset_t none;
+  sigemptyset(&none);
+  sigprocmask(SIG_SETMASK, &none, nullptr);
+  if (hard_limit_s > 0 && hard_limit_s < kNoLimitAbove) {
+    const auto s = static_cast<unsigned>(std::ceil(hard_limit_s));
+    alarm(s);
+    rlimit cpu{s, s + 1};
+    setrlimit(RLIMIT_CPU, &cpu);
+  }
+#if !defined(ICPBENCH_SANITIZED)
+  // RLIMIT_DATA counts the private writable memory (heap, anonymous maps,
+  // thread stacks), not the address space that malloc arenas and libraries
+  // reserve, so many threads (TBB, OpenCV) do not use the limit up. (ASan maps
+  // terabytes of shadow memory: its builds run without the limit.)
+  if (memory_limit_mb > 0) {
+    const auto bytes = static_cast<rlim_t>(memory_limit_mb * 1024 * 1024);
+    rlimit data{bytes, bytes};
+    setrlimit(RLIMIT_DATA, &data);
+  }
+#else
+  (void)memory_limit_mb;
+#endif
+}
+
+// The forked worker: one run, its summary on the pipe, no cleanup.
+[[noreturn]] void WorkOn(const RunSpec& spec, const std::string& step_file, int out_fd) {
+  signal(SIGPIPE, SIG_IGN);
+  RunRecord record;
+  record.spec = spec;
+  try {
+    if (spec.record_steps) {
+      StepFileWriter steps(step_file);
+      record = ExecuteRun(spec, [&](const StepRecord& s) { steps.Write(s); });
+      steps.Close();
+    } else {  // record: runs: the metrics are accumulated all the same
+      record = ExecuteRun(spec, [](const StepRecord&) {});
+    }
+  } catch (const std::exception& e) {  // the step file failed (a failed write is caught in ExecuteRun)
+    record.status = RunStatus::kFailed;
+    record.reason = e.what();
+    record.metrics = RunMetrics{};
+  }
+  const bool ok = WriteAll(out_fd, SerializeSummary(record));
+  _exit(ok ? 0 : 3);
+}
+
+}  // namespace
+
+WorkerPool::WorkerPool(std::string step_dir, int jobs, double kill_grace_s, std::vector<int> close_in_workers)
+    : step_dir_(std::move(step_dir)),
+      jobs_(std::max(1, jobs)),
+      kill_grace_s_(kill_grace_s),
+      close_in_workers_(std::move(close_in_workers)) {}
+
+WorkerPool::~WorkerPool() { Stop(); }
+
+bool WorkerPool::Start(const PlannedRun& run) {
+  const double kill_after_s = run.spec.timeout_s > 0 && run.spec.timeout_s < kNoLimitAbove
+                                  ? run.spec.timeout_s + kill_grace_s_
+                                  : 0;
+  // The worker's own limit comes after the parent's kill, which is the
+  // normal way a hung run ends.
+  const double hard_limit_s = kill_after_s > 0 ? kill_after_s + 1 : 0;
+  int fds[2];
+  if (pipe(fds) != 0) {
+    start_errno_ = errno;
+    start_error_ = "cannot create a pipe for a worker";
+    return false;
+  }
+  const std::string step_file = StepFilePath(step_dir_, std::to_string(++started_));
+  std::fflush(nullptr);
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid < 0) {
+    start_errno_ = errno;
+    start_error_ = "cannot start a worker process (fork)";
+    close(fds[0]);
+    close(fds[1]);
+    return false;
+  }
+  if (pid == 0) {
+    SetUpWorker(parent, hard_limit_s, run.spec.memory_limit_mb);
+    close(fds[0]);
+    for (int fd : close_in_workers_) close(fd);
+    for (const Worker& w : workers_) close(w.fd);
+    WorkOn(run.spec, step_file, fds[1]);
+  }
+  close(fds[1]);
+  Worker w;
+  w.pid = pid;
+  w.fd = fds[0];
+  w.started = Clock::now();
+  w.kill_after_s = kill_after_s;
+  w.hard_limit_s = hard_limit_s;
+  w.run = run;
+  w.step_file = step_file;
+  workers_.push_back(std::move(w));
+  return true;
+}
+
+void WorkerPool::Poll(int timeout_ms, const std::function<void(FinishedRun&)>& on_finished) {
+  if (workers_.empty()) return;
+  std::vector<pollfd> fds;
+  for (const Worker& w : workers_) fds.push_back({w.fd, POLLIN, 0});
+  poll(fds.data(), fds.size(), timeout_ms);
+  for (std::size_t i = 0; i < workers_.size();) {
+    Worker& w = workers_[i];
+    bool eof = false;
+    if (fds[i].revents & (POLLIN | POLLHUP | POLLERR)) {
+      char buf[65536];
+      ssize_t n = read(w.fd, buf, sizeof buf);
+      if (n > 0) {
+        w.output.append(buf, static_cast<std::size_t>(n));
+      } else if (n == 0 || errno != EINTR) {
+        eof = true;
+      }
+    }
+    if (!eof && !w.killed && w.kill_after_s > 0 && Seconds(Clock::now() - w.started) > w.kill_after_s) {
+      kill(w.pid, SIGKILL);
+      w.killed = true;
+    }
+    if (!eof) {
+      ++i;
+      continue;
+    }
+    close(w.fd);
+    int status = 0;
+    while (waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    FinishedRun finished = Finish(w, status);
+    const std::string step_file = w.step_file;
+    fds.erase(fds.begin() + static_cast<std::ptrdiff_t>(i));
+    workers_.erase(workers_.begin() + static_cast<std::ptrdiff_t>(i));
+    try {
+      on_finished(finished);
+    } catch (...) {
+      unlink(step_file.c_str());
+      throw;
+    }
+    unlink(step_file.c_str());
+  }
+}
+
+void WorkerPool::Stop() {
+  for (Worker& w : workers_) kill(w.pid, SIGKILL);
+  for (Worker& w : workers_) {
+    close(w.fd);
+    while (waitpid(w.pid, nullptr, 0) < 0 && errno == EINTR) {
+    }
+    unlink(w.step_file.c_str());
+  }
+  workers_.clear();
+}
+
+FinishedRun WorkerPool::Finish(Worker& w, int wait_status) {
+  FinishedRun f;
+  f.run = w.run;
+  RunRecord& r = f.record;
+  r.spec = w.run.spec;
+  if (w.killed) {
+    r.status = RunStatus::kTimeout;
+    r.reason = "killed after " + FormatDouble(w.kill_after_s) + " s (timeout " +
+               FormatDouble(w.run.spec.timeout_s) + " s)";
+  } else if (WIFSIGNALED(wait_status) &&
+             (WTERMSIG(wait_status) == SIGALRM || WTERMSIG(wait_status) == SIGXCPU)) {
+    r.status = RunStatus::kTimeout;
+    r.reason = "stopped by its own hard limit of " + FormatDouble(w.hard_limit_s) + " s (timeout " +
+               FormatDouble(w.run.spec.timeout_s) + " s)";
+  } else if (WIFSIGNALED(wait_status)) {
+    const int sig = WTERMSIG(wait_status);
+    r.status = RunStatus::kFailed;
+    r.reason = "crashed: signal " + std::to_string(sig) + " (" + strsignal(sig) + ")";
+  } else if (!WIFEXITED(wait_status) || WEXITSTATUS(wait_status) != 0) {
+    r.status = RunStatus::kFailed;
+    r.reason = "worker exited with code " + std::to_string(WEXITSTATUS(wait_status));
+  } else {
+    try {
+      r = DeserializeSummary(w.output, w.run.spec);
+      if (w.run.spec.record_steps) f.step_file = w.step_file;
+    } catch (const std::exception& e) {
+      r.status = RunStatus::kFailed;
+      r.reason = UnreadableWorkerOutput(e.what());
+    }
+  }
+  if (r.status != RunStatus::kOk && r.wall_time_s == 0) r.wall_time_s = Seconds(Clock::now() - w.started);
+  return f;
+}
+
+}  // namespace icp
