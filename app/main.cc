@@ -18,6 +18,7 @@
 #include "experiments/registry.h"
 #include "harness/environment_error.h"
 #include "harness/list_command.h"
+#include "harness/mpi_sweep.h"
 #include "harness/plugin_loader.h"
 #include "report/report.h"
 #include "harness/results_store.h"
@@ -77,6 +78,16 @@ int main(int argc, char** argv) {
                       "run only share i of n (i/n, 0-based) of the matrix; auto: this Slurm "
                       "array task's (SLURM_ARRAY_TASK_ID and _COUNT or _MIN/_MAX)")
       ->capture_default_str();
+  bool mpi = false;
+  icp::MpiSweepOptions mpi_options;
+  run_cmd->add_flag("--mpi", mpi,
+                    "one sweep over the ranks of mpirun -n N: rank 0 dispatches and stores, the others "
+                    "run --jobs runs each");
+  run_cmd->add_option("--rank-timeout", mpi_options.rank_timeout_s,
+                      "with --mpi: seconds without a message after which a rank is lost (its runs "
+                      "in flight go to other ranks)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   run_cmd->add_flag("--force", run.force, "rerun runs that are already stored");
   run_cmd->add_flag("--no-retry", run.no_retry,
                     "keep stored failed and timeout runs instead of retrying them");
@@ -124,7 +135,6 @@ int main(int argc, char** argv) {
     } else if (*list_cmd) {
       std::cout << icp::ListPlugins(what, list_format);
     } else if (*run_cmd) {
-      const icp::Spec spec = icp::LoadSpec(spec_file);
       std::tie(run.shard_index, run.shard_count) = icp::ParseShard(shard);
       if (run.jobs < 1) throw std::invalid_argument("--jobs must be at least 1");
       // More workers than this only share the cores and use up processes
@@ -138,12 +148,19 @@ int main(int argc, char** argv) {
       if (run.out_dir.empty())
         run.out_dir = "results/" + std::filesystem::path(spec_file).stem().string();
       const bool terminal = isatty(STDERR_FILENO);
-      std::cerr << "icpbench: " << spec.runs.size() << " runs in " << spec_file;
-      if (run.shard_count > 1)
-        std::cerr << ", shard " << run.shard_index << "/" << run.shard_count << " of them";
-      std::cerr << ", " << run.jobs
-                << " in parallel, results in " << icp::StorePath(run.out_dir) << "\n";
-      icp::SweepSummary s = icp::RunSweep(spec, run, std::cerr, terminal);
+      icp::SweepSummary s;
+      if (mpi) {
+        const icp::MpiSweepResult r = icp::RunMpiSweep(spec_file, run, mpi_options, std::cerr, terminal);
+        if (!r.dispatcher) return r.worker_exit_code;
+        s = r.summary;
+      } else {
+        const icp::Spec spec = icp::LoadSpec(spec_file);
+        std::cerr << "icpbench: " << spec.runs.size() << " runs in " << spec_file;
+        if (run.shard_count > 1)
+          std::cerr << ", shard " << run.shard_index << "/" << run.shard_count << " of them";
+        std::cerr << ", " << run.jobs << " in parallel, results in " << icp::StorePath(run.out_dir) << "\n";
+        s = icp::RunSweep(spec, run, std::cerr, terminal);
+      }
       std::cerr << "icpbench: " << s.planned << " planned, " << s.already_stored
                 << " already stored, " << s.ok << " ok, " << s.failed << " failed, "
                 << s.timed_out << " timed out, " << s.skipped << " skipped\n";

@@ -417,7 +417,9 @@ RunSpec WithoutDefaults(RunSpec spec) {
   return spec;
 }
 
-Spec LoadSpec(const std::string& path) {
+Spec LoadSpec(const std::string& path) { return ParseSpec(ReadSpecText(path), path); }
+
+std::string ReadSpecText(const std::string& path) {
   // An ifstream opens a directory and then reads nothing ("empty spec").
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw SpecError(path + ": is a directory");
@@ -425,7 +427,7 @@ Spec LoadSpec(const std::string& path) {
   if (!in) throw SpecError(path + ": cannot read the spec file");
   std::stringstream text;
   text << in.rdbuf();
-  return ParseSpec(text.str(), path);
+  return text.str();
 }
 
 }  // namespace icp

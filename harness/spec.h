@@ -70,6 +70,8 @@ struct Spec {
 // Reads and validates a spec file. Throws SpecError("FILE:LINE:COL: key
 // 'algorithms[1].params.ratio': ...") on any problem.
 Spec LoadSpec(const std::string& path);
+// The text of a spec file (SpecError if it cannot be read).
+std::string ReadSpecText(const std::string& path);
 // The same from text (source names it in errors).
 Spec ParseSpec(const std::string& text, const std::string& source);
 

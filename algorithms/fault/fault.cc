@@ -15,8 +15,9 @@ namespace icp {
 
 void Describe(FaultParams& p, ParamSet& set) {
   set.Add("mode", &p.mode, "the fault to inject",
-          {"none", "segfault", "abort", "hang", "throw", "allocate", "garbage"});
+          {"none", "segfault", "abort", "hang", "throw", "allocate", "garbage", "slow"});
   set.Add("after_calls", &p.after_calls, "good steps before the fault", Range::AtLeast(0));
+  set.Add("slow_ms", &p.slow_ms, "mode slow: milliseconds added to every step", Range::AtLeast(0));
 }
 
 namespace {
@@ -26,7 +27,10 @@ class FaultEstimator : public Estimator {
       : params_(std::move(params)), hc4_(&MakeHC4, {}, Carry::kFirst) {}
 
   StepResult Step(const Views& views, const StopCondition& stop) override {
-    if (steps_++ < params_.after_calls || params_.mode == "none") return hc4_.Step(views, stop);
+    if (params_.mode == "slow")
+      std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(params_.slow_ms));
+    if (steps_++ < params_.after_calls || params_.mode == "none" || params_.mode == "slow")
+      return hc4_.Step(views, stop);
     if (params_.mode == "segfault") std::raise(SIGSEGV);
     if (params_.mode == "abort") std::abort();
     if (params_.mode == "throw") throw std::runtime_error("injected fault");

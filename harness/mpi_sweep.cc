@@ -1,0 +1,612 @@
+#include "harness/mpi_sweep.h"
+
+#include <mpi.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <deque>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <ostream>
+#include <stdexcept>
+#include <string_view>
+#include <thread>
+#include <unordered_map>
+#include <vector>
+
+#include "core/params.h"
+#include "harness/environment_error.h"
+#include "harness/provenance.h"
+#include "harness/sweep_recorder.h"
+#include "harness/worker_output.h"
+#include "harness/worker_pool.h"
+
+namespace icp {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double Seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+// Every message is bytes; the tag says what they are. A message about a run
+// starts with the run's index in the matrix and a newline.
+enum Tag : int {
+  kReady = 1,      // worker -> 0: {"jobs": K, "error": ""}
+  kRun = 2,        // 0 -> worker: index \n key
+  kSteps = 3,      // worker -> 0: index \n a chunk of the run's step file
+  kDone = 4,       // worker -> 0: index \n {"summary", "steps", "machine"}
+  kHeartbeat = 5,  // both ways, empty
+  kStop = 6,       // 0 -> worker: no more runs; "lost" when a rank was lost
+};
+
+// The payload of kStop after a rank was lost: Open MPI 4.1's MPI_Finalize
+// can wait forever for a dead rank (its closing fence), so then no rank
+// calls it (mpirun --enable-recovery accepts that).
+constexpr std::string_view kRankLost = "lost";
+
+constexpr std::size_t kChunkBytes = 1 << 20;
+
+// MPI_Init and MPI_Finalize around a sweep; errors are returned, not fatal,
+// so a dead peer does not abort this rank.
+class MpiSession {
+ public:
+  MpiSession() {
+    // Open MPI's handlers for SIGSEGV and the like would be inherited by the
+    // forked workers and turn their crashes into backtraces: the runner
+    // records the signal itself. (A user's own setting wins.)
+    setenv("OMPI_MCA_opal_signal", "", 0);
+    int initialized = 0;
+    MPI_Initialized(&initialized);
+    if (!initialized) MPI_Init(nullptr, nullptr);
+    MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  }
+  ~MpiSession() {
+    if (!skip_finalize_) MPI_Finalize();
+  }
+  void SkipFinalize() { skip_finalize_ = true; }
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+
+ private:
+  int rank_ = 0;
+  int size_ = 1;
+  bool skip_finalize_ = false;
+};
+
+bool Send(int dest, Tag tag, const std::string& bytes) {
+  return MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, dest, tag, MPI_COMM_WORLD) ==
+         MPI_SUCCESS;
+}
+
+struct Message {
+  int source = 0;
+  int tag = 0;
+  std::string bytes;
+};
+
+// The next message from `source` (MPI_ANY_SOURCE: anyone), if one is there.
+bool TryReceive(int source, Message* m) {
+  int flag = 0;
+  MPI_Status status;
+  if (MPI_Iprobe(source, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status) != MPI_SUCCESS || !flag) return false;
+  int count = 0;
+  MPI_Get_count(&status, MPI_BYTE, &count);
+  m->source = status.MPI_SOURCE;
+  m->tag = status.MPI_TAG;
+  m->bytes.resize(static_cast<std::size_t>(count));
+  MPI_Recv(m->bytes.data(), count, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
+           MPI_STATUS_IGNORE);
+  return true;
+}
+
+std::string WithIndex(std::size_t index, const std::string& rest) { return std::to_string(index) + "\n" + rest; }
+
+// Splits "index\nrest"; false when malformed.
+bool SplitIndex(const std::string& bytes, std::size_t* index, std::string* rest) {
+  const std::size_t nl = bytes.find('\n');
+  if (nl == std::string::npos || nl == 0) return false;
+  try {
+    *index = std::stoul(bytes.substr(0, nl));
+  } catch (const std::exception&) {
+    return false;
+  }
+  *rest = bytes.substr(nl + 1);
+  return true;
+}
+
+// Rank 0's text of the spec goes to every rank; "" with an error.
+void BroadcastSpec(int rank, std::string* text, std::string* error) {
+  std::string packed = rank == 0 ? (error->empty() ? "T" + *text : "E" + *error) : "";
+  long long size = static_cast<long long>(packed.size());
+  MPI_Bcast(&size, 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD);
+  packed.resize(static_cast<std::size_t>(size));
+  MPI_Bcast(packed.data(), static_cast<int>(size), MPI_BYTE, 0, MPI_COMM_WORLD);
+  if (packed.empty()) packed = "E(no spec received)";
+  (packed[0] == 'T' ? *text : *error) = packed.substr(1);
+}
+
+std::string RankName(int rank) { return "rank " + std::to_string(rank); }
+
+// --- A worker rank ---------------------------------------------------------
+
+class WorkerRank {
+ public:
+  WorkerRank(int rank, const Spec* spec, const RunnerOptions& options, const MpiSweepOptions& mpi)
+      : rank_(rank),
+        spec_(spec),
+        mpi_(mpi),
+        jobs_(std::max(1, options.jobs)),
+        step_dir_(std::filesystem::temp_directory_path() /
+                  ("icpbench-rank" + std::to_string(rank) + "-" + std::to_string(getpid()))),
+        pool_(step_dir_.string(), options.jobs, options.kill_grace_s),
+        machine_(CurrentProvenance().machine) {}
+  ~WorkerRank() {
+    pool_.Stop();
+    std::error_code ec;
+    std::filesystem::remove_all(step_dir_, ec);
+  }
+
+  // Tells rank 0 how many runs it takes at once (none, with the reason,
+  // when `error` says this rank cannot run the spec), then runs what it is
+  // sent. Returns 0 when rank 0 said stop, 3 when rank 0 went silent, 128 +
+  // the signal that stopped it. *peer_lost: rank 0 lost a rank, or this
+  // rank lost rank 0 (MPI_Finalize must not be called).
+  int Run(std::string error, bool* peer_lost) {
+    std::error_code ec;
+    std::filesystem::create_directories(step_dir_, ec);
+    if (error.empty() && ec)
+      error = RankName(rank_) + " cannot create its step directory " + step_dir_.string() + ": " + ec.message();
+    Send(0, kReady, nlohmann::json{{"jobs", error.empty() ? jobs_ : 0}, {"error", error}}.dump());
+    const StopSignals signals;
+    Clock::time_point heard = Clock::now(), sent = heard;
+    while (true) {
+      if (StopSignals::Caught() != 0) return 128 + StopSignals::Caught();
+      pool_.Poll(2, [&](FinishedRun& f) {
+        SendResult(f);
+        sent = Clock::now();
+      });
+      Message m;
+      bool idle = true;
+      while (TryReceive(0, &m)) {
+        idle = false;
+        heard = Clock::now();
+        if (m.tag == kStop) {
+          *peer_lost = m.bytes == kRankLost;
+          return 0;
+        }
+        if (m.tag == kRun) StartRun(m.bytes);
+      }
+      const auto now = Clock::now();
+      if (Seconds(now - sent) >= mpi_.heartbeat_s) {
+        Send(0, kHeartbeat, "");
+        sent = now;
+      }
+      if (Seconds(now - heard) > mpi_.rank_timeout_s) {
+        std::fprintf(stderr, "icpbench: %s: nothing from rank 0 for %g s: stopping\n", RankName(rank_).c_str(),
+                     mpi_.rank_timeout_s);
+        *peer_lost = true;
+        return 3;
+      }
+      if (idle && pool_.Running() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+  }
+
+ private:
+  void StartRun(const std::string& bytes) {
+    std::size_t index = 0;
+    std::string key;
+    if (!SplitIndex(bytes, &index, &key)) return;
+    FinishedRun f;
+    f.record.status = RunStatus::kFailed;
+    if (spec_ == nullptr || index >= spec_->runs.size() || spec_->runs[index].spec.Key() != key) {
+      f.record.reason = RankName(rank_) + " expands the spec differently from rank 0 (another icpbench "
+                        "version or other plugins?)";
+    } else if (pool_.Start(spec_->runs[index])) {
+      in_flight_[key] = index;
+      return;
+    } else {  // recorded as failed: the next sweep retries it
+      f.record.reason = RankName(rank_) + ": " + pool_.start_error() + ": " + std::strerror(pool_.start_errno());
+    }
+    SendDone(index, f.record, false);
+  }
+
+  void SendResult(FinishedRun& f) {
+    const std::size_t index = IndexOf(f);
+    bool steps = !f.step_file.empty();
+    if (steps) {
+      std::ifstream in(f.step_file, std::ios::binary);
+      if (!in) {
+        f.record.status = RunStatus::kFailed;
+        f.record.reason = UnreadableWorkerOutput("cannot open the step file " + f.step_file);
+        f.record.metrics = RunMetrics{};
+        steps = false;
+      }
+      std::string chunk(kChunkBytes, '\0');
+      while (steps && in) {
+        in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+        const auto n = static_cast<std::size_t>(in.gcount());
+        if (n > 0) Send(0, kSteps, WithIndex(index, chunk.substr(0, n)));
+      }
+    }
+    SendDone(index, f.record, steps);
+  }
+
+  void SendDone(std::size_t index, const RunRecord& r, bool steps) {
+    Send(0, kDone, WithIndex(index, nlohmann::json{{"summary", SerializeSummary(r)},
+                                                   {"steps", steps},
+                                                   {"machine", machine_}}.dump()));
+  }
+
+  // The matrix index of a finished run.
+  std::size_t IndexOf(const FinishedRun& f) {
+    const auto it = in_flight_.find(f.run.spec.Key());
+    const std::size_t index = it->second;  // every started run is there
+    in_flight_.erase(it);
+    return index;
+  }
+
+  int rank_;
+  const Spec* spec_;
+  MpiSweepOptions mpi_;
+  int jobs_;
+  std::filesystem::path step_dir_;
+  WorkerPool pool_;
+  std::string machine_;
+  std::unordered_map<std::string, std::size_t> in_flight_;  // key -> matrix index
+};
+
+// --- Rank 0 ---------------------------------------------------------------
+
+class Dispatcher {
+ public:
+  // *rank_lost is set when a rank is lost.
+  Dispatcher(const Spec& spec, int ranks, const MpiSweepOptions& mpi, SweepRecorder* recorder,
+             std::ostream& messages, bool* rank_lost)
+      : spec_(spec),
+        mpi_(mpi),
+        recorder_(recorder),
+        messages_(messages),
+        rank_lost_(rank_lost),
+        ranks_(static_cast<std::size_t>(ranks)) {
+    for (std::size_t i = 0; i < spec.runs.size(); ++i) index_of_[spec.runs[i].spec.Key()] = i;
+    for (const PlannedRun& run : recorder->queue()) queue_.push_back({index_of_.at(run.spec.Key()), {}});
+    recorder->queue().clear();
+    const auto now = Clock::now();
+    for (Rank& r : ranks_) r.heard = r.sent = now;
+    ranks_[0].lost = true;  // this one: it runs nothing
+  }
+
+  ~Dispatcher() {
+    for (Rank& rank : ranks_)
+      for (auto& [index, run] : rank.in_flight) Discard(run);
+  }
+
+  // Returns when every run is stored, a stop signal came, or no rank is left.
+  void Run() {
+    const StopSignals signals;
+    while (StopSignals::Caught() == 0) {
+      const auto start = Clock::now();
+      const bool sent = Dispatch();
+      if (queue_.empty() && InFlight() == 0) {
+        busy_s_ += Seconds(Clock::now() - start);
+        return;
+      }
+      if (LiveRanks() == 0) {
+        throw EnvironmentError("every worker rank is lost or could not run the spec: " +
+                               std::to_string(queue_.size() + InFlight()) +
+                               " runs not run (rerunning resumes)");
+      }
+      bool received = false;
+      Message m;
+      for (int i = 0; i < 64 && TryReceive(MPI_ANY_SOURCE, &m); ++i) {
+        received = true;
+        Handle(m);
+      }
+      const auto now = Clock::now();
+      if (sent || received) busy_s_ += Seconds(now - start);
+      for (std::size_t r = 1; r < ranks_.size(); ++r) {
+        Rank& rank = ranks_[r];
+        if (rank.lost) continue;
+        if (Seconds(now - rank.sent) >= mpi_.heartbeat_s) {
+          if (!Send(static_cast<int>(r), kHeartbeat, "")) Lose(r, "a message to it failed");
+          rank.sent = now;
+        }
+        if (!rank.lost && Seconds(now - rank.heard) > mpi_.rank_timeout_s)
+          Lose(r, "nothing from it for " + FormatDouble(mpi_.rank_timeout_s) + " s");
+      }
+      if (!received) std::this_thread::sleep_for(std::chrono::microseconds(500));
+    }
+    interrupted_by_ = StopSignals::Caught();
+  }
+
+  int interrupted_by() const { return interrupted_by_; }
+  // Seconds spent sending runs and handling messages (storing included),
+  // and storing alone, not waiting.
+  double busy_s() const { return busy_s_; }
+  double storing_s() const { return storing_s_; }
+  int InFlight() const {
+    int n = 0;
+    for (const Rank& r : ranks_) n += static_cast<int>(r.in_flight.size());
+    return n;
+  }
+
+ private:
+  struct Pending {
+    std::size_t index;
+    std::vector<int> lost_with;  // the ranks it was in flight on when they were lost
+  };
+  struct InFlightRun {
+    Pending pending;
+    std::string step_file;  // where its steps arrive ("" until the first chunk)
+    std::FILE* steps = nullptr;
+  };
+  struct Rank {
+    bool ready = false;
+    bool lost = false;
+    int jobs = 0;
+    Clock::time_point heard, sent;
+    std::map<std::size_t, InFlightRun> in_flight;
+  };
+
+  int LiveRanks() const {
+    int n = 0;
+    for (const Rank& r : ranks_) n += !r.lost && (!r.ready || r.jobs > 0);
+    return n;
+  }
+
+  // Sends runs to the ranks with room; returns whether it sent any.
+  bool Dispatch() {
+    bool sent = false;
+    for (std::size_t r = 1; r < ranks_.size(); ++r) {
+      Rank& rank = ranks_[r];
+      while (rank.ready && !rank.lost && static_cast<int>(rank.in_flight.size()) < rank.jobs && !queue_.empty()) {
+        Pending p = queue_.front();
+        queue_.pop_front();
+        const PlannedRun& run = spec_.runs[p.index];
+        if (!run.skip_reason.empty()) {
+          RunRecord skipped;
+          skipped.spec = run.spec;
+          skipped.status = RunStatus::kSkipped;
+          skipped.reason = run.skip_reason;
+          Store(skipped, p.index, "", "rank 0");
+          continue;
+        }
+        if (!Send(static_cast<int>(r), kRun, WithIndex(p.index, run.spec.Key()))) {
+          queue_.push_front(p);
+          Lose(r, "a message to it failed");
+          break;
+        }
+        rank.sent = Clock::now();
+        rank.in_flight[p.index] = InFlightRun{p, "", nullptr};
+        sent = true;
+      }
+    }
+    if (sent) recorder_->progress().InFlight(recorder_->summary(), InFlightText());
+    return sent;
+  }
+
+  void Store(const RunRecord& r, std::size_t index, const std::string& step_file, const std::string& where) {
+    const auto start = Clock::now();
+    recorder_->Record(r, spec_.runs[index].experiment, step_file, where, InFlightText());
+    storing_s_ += Seconds(Clock::now() - start);
+  }
+
+  void Handle(const Message& m) {
+    const auto r = static_cast<std::size_t>(m.source);
+    if (r == 0 || r >= ranks_.size()) return;
+    Rank& rank = ranks_[r];
+    if (rank.lost) {  // too late: its runs went elsewhere
+      Send(m.source, kStop, "");
+      return;
+    }
+    rank.heard = Clock::now();
+    if (m.tag == kReady) {
+      const nlohmann::json j = nlohmann::json::parse(m.bytes, nullptr, false);
+      rank.ready = true;
+      rank.jobs = j.is_object() ? j.value("jobs", 0) : 0;
+      const std::string error = j.is_object() ? j.value("error", std::string("bad ready message")) : "bad ready message";
+      if (!error.empty()) messages_ << "icpbench: " << RankName(m.source) << " runs nothing: " << error << "\n";
+      return;
+    }
+    std::size_t index = 0;
+    std::string rest;
+    if ((m.tag != kSteps && m.tag != kDone) || !SplitIndex(m.bytes, &index, &rest)) return;
+    auto it = rank.in_flight.find(index);
+    if (it == rank.in_flight.end()) return;
+    if (m.tag == kSteps) {
+      InFlightRun& run = it->second;
+      if (run.steps == nullptr && run.step_file.empty()) {
+        run.step_file = StepFilePath(recorder_->out_dir(), "rank" + std::to_string(r) + "-" + std::to_string(index));
+        run.steps = std::fopen(run.step_file.c_str(), "we");
+        if (run.steps == nullptr) ThrowErrno("cannot write the step file " + run.step_file, errno);
+      }
+      if (std::fwrite(rest.data(), 1, rest.size(), run.steps) != rest.size())
+        ThrowErrno("cannot write the step file " + run.step_file, errno);
+      return;
+    }
+    InFlightRun run = std::move(it->second);
+    rank.in_flight.erase(it);  // before the progress counts what is in flight
+    Finish(r, run, rest);
+  }
+
+  void Finish(std::size_t r, InFlightRun& run, const std::string& done) {
+    const PlannedRun& planned = spec_.runs[run.pending.index];
+    RunRecord record;
+    record.spec = planned.spec;
+    bool steps = false;
+    try {
+      const nlohmann::json j = nlohmann::json::parse(done);
+      record = DeserializeSummary(j.at("summary").get<std::string>(), planned.spec);
+      record.provenance.machine = j.at("machine").get<std::string>();
+      steps = j.at("steps").get<bool>();
+    } catch (const std::exception& e) {
+      record.status = RunStatus::kFailed;
+      record.reason = UnreadableWorkerOutput(std::string(e.what()) + ", from " + RankName(static_cast<int>(r)));
+    }
+    if (run.steps != nullptr && std::fclose(run.steps) != 0) {
+      run.steps = nullptr;
+      ThrowErrno("cannot write the step file " + run.step_file, errno);
+    }
+    run.steps = nullptr;
+    if (steps && run.step_file.empty()) {  // a run of no steps sends no chunk
+      run.step_file = StepFilePath(recorder_->out_dir(), "rank" + std::to_string(r) + "-" + std::to_string(run.pending.index));
+      std::ofstream touch(run.step_file);
+    }
+    const std::string step_file = steps ? run.step_file : "";
+    struct Unlink {
+      std::string path;
+      ~Unlink() {
+        if (!path.empty()) std::remove(path.c_str());
+      }
+    } unlink_after{run.step_file};
+    Store(record, run.pending.index, step_file, RankName(static_cast<int>(r)));
+  }
+
+  // The rank is gone: its runs in flight go back to the queue, or fail if
+  // they were lost with another rank before.
+  void Lose(std::size_t r, const std::string& why) {
+    Rank& rank = ranks_[r];
+    rank.lost = true;
+    *rank_lost_ = true;
+    messages_ << "icpbench: " << RankName(static_cast<int>(r)) << " lost (" << why << "): ";
+    if (rank.in_flight.empty()) messages_ << "no run was in flight there\n";
+    int requeued = 0;
+    std::vector<Pending> failed;
+    for (auto it = rank.in_flight.rbegin(); it != rank.in_flight.rend(); ++it) {
+      InFlightRun& run = it->second;
+      Discard(run);
+      run.pending.lost_with.push_back(static_cast<int>(r));
+      if (run.pending.lost_with.size() >= 2) {
+        failed.push_back(run.pending);
+      } else {
+        queue_.push_front(run.pending);
+        ++requeued;
+      }
+    }
+    const int lost = static_cast<int>(rank.in_flight.size());
+    rank.in_flight.clear();
+    if (lost > 0)
+      messages_ << requeued << " of its " << lost << " runs in flight go to other ranks, " << failed.size()
+                << " (lost with a rank before) are recorded as failed\n";
+    for (const Pending& p : failed) {
+      RunRecord record;
+      record.spec = spec_.runs[p.index].spec;
+      record.status = RunStatus::kFailed;
+      record.reason = "lost with worker ranks";
+      for (int lost_rank : p.lost_with) record.reason += " " + std::to_string(lost_rank);
+      record.reason += " (" + why + ")";
+      Store(record, p.index, "", RankName(static_cast<int>(r)));
+    }
+  }
+
+  static void Discard(InFlightRun& run) {
+    if (run.steps != nullptr) std::fclose(run.steps);
+    run.steps = nullptr;
+    if (!run.step_file.empty()) std::remove(run.step_file.c_str());
+  }
+
+  // "1:2 2:1 3:lost": the runs in flight on each worker rank.
+  std::string InFlightText() const {
+    std::string text;
+    for (std::size_t r = 1; r < ranks_.size(); ++r) {
+      if (!text.empty()) text += " ";
+      text += std::to_string(r) + ":" + (ranks_[r].lost ? "lost" : std::to_string(ranks_[r].in_flight.size()));
+    }
+    return text;
+  }
+
+  const Spec& spec_;
+  MpiSweepOptions mpi_;
+  SweepRecorder* recorder_;
+  std::ostream& messages_;
+  bool* rank_lost_;
+  std::vector<Rank> ranks_;
+  std::unordered_map<std::string, std::size_t> index_of_;
+  std::deque<Pending> queue_;
+  int interrupted_by_ = 0;
+  double busy_s_ = 0;
+  double storing_s_ = 0;
+};
+
+}  // namespace
+
+bool MpiBuilt() { return true; }
+
+MpiSweepResult RunMpiSweep(const std::string& spec_file, const RunnerOptions& options,
+                           const MpiSweepOptions& mpi, std::ostream& progress, bool terminal) {
+  MpiSession session;
+  if (session.size() < 2)
+    throw std::invalid_argument("--mpi needs at least 2 ranks (mpirun -n N, N >= 2): rank 0 dispatches, the "
+                                "others run");
+  std::string text, error;
+  if (session.rank() == 0) {
+    try {
+      text = ReadSpecText(spec_file);
+      ParseSpec(text, spec_file);
+    } catch (const SpecError& e) {
+      error = e.what();
+    }
+  }
+  BroadcastSpec(session.rank(), &text, &error);
+  MpiSweepResult result;
+  if (session.rank() != 0) {
+    if (!error.empty()) return {false, {}, 2};  // rank 0 says why
+    std::optional<Spec> spec;
+    std::string spec_error;
+    try {
+      spec = ParseSpec(text, spec_file);
+    } catch (const std::exception& e) {
+      spec_error = RankName(session.rank()) + " cannot read rank 0's spec: " + e.what();
+    }
+    WorkerRank worker(session.rank(), spec ? &*spec : nullptr, options, mpi);
+    bool peer_lost = false;
+    result.worker_exit_code = worker.Run(spec_error, &peer_lost);
+    if (peer_lost) session.SkipFinalize();
+    return result;
+  }
+  // However rank 0 leaves (done, an error, a signal), the workers stop.
+  bool rank_lost = false;
+  struct StopWorkers {
+    MpiSession& session;
+    const bool& rank_lost;
+    ~StopWorkers() {
+      for (int r = 1; r < session.size(); ++r) Send(r, kStop, rank_lost ? std::string(kRankLost) : "");
+      if (rank_lost) session.SkipFinalize();
+    }
+  } stop_workers{session, rank_lost};
+  if (!error.empty()) throw SpecError(error);
+  const Spec spec = ParseSpec(text, spec_file);
+  SweepRecorder recorder(spec, options, progress, terminal);
+  progress << "icpbench: " << spec.runs.size() << " runs in " << spec_file;
+  if (options.shard_count > 1) progress << ", shard " << options.shard_index << "/" << options.shard_count;
+  progress << ", " << recorder.queue().size() << " to run on " << session.size() - 1 << " worker ranks x "
+           << options.jobs << " jobs, results in " << StorePath(options.out_dir) << "\n";
+  result.dispatcher = true;
+  Dispatcher dispatcher(spec, session.size(), mpi, &recorder, progress, &rank_lost);
+  dispatcher.Run();
+  result.summary = recorder.summary();
+  result.summary.interrupted_by = dispatcher.interrupted_by();
+  result.summary.stopped = dispatcher.InFlight();
+  recorder.progress().Finish();
+  if (const int runs = result.summary.Finished(); runs > 0) {
+    char line[160];
+    std::snprintf(line, sizeof line, "icpbench: rank 0 per run: %.3f ms dispatching, %.3f ms storing\n",
+                  1e3 * (dispatcher.busy_s() - dispatcher.storing_s()) / runs, 1e3 * dispatcher.storing_s() / runs);
+    progress << line;
+  }
+  return result;
+}
+
+}  // namespace icp
