@@ -18,40 +18,23 @@
 #include <thread>
 #include <vector>
 
+#include "harness/mpi_sweep.h"
 #include "harness/results_store.h"
 #include "harness/runner.h"
 #include "tests/cli_helpers.h"
+#include "tests/process_helpers.h"
 
 namespace icp {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+using testing::Alive;
+using testing::WaitFor;
 
 std::string FreshDir(const std::string& name) {
   const std::string dir = ::testing::TempDir() + "runner_process_" + name;
   std::filesystem::remove_all(dir);
   return dir;
-}
-
-// The state letter and parent of a process from /proc; 0 when it is gone.
-char State(pid_t pid, pid_t* parent = nullptr) {
-  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto close = text.rfind(')');
-  if (close == std::string::npos) return 0;
-  std::istringstream rest(text.substr(close + 1));
-  char state = 0;
-  pid_t ppid = 0;
-  rest >> state >> ppid;
-  if (parent) *parent = ppid;
-  return state;
-}
-
-// Alive: present and not a zombie (an orphan's zombie may wait for a PID 1
-// that never reaps it).
-bool Alive(pid_t pid) {
-  const char s = State(pid);
-  return s != 0 && s != 'Z' && s != 'X';
 }
 
 std::string Command(pid_t pid) {
@@ -65,28 +48,7 @@ std::string Command(pid_t pid) {
 // the git or shell the provenance starts).
 std::vector<pid_t> LiveChildrenOf(pid_t parent) {
   const std::string program = Command(parent);
-  std::vector<pid_t> out;
-  for (const auto& entry : std::filesystem::directory_iterator("/proc")) {
-    const std::string name = entry.path().filename().string();
-    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
-    const pid_t pid = std::stoi(name);
-    pid_t ppid = 0;
-    const char s = State(pid, &ppid);
-    if (ppid == parent && s != 0 && s != 'Z' && s != 'X' && Command(pid) == program)
-      out.push_back(pid);
-  }
-  return out;
-}
-
-// Polls until pred() or the time is up; returns pred().
-template <class Pred>
-bool WaitFor(Pred pred, double seconds) {
-  const auto end = Clock::now() + std::chrono::duration<double>(seconds);
-  while (Clock::now() < end) {
-    if (pred()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  return pred();
+  return testing::LiveChildren(parent, [&](pid_t pid) { return Command(pid) == program; });
 }
 
 // Forks a process that runs the sweep of yaml into dir and writes
@@ -332,6 +294,18 @@ TEST(RunnerProcessTest, CliJobsAreCappedAndMustBePositive) {
   EXPECT_NE(r.out.find("--jobs 100000 capped to"), std::string::npos) << r.out;
   r = Icpbench("run " + spec + " --out " + FreshDir("cli_jobs0") + " --jobs 0");
   EXPECT_EQ(r.exit_code, 2) << r.out;
+}
+
+// --mpi outside mpirun (one rank) or in a build without MPI: a usage error
+// that says what to do, and nothing is run.
+TEST(RunnerProcessTest, CliMpiWithOneRankOrWithoutMpiIsAUsageError) {
+  const std::string spec =
+      testing::WriteFile("process_quick.yaml", "algorithms: [hc4]\nproblems: [chain]\n");
+  const std::string dir = FreshDir("cli_mpi");
+  const testing::Result r = Icpbench("run " + spec + " --mpi --out " + dir);
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find(MpiBuilt() ? "needs at least 2 ranks" : "built without MPI"), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(StorePath(dir)));
 }
 
 TEST(RunnerProcessTest, CliAnUnwritableOutputDirectoryIsTheEnvironment) {

@@ -1,0 +1,238 @@
+// `mpirun -n N icpbench run SPEC --mpi` (issue 12): the same store as a
+// local sweep, a killed worker rank costs only its runs in flight (handed to
+// another rank), a killed rank 0 leaves a store that a rerun completes, and
+// bad input is exit code 2 on every rank. Runs the icpbench binary under
+// mpirun --oversubscribe (3 ranks on any machine).
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "harness/results_store.h"
+#include "tests/cli_helpers.h"
+#include "tests/process_helpers.h"
+
+namespace icp {
+namespace {
+
+std::string FreshDir(const std::string& name) {
+  const std::string dir = ::testing::TempDir() + "mpi_sweep_" + name;
+  std::filesystem::remove_all(dir);
+  return dir;
+}
+
+// mpirun with n ranks of icpbench and its arguments; as root (CI's
+// containers) Open MPI wants to be told.
+std::string MpiCommand(int n, const std::string& args, const std::string& mpirun_flags = "") {
+  return std::string(ICPBENCH_MPIEXEC) + " --oversubscribe" + (geteuid() == 0 ? " --allow-run-as-root" : "") +
+         " " + mpirun_flags + " -n " + std::to_string(n) + " " + ICPBENCH_BINARY + " " + args;
+}
+
+// Starts command in the background, output to log (emptied first); returns
+// mpirun's PID.
+pid_t Start(const std::string& command, const std::string& log) {
+  std::ofstream{log};
+  const pid_t pid = fork();
+  if (pid == 0) {
+    execl("/bin/sh", "sh", "-c", ("exec " + command + " > " + log + " 2>&1").c_str(), nullptr);
+    _exit(127);
+  }
+  return pid;
+}
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The process of MPI rank `rank` among mpirun's children; -1 if none.
+pid_t RankProcess(pid_t mpirun, int rank) {
+  const std::string want = "OMPI_COMM_WORLD_RANK=" + std::to_string(rank);
+  const std::vector<pid_t> found = testing::LiveChildren(mpirun, [&](pid_t pid) {
+    const std::string env = ReadFile("/proc/" + std::to_string(pid) + "/environ");
+    std::size_t at = 0;
+    for (std::size_t end; (end = env.find('\0', at)) != std::string::npos; at = end + 1)
+      if (env.compare(at, end - at, want) == 0) return true;
+    return false;
+  });
+  return found.empty() ? -1 : found[0];
+}
+
+int WaitExit(pid_t pid) {
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+std::vector<RunRecord> RunsByKey(const std::string& dir, bool with_steps) {
+  std::vector<RunRecord> runs = ResultsStore::OpenReadOnly(StorePath(dir))->LoadRuns(with_steps);
+  std::sort(runs.begin(), runs.end(),
+            [](const RunRecord& a, const RunRecord& b) { return a.spec.Key() < b.spec.Key(); });
+  return runs;
+}
+
+bool Same(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
+
+// Everything a run stores but its times.
+void ExpectSameButTimes(const RunRecord& a, const RunRecord& b) {
+  const std::string key = a.spec.Key();
+  EXPECT_EQ(a.status, b.status) << key;
+  EXPECT_EQ(a.reason, b.reason) << key;
+  EXPECT_EQ(a.spec_file, b.spec_file) << key;
+  const RunMetrics &m = a.metrics, &n = b.metrics;
+  EXPECT_EQ(m.steps, n.steps) << key;
+  EXPECT_TRUE(Same(m.mean_area, n.mean_area)) << key;
+  EXPECT_TRUE(Same(m.consistency_rate, n.consistency_rate)) << key;
+  EXPECT_TRUE(Same(m.centre_rmse, n.centre_rmse)) << key;
+  ASSERT_EQ(m.corridors.size(), n.corridors.size()) << key;
+  for (std::size_t k = 0; k < m.corridors.size(); ++k) {
+    EXPECT_EQ(m.corridors[k].var, n.corridors[k].var) << key;
+    EXPECT_TRUE(Same(m.corridors[k].mean_lower, n.corridors[k].mean_lower)) << key;
+    EXPECT_TRUE(Same(m.corridors[k].max_upper, n.corridors[k].max_upper)) << key;
+  }
+  ASSERT_EQ(a.steps.size(), b.steps.size()) << key;
+  for (std::size_t s = 0; s < a.steps.size(); ++s) {
+    const StepRecord &x = a.steps[s], &y = b.steps[s];
+    EXPECT_EQ(x.step, y.step) << key;
+    EXPECT_EQ(x.status, y.status) << key;
+    EXPECT_EQ(x.contained, y.contained) << key;
+    EXPECT_TRUE(Same(x.area, y.area)) << key;
+    ASSERT_EQ(x.vars.size(), y.vars.size()) << key;
+    for (std::size_t v = 0; v < x.vars.size(); ++v) {
+      EXPECT_EQ(x.vars[v].name, y.vars[v].name) << key;
+      EXPECT_TRUE(Same(x.vars[v].lo, y.vars[v].lo) && Same(x.vars[v].hi, y.vars[v].hi)) << key;
+    }
+    ASSERT_EQ(x.properties.size(), y.properties.size()) << key;
+    for (std::size_t p = 0; p < x.properties.size(); ++p) EXPECT_EQ(x.properties[p].name, y.properties[p].name);
+  }
+}
+
+bool StepFilesLeft(const std::string& dir) {
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    if (entry.path().filename().string().starts_with(".steps-")) return true;
+  return false;
+}
+
+// Six runs of about a second each (ten steps of 100 ms).
+constexpr const char* kSlowRuns = R"(
+algorithms: [{name: fault, params: {mode: slow, slow_ms: 100}}]
+problems: [{name: car-track, params: {w: 1, steps: 10}}]
+repetitions: 6
+)";
+
+TEST(MpiSweepTest, ThreeRanksStoreWhatALocalSweepWithTwoJobsStores) {
+  // ok, crashed, thrown, invalid and skipped runs, with their steps.
+  const std::string spec = testing::WriteFile("mpi_mixed.yaml", R"(
+algorithms: [hc4, bc4, {name: fault, params: {mode: [segfault, throw, garbage], after_calls: 2}}, particle-filter]
+problems: [chain, {name: car-track, params: {w: [1, 5], steps: 12}}]
+seeds: [1, 2]
+)");
+  const std::string mpi_dir = FreshDir("same_mpi"), local_dir = FreshDir("same_local");
+  const testing::Result mpi = testing::RunCommand(MpiCommand(3, "run " + spec + " --mpi --jobs 1 --out " + mpi_dir), "");
+  ASSERT_EQ(mpi.exit_code, 0) << mpi.out;
+  EXPECT_NE(mpi.out.find("on 2 worker ranks x 1 jobs"), std::string::npos) << mpi.out;
+  EXPECT_NE(mpi.out.find("rank 1)"), std::string::npos) << mpi.out;  // both ranks ran runs
+  EXPECT_NE(mpi.out.find("rank 2)"), std::string::npos) << mpi.out;
+  const testing::Result local =
+      testing::RunCommand(ICPBENCH_BINARY, "run " + spec + " --jobs 2 --out " + local_dir);
+  ASSERT_EQ(local.exit_code, 0) << local.out;
+  const std::vector<RunRecord> a = RunsByKey(mpi_dir, true), b = RunsByKey(local_dir, true);
+  ASSERT_EQ(a.size(), 36u);
+  ASSERT_EQ(a.size(), b.size());
+  int by_status[4] = {};
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a[i].spec.Key(), b[i].spec.Key());
+    ExpectSameButTimes(a[i], b[i]);
+    EXPECT_FALSE(a[i].provenance.machine.empty());
+    ++by_status[static_cast<int>(a[i].status)];
+  }
+  EXPECT_GT(by_status[static_cast<int>(RunStatus::kOk)], 0);
+  EXPECT_GT(by_status[static_cast<int>(RunStatus::kFailed)], 0);
+  EXPECT_GT(by_status[static_cast<int>(RunStatus::kSkipped)], 0);
+  EXPECT_FALSE(StepFilesLeft(mpi_dir));
+  // A rerun keeps the ok and skipped runs and retries the failed ones, as a
+  // local sweep does.
+  const int failed = by_status[static_cast<int>(RunStatus::kFailed)];
+  const testing::Result again = testing::RunCommand(MpiCommand(3, "run " + spec + " --mpi --jobs 1 --out " + mpi_dir), "");
+  EXPECT_EQ(again.exit_code, 0) << again.out;
+  EXPECT_NE(again.out.find("36 planned, " + std::to_string(36 - failed) + " already stored, 0 ok, " +
+                           std::to_string(failed) + " failed"),
+            std::string::npos)
+      << again.out;
+}
+
+TEST(MpiSweepTest, AKilledWorkerRanksRunInFlightGoesToAnotherRank) {
+  const std::string spec = testing::WriteFile("mpi_slow.yaml", kSlowRuns);
+  const std::string dir = FreshDir("killed_worker"), log = dir + ".log";
+  // --enable-recovery: Open MPI keeps the job when a rank dies.
+  const pid_t mpirun = Start(MpiCommand(3, "run " + spec + " --mpi --jobs 1 --rank-timeout 2 --out " + dir,
+                                        "--enable-recovery"),
+                             log);
+  ASSERT_TRUE(testing::WaitFor([&] { return ReadFile(log).find("[1/6]") != std::string::npos; }, 20))
+      << ReadFile(log);
+  const pid_t rank1 = RankProcess(mpirun, 1);
+  ASSERT_GT(rank1, 0);
+  kill(rank1, SIGKILL);
+  const int code = WaitExit(mpirun);
+  const std::string out = ReadFile(log);
+  EXPECT_EQ(code, 0) << out;
+  EXPECT_NE(out.find("rank 1 lost (nothing from it for 2 s): 1 of its 1 runs in flight go to other ranks"),
+            std::string::npos)
+      << out;
+  EXPECT_NE(out.find("6 planned, 0 already stored, 6 ok, 0 failed"), std::string::npos) << out;
+  // Every run exactly once: none replaced, none missing.
+  const std::vector<RunRecord> runs = RunsByKey(dir, true);
+  ASSERT_EQ(runs.size(), 6u);
+  for (const RunRecord& r : runs) {
+    EXPECT_EQ(r.status, RunStatus::kOk) << r.reason;
+    EXPECT_EQ(r.steps.size(), 10u);
+  }
+  EXPECT_TRUE(ResultsStore::OpenReadOnly(StorePath(dir))->Attempts().empty());
+  EXPECT_FALSE(StepFilesLeft(dir));
+}
+
+TEST(MpiSweepTest, AKilledRankZeroLeavesAStoreThatARerunCompletes) {
+  const std::string spec = testing::WriteFile("mpi_slow.yaml", kSlowRuns);
+  const std::string dir = FreshDir("killed_rank0"), log = dir + ".log";
+  const std::string command = MpiCommand(3, "run " + spec + " --mpi --jobs 1 --out " + dir);
+  const pid_t mpirun = Start(command, log);
+  ASSERT_TRUE(testing::WaitFor([&] { return ReadFile(log).find("[2/6]") != std::string::npos; }, 20))
+      << ReadFile(log);
+  const pid_t rank0 = RankProcess(mpirun, 0);
+  ASSERT_GT(rank0, 0);
+  kill(rank0, SIGKILL);
+  EXPECT_NE(WaitExit(mpirun), 0);  // Open MPI ends the job
+  const std::size_t kept = RunsByKey(dir, false).size();
+  EXPECT_GE(kept, 2u);
+  EXPECT_LT(kept, 6u);
+  const testing::Result rerun = testing::RunCommand(command, "");
+  ASSERT_EQ(rerun.exit_code, 0) << rerun.out;
+  EXPECT_NE(rerun.out.find("6 planned, " + std::to_string(kept) + " already stored, " +
+                           std::to_string(6 - kept) + " ok"),
+            std::string::npos)
+      << rerun.out;
+  const std::vector<RunRecord> runs = RunsByKey(dir, false);
+  ASSERT_EQ(runs.size(), 6u);
+  for (const RunRecord& r : runs) EXPECT_EQ(r.status, RunStatus::kOk) << r.reason;
+  EXPECT_FALSE(StepFilesLeft(dir));
+}
+
+TEST(MpiSweepTest, ABadSpecIsExitCodeTwoAndNamesTheError) {
+  const std::string spec = testing::WriteFile("mpi_bad.yaml", "algorithms: [no-such]\nproblems: [chain]\n");
+  const std::string dir = FreshDir("bad");
+  const testing::Result r = testing::RunCommand(MpiCommand(3, "run " + spec + " --mpi --out " + dir), "");
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find("unknown algorithm 'no-such'"), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(StorePath(dir)));
+}
+
+}  // namespace
+}  // namespace icp
