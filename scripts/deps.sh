@@ -9,6 +9,7 @@ packages=(
   libboost-iostreams-dev libboost-filesystem-dev libboost-system-dev
   libgtest-dev libgmock-dev libbenchmark-dev libmpfr-dev libgmp-dev
   gnuplot-nox libgnuplot-iostream-dev
+  libopenmpi-dev openmpi-bin  # run --mpi (a build without them has no --mpi)
   libmrpt-bayes-dev  # optional: the particle filter's cross-check against MRPT's
   clang libclang-rt-14-dev  # scripts/fuzz.sh: clang++ and its libFuzzer/ASan runtimes
   # icpbench paper: pdflatex (base; recommended for booktabs), latexmk, and
