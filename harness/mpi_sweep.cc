@@ -6,10 +6,12 @@
 #include <cerrno>
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <deque>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -140,18 +142,25 @@ void BroadcastSpec(int rank, std::string* text, std::string* error) {
 
 std::string RankName(int rank) { return "rank " + std::to_string(rank); }
 
-// Sleeps between polls while nothing happens: 50 us at first, so a message
-// is taken up quickly, doubling to 2 ms, so an idle rank costs no CPU.
+// The waits between polls while nothing happens: 50 us at first, so that a
+// message is taken up at once in a busy sweep, doubling to 10 ms, so that a
+// rank waiting on long runs takes next to no CPU from them (polling every
+// 2 ms cost 4 % of a 2-core machine). A run's result then waits at most
+// 10 ms for rank 0.
 class IdleBackoff {
  public:
   void Reset() { wait_ = kFirst; }
-  void Wait() {
-    std::this_thread::sleep_for(wait_);
-    wait_ = std::min(2 * wait_, kLast);
+  std::chrono::microseconds Next() {
+    const auto wait = wait_;
+    wait_ = std::min(2 * wait_, kLongest);
+    return wait;
   }
+  void Sleep() { std::this_thread::sleep_for(Next()); }
+  // The next wait in whole milliseconds, at least one (for poll()).
+  int NextMs() { return static_cast<int>(std::max<std::int64_t>(1, Next().count() / 1000)); }
 
  private:
-  static constexpr std::chrono::microseconds kFirst{50}, kLast{2000};
+  static constexpr std::chrono::microseconds kFirst{50}, kLongest{10000};
   std::chrono::microseconds wait_ = kFirst;
 };
 
@@ -190,12 +199,18 @@ class WorkerRank {
     IdleBackoff backoff;
     while (true) {
       if (StopSignals::Caught() != 0) return 128 + StopSignals::Caught();
-      pool_.Poll(2, [&](FinishedRun& f) {
-        SendResult(f);
-        sent = Clock::now();
-      });
-      Message m;
       bool idle = true;
+      // Waits on the workers (a finished one ends the wait), or sleeps.
+      if (pool_.Running() > 0) {
+        pool_.Poll(backoff.NextMs(), [&](FinishedRun& f) {
+          SendResult(f);
+          sent = Clock::now();
+          idle = false;
+        });
+      } else {
+        backoff.Sleep();
+      }
+      Message m;
       while (TryReceive(0, &m)) {
         idle = false;
         heard = Clock::now();
@@ -216,11 +231,7 @@ class WorkerRank {
         *peer_lost = true;
         return 3;
       }
-      if (!idle) {
-        backoff.Reset();
-      } else if (pool_.Running() == 0) {  // else Poll waited on the workers
-        backoff.Wait();
-      }
+      if (!idle) backoff.Reset();
     }
   }
 
@@ -351,7 +362,7 @@ class Dispatcher {
       if (sent || received) {
         backoff.Reset();
       } else {
-        backoff.Wait();
+        backoff.Sleep();
       }
     }
     interrupted_by_ = StopSignals::Caught();
@@ -577,20 +588,24 @@ MpiSweepResult RunMpiSweep(const std::string& spec_file, const RunnerOptions& op
   if (session.size() < 2)
     throw std::invalid_argument("--mpi needs at least 2 ranks (mpirun -n N, N >= 2): rank 0 dispatches, the "
                                 "others run");
+  // Rank 0 reads the spec; whatever it finds, the others learn it (else they
+  // would wait in the broadcast).
   std::string text, error;
+  std::optional<Spec> spec;
+  std::exception_ptr failure;
   if (session.rank() == 0) {
     try {
       text = ReadSpecText(spec_file);
-      ParseSpec(text, spec_file);
-    } catch (const SpecError& e) {
+      spec = ParseSpec(text, spec_file);
+    } catch (const std::exception& e) {
       error = e.what();
+      failure = std::current_exception();
     }
   }
   BroadcastSpec(session.rank(), &text, &error);
   MpiSweepResult result;
   if (session.rank() != 0) {
     if (!error.empty()) return {false, {}, 2};  // rank 0 says why
-    std::optional<Spec> spec;
     std::string spec_error;
     try {
       spec = ParseSpec(text, spec_file);
@@ -599,7 +614,12 @@ MpiSweepResult RunMpiSweep(const std::string& spec_file, const RunnerOptions& op
     }
     WorkerRank worker(session.rank(), spec ? &*spec : nullptr, options, mpi);
     bool peer_lost = false;
-    result.worker_exit_code = worker.Run(spec_error, &peer_lost);
+    try {
+      result.worker_exit_code = worker.Run(spec_error, &peer_lost);
+    } catch (...) {  // rank 0 will lose this rank: MPI_Finalize would wait on it
+      session.SkipFinalize();
+      throw;
+    }
     if (peer_lost) session.SkipFinalize();
     return result;
   }
@@ -613,15 +633,14 @@ MpiSweepResult RunMpiSweep(const std::string& spec_file, const RunnerOptions& op
       if (rank_lost) session.SkipFinalize();
     }
   } stop_workers{session, rank_lost};
-  if (!error.empty()) throw SpecError(error);
-  const Spec spec = ParseSpec(text, spec_file);
-  SweepRecorder recorder(spec, options, progress, terminal);
-  progress << "icpbench: " << spec.runs.size() << " runs in " << spec_file;
+  if (failure) std::rethrow_exception(failure);
+  SweepRecorder recorder(*spec, options, progress, terminal);
+  progress << "icpbench: " << spec->runs.size() << " runs in " << spec_file;
   if (options.shard_count > 1) progress << ", shard " << options.shard_index << "/" << options.shard_count;
   progress << ", " << recorder.queue().size() << " to run on " << session.size() - 1 << " worker ranks x "
            << options.jobs << " jobs, results in " << StorePath(options.out_dir) << "\n";
   result.dispatcher = true;
-  Dispatcher dispatcher(spec, session.size(), mpi, &recorder, progress, &rank_lost);
+  Dispatcher dispatcher(*spec, session.size(), mpi, &recorder, progress, &rank_lost);
   dispatcher.Run();
   result.summary = recorder.summary();
   result.summary.interrupted_by = dispatcher.interrupted_by();
