@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Measures the MPI sweep (icpbench run --mpi) on this machine:
-#  - the dispatcher: rank 0's busy time a run, dispatching (sending runs,
+#  - the dispatcher: rank 0's CPU time a run, dispatching (sending runs,
 #    receiving results) and storing apart, over a sweep of SHORT trivial
 #    runs (HC4 on chain) where the overhead is all there is; rank 0 prints
 #    both ("rank 0 per run: ...");
@@ -49,15 +49,17 @@ YAML
 for ((i = 0; i < reps; ++i)); do
   rm -rf "$work/out"
   timed "${mpirun[@]}" -n 3 "$bin" run "$work/short.yaml" --mpi --jobs 1 --out "$work/out" >>"$work/short_wall"
-  sed -n 's/.*rank 0 per run: \([0-9.]*\) ms dispatching, \([0-9.]*\) ms storing.*/\1 \2/p' "$work/log" >"$work/per_run"
+  sed -n 's/.*rank 0 per run: \([0-9.]*\) ms CPU dispatching, \([0-9.]*\) ms CPU storing.*/\1 \2/p' "$work/log" >"$work/per_run"
   cut -d' ' -f1 "$work/per_run" >>"$work/dispatch"
   cut -d' ' -f2 "$work/per_run" >>"$work/storing"
 done
 
-declare -A wall
-for setup in local1 local2 mpi1 mpi2; do
-  : >"$work/$setup"
-  for ((i = 0; i < reps; ++i)); do
+# The setups take turns within each repetition, so that a slower spell of
+# the machine falls on all of them.
+setups=(local1 local2 mpi1 mpi2)
+for setup in "${setups[@]}"; do : >"$work/$setup"; done
+for ((i = 0; i < reps; ++i)); do
+  for setup in "${setups[@]}"; do
     rm -rf "$work/out"
     case $setup in
       local1) timed "$bin" run "$work/cpu.yaml" --jobs 1 --out "$work/out" ;;
@@ -68,15 +70,16 @@ for setup in local1 local2 mpi1 mpi2; do
     [ "$setup" = mpi2 ] &&
       timed "${mpirun[@]}" -n 3 "$bin" run "$work/cpu.yaml" --mpi --jobs 1 --out "$work/out" >>"$work/fixed"
   done
-  wall[$setup]=$(median <"$work/$setup")
 done
+declare -A wall
+for setup in "${setups[@]}"; do wall[$setup]=$(median <"$work/$setup"); done
 
 echo "MPI sweep on $(nproc) cores, median of $reps; $short short runs, $cpu_runs CPU-bound runs"
 echo
 echo "| measure | value |"
 echo "|---|---|"
-printf '| rank 0 dispatching a run (busy time) | %.3f ms |\n' "$(median <"$work/dispatch")"
-printf '| rank 0 storing a run (busy time) | %.3f ms |\n' "$(median <"$work/storing")"
+printf '| rank 0 dispatching a run (CPU time) | %.3f ms |\n' "$(median <"$work/dispatch")"
+printf '| rank 0 storing a run (CPU time) | %.3f ms |\n' "$(median <"$work/storing")"
 printf '| %d short runs, 2 worker ranks (wall) | %.2f s |\n' "$short" "$(median <"$work/short_wall")"
 printf '| CPU-bound sweep, local --jobs 1 | %.2f s |\n' "${wall[local1]}"
 printf '| CPU-bound sweep, local --jobs 2 | %.2f s (%.2fx) |\n' "${wall[local2]}" "$(ratio "${wall[local1]}" "${wall[local2]}")"
