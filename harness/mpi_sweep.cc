@@ -152,16 +152,19 @@ void BroadcastSpec(int rank, std::string* text, std::string* error) {
 std::string RankName(int rank) { return "rank " + std::to_string(rank); }
 
 // The waits between polls while nothing happens: 50 us at first, so that a
-// message is taken up at once in a busy sweep, doubling to 10 ms, so that a
-// rank waiting on long runs takes next to no CPU from them (polling every
-// 2 ms cost 4 % of a 2-core machine). A run's result then waits at most
-// 10 ms for rank 0.
+// message is taken up at once in a busy sweep, doubling to `longest`, so
+// that a rank waiting on long runs takes next to no CPU from them (three
+// ranks polling every 2 ms took 4 % of a 2-core machine). Worker ranks wait
+// up to 10 ms (a finished run wakes them through its pipe); rank 0 up to
+// 1 ms, because a worker's result (a large message waits for the receiver)
+// and its next run wait on rank 0.
 class IdleBackoff {
  public:
+  explicit IdleBackoff(std::chrono::microseconds longest) : longest_(longest) {}
   void Reset() { wait_ = kFirst; }
   std::chrono::microseconds Next() {
     const auto wait = wait_;
-    wait_ = std::min(2 * wait_, kLongest);
+    wait_ = std::min(2 * wait_, longest_);
     return wait;
   }
   void Sleep() { std::this_thread::sleep_for(Next()); }
@@ -169,7 +172,8 @@ class IdleBackoff {
   int NextMs() { return static_cast<int>(std::max<std::int64_t>(1, Next().count() / 1000)); }
 
  private:
-  static constexpr std::chrono::microseconds kFirst{50}, kLongest{10000};
+  static constexpr std::chrono::microseconds kFirst{50};
+  std::chrono::microseconds longest_;
   std::chrono::microseconds wait_ = kFirst;
 };
 
@@ -205,7 +209,7 @@ class WorkerRank {
     Send(0, kReady, nlohmann::json{{"jobs", error.empty() ? jobs_ : 0}, {"error", error}}.dump());
     const StopSignals signals;
     Clock::time_point heard = Clock::now(), sent = heard;
-    IdleBackoff backoff;
+    IdleBackoff backoff(std::chrono::milliseconds(10));
     while (true) {
       if (StopSignals::Caught() != 0) return 128 + StopSignals::Caught();
       bool idle = true;
@@ -337,7 +341,7 @@ class Dispatcher {
   // Returns when every run is stored, a stop signal came, or no rank is left.
   void Run() {
     const StopSignals signals;
-    IdleBackoff backoff;
+    IdleBackoff backoff(std::chrono::milliseconds(1));
     while (StopSignals::Caught() == 0) {
       const double start = ThreadCpuSeconds();
       const bool sent = Dispatch();

@@ -173,7 +173,7 @@ TEST(MpiSweepTest, AKilledWorkerRanksRunInFlightGoesToAnotherRank) {
   const std::string spec = testing::WriteFile("mpi_slow.yaml", kSlowRuns);
   const std::string dir = FreshDir("killed_worker"), log = dir + ".log";
   // --enable-recovery: Open MPI keeps the job when a rank dies.
-  const pid_t mpirun = Start(MpiCommand(3, "run " + spec + " --mpi --jobs 1 --rank-timeout 2 --out " + dir,
+  const pid_t mpirun = Start(MpiCommand(3, "run " + spec + " --mpi --jobs 1 --rank-timeout 3 --out " + dir,
                                         "--enable-recovery"),
                              log);
   ASSERT_TRUE(testing::WaitFor([&] { return ReadFile(log).find("[1/6]") != std::string::npos; }, 20))
@@ -184,7 +184,7 @@ TEST(MpiSweepTest, AKilledWorkerRanksRunInFlightGoesToAnotherRank) {
   const int code = WaitExit(mpirun);
   const std::string out = ReadFile(log);
   EXPECT_EQ(code, 0) << out;
-  EXPECT_NE(out.find("rank 1 lost (nothing from it for 2 s): 1 of its 1 runs in flight go to other ranks"),
+  EXPECT_NE(out.find("rank 1 lost (nothing from it for 3 s): 1 of its 1 runs in flight go to other ranks"),
             std::string::npos)
       << out;
   EXPECT_NE(out.find("6 planned, 0 already stored, 6 ok, 0 failed"), std::string::npos) << out;
