@@ -24,6 +24,7 @@
 #include "harness/results_store.h"
 #include "harness/runner.h"
 #include "harness/solve_command.h"
+#include "harness/worker_pool.h"
 #include "harness/spec.h"
 #include "paper/paper.h"
 #include "plots/figures.h"
@@ -67,12 +68,13 @@ int main(int argc, char** argv) {
 
   std::string spec_file;
   icp::RunnerOptions run;
-  run.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  run.jobs = icp::UsableCpus();
   std::string shard = "0/1";
   CLI::App* run_cmd = app.add_subcommand("run", "run an experiment spec (YAML) into a results store");
   run_cmd->add_option("SPEC", spec_file, "experiment spec, e.g. specs/default.yaml")->required();
   run_cmd->add_option("--out,-o", run.out_dir, "output directory (default results/<spec name>)");
-  run_cmd->add_option("--jobs,-j", run.jobs, "runs in parallel (default: the number of cores)")
+  run_cmd->add_option("--jobs,-j", run.jobs,
+                      "runs in parallel (default: the cores this process may use; with --mpi, on each rank)")
       ->capture_default_str();
   run_cmd->add_option("--shard", shard,
                       "run only share i of n (i/n, 0-based) of the matrix; auto: this Slurm "
@@ -139,7 +141,7 @@ int main(int argc, char** argv) {
       if (run.jobs < 1) throw std::invalid_argument("--jobs must be at least 1");
       // More workers than this only share the cores and use up processes
       // and descriptors.
-      const int max_jobs = 4 * static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+      const int max_jobs = 4 * static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));  // all cores
       if (run.jobs > max_jobs) {
         std::cerr << "icpbench: note: --jobs " << run.jobs << " capped to " << max_jobs
                   << " (4 x the number of cores)\n";

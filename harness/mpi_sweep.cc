@@ -206,7 +206,13 @@ class WorkerRank {
     std::filesystem::create_directories(step_dir_, ec);
     if (error.empty() && ec)
       error = RankName(rank_) + " cannot create its step directory " + step_dir_.string() + ": " + ec.message();
-    Send(0, kReady, nlohmann::json{{"jobs", error.empty() ? jobs_ : 0}, {"error", error}}.dump());
+    Send(0, kReady,
+         nlohmann::json{{"jobs", error.empty() ? jobs_ : 0}, {"error", error}, {"machine", machine_}}.dump());
+    if (const int cpus = UsableCpus(); error.empty() && jobs_ > cpus)
+      std::fprintf(stderr,
+                   "icpbench: %s runs --jobs %d on %d CPU%s: mpirun bound it (mpirun --bind-to none lets "
+                   "its runs use the whole node)\n",
+                   RankName(rank_).c_str(), jobs_, cpus, cpus == 1 ? "" : "s");
     const StopSignals signals;
     Clock::time_point heard = Clock::now(), sent = heard;
     IdleBackoff backoff(std::chrono::milliseconds(10));
@@ -354,22 +360,23 @@ class Dispatcher {
                                std::to_string(queue_.size() + InFlight()) +
                                " runs not run (rerunning resumes)");
       }
-      bool received = false;
+      bool received = false, drained = false;
       Message m;
-      for (int i = 0; i < 64 && TryReceive(MPI_ANY_SOURCE, &m); ++i) {
+      for (int i = 0; i < 64; ++i) {
+        if (!TryReceive(MPI_ANY_SOURCE, &m)) {
+          drained = true;
+          break;
+        }
         received = true;
         Handle(m);
       }
-      const auto now = Clock::now();
       if (sent || received) busy_s_ += ThreadCpuSeconds() - start;
-      for (std::size_t r = 1; r < ranks_.size(); ++r) {
-        Rank& rank = ranks_[r];
-        if (rank.lost) continue;
-        if (Seconds(now - rank.sent) >= mpi_.heartbeat_s) {
-          if (!Send(static_cast<int>(r), kHeartbeat, "")) Lose(r, "a message to it failed");
-          rank.sent = now;
-        }
-        if (!rank.lost && Seconds(now - rank.heard) > mpi_.rank_timeout_s)
+      SendHeartbeats();
+      // Only with every waiting message taken: after a long store here, a
+      // live rank's heartbeats may still be queued.
+      const auto now = Clock::now();
+      for (std::size_t r = 1; r < ranks_.size() && drained; ++r) {
+        if (!ranks_[r].lost && Seconds(now - ranks_[r].heard) > mpi_.rank_timeout_s)
           Lose(r, "nothing from it for " + FormatDouble(mpi_.rank_timeout_s) + " s");
       }
       if (sent || received) {
@@ -416,6 +423,18 @@ class Dispatcher {
     return n;
   }
 
+  // To each live rank whose heartbeat is due (also while a long run is
+  // stored, so its rank does not take rank 0 for lost).
+  void SendHeartbeats() {
+    const auto now = Clock::now();
+    for (std::size_t r = 1; r < ranks_.size(); ++r) {
+      Rank& rank = ranks_[r];
+      if (rank.lost || Seconds(now - rank.sent) < mpi_.heartbeat_s) continue;
+      Send(static_cast<int>(r), kHeartbeat, "");  // a rank it cannot reach falls silent
+      rank.sent = now;
+    }
+  }
+
   // Sends runs to the ranks with room; returns whether it sent any.
   bool Dispatch() {
     bool sent = false;
@@ -449,7 +468,8 @@ class Dispatcher {
 
   void Store(const RunRecord& r, std::size_t index, const std::string& step_file, const std::string& where) {
     const double start = ThreadCpuSeconds();
-    recorder_->Record(r, spec_.runs[index].experiment, step_file, where, InFlightText());
+    recorder_->Record(r, spec_.runs[index].experiment, step_file, where, InFlightText(),
+                      [this] { SendHeartbeats(); });
     storing_s_ += ThreadCpuSeconds() - start;
   }
 
@@ -467,7 +487,13 @@ class Dispatcher {
       rank.ready = true;
       rank.jobs = j.is_object() ? j.value("jobs", 0) : 0;
       const std::string error = j.is_object() ? j.value("error", std::string("bad ready message")) : "bad ready message";
-      if (!error.empty()) messages_ << "icpbench: " << RankName(m.source) << " runs nothing: " << error << "\n";
+      if (!error.empty()) {
+        messages_ << "icpbench: " << RankName(m.source) << " runs nothing: " << error << "\n";
+      } else {
+        messages_ << "icpbench: " << RankName(m.source) << " on "
+                  << (j.is_object() ? j.value("machine", std::string("?")) : "?") << ": " << rank.jobs
+                  << " runs at a time\n";
+      }
       return;
     }
     std::size_t index = 0;
@@ -650,8 +676,8 @@ MpiSweepResult RunMpiSweep(const std::string& spec_file, const RunnerOptions& op
   SweepRecorder recorder(*spec, options, progress, terminal);
   progress << "icpbench: " << spec->runs.size() << " runs in " << spec_file;
   if (options.shard_count > 1) progress << ", shard " << options.shard_index << "/" << options.shard_count;
-  progress << ", " << recorder.queue().size() << " to run on " << session.size() - 1 << " worker ranks x "
-           << options.jobs << " jobs, results in " << StorePath(options.out_dir) << "\n";
+  progress << ", " << recorder.queue().size() << " to run on " << session.size() - 1
+           << " worker ranks, results in " << StorePath(options.out_dir) << "\n";
   result.dispatcher = true;
   Dispatcher dispatcher(*spec, session.size(), mpi, &recorder, progress, &rank_lost);
   dispatcher.Run();

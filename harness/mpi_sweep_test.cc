@@ -138,7 +138,9 @@ seeds: [1, 2]
   const std::string mpi_dir = FreshDir("same_mpi"), local_dir = FreshDir("same_local");
   const testing::Result mpi = testing::RunCommand(MpiCommand(3, "run " + spec + " --mpi --jobs 1 --out " + mpi_dir), "");
   ASSERT_EQ(mpi.exit_code, 0) << mpi.out;
-  EXPECT_NE(mpi.out.find("on 2 worker ranks x 1 jobs"), std::string::npos) << mpi.out;
+  EXPECT_NE(mpi.out.find("to run on 2 worker ranks"), std::string::npos) << mpi.out;
+  EXPECT_NE(mpi.out.find("rank 1 on "), std::string::npos) << mpi.out;  // its machine and jobs
+  EXPECT_NE(mpi.out.find(": 1 runs at a time"), std::string::npos) << mpi.out;
   EXPECT_NE(mpi.out.find("rank 1)"), std::string::npos) << mpi.out;  // both ranks ran runs
   EXPECT_NE(mpi.out.find("rank 2)"), std::string::npos) << mpi.out;
   const testing::Result local =

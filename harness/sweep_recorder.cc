@@ -110,7 +110,8 @@ SweepRecorder::SweepRecorder(const Spec& spec, const RunnerOptions& options, std
 }
 
 void SweepRecorder::Record(RunRecord r, const std::string& experiment, const std::string& step_file,
-                           const std::string& where, const std::string& in_flight) {
+                           const std::string& where, const std::string& in_flight,
+                           const std::function<void()>& while_storing) {
   r.spec_file = spec_file_ + (experiment.empty() ? "" : "#" + experiment);
   const std::string machine = r.provenance.machine;  // where it ran, when not here
   r.provenance = CurrentProvenance();
@@ -119,7 +120,14 @@ void SweepRecorder::Record(RunRecord r, const std::string& experiment, const std
     store_.Insert(r);
   } else {
     try {
-      store_.Insert(r, ReadStepFile(step_file, r.metrics.steps));
+      StepSource steps = ReadStepFile(step_file, r.metrics.steps);
+      if (while_storing) {
+        steps = [steps, &while_storing, read = 0](StepRecord* step) mutable {
+          if (++read % 4096 == 0) while_storing();
+          return steps(step);
+        };
+      }
+      store_.Insert(r, steps);
     } catch (const WorkerOutputError& e) {  // rolled back: stored as failed, without steps
       r.status = RunStatus::kFailed;
       r.reason = UnreadableWorkerOutput(e.what());

@@ -7,6 +7,7 @@
 
 #include <csignal>
 #include <deque>
+#include <functional>
 #include <iosfwd>
 #include <memory>
 #include <optional>
@@ -67,9 +68,11 @@ class SweepRecorder {
 
   // Stores a finished run, its steps read from step_file when one is given
   // (a step file that cannot be read stores the run as failed); `where` and
-  // `in_flight` go to the progress (Progress::Done).
+  // `in_flight` go to the progress (Progress::Done). while_storing is called
+  // every few thousand steps of a long run.
   void Record(RunRecord r, const std::string& experiment, const std::string& step_file = "",
-              const std::string& where = "", const std::string& in_flight = "");
+              const std::string& where = "", const std::string& in_flight = "",
+              const std::function<void()>& while_storing = {});
   // Records a run the spec marks as skipped (incompatible views).
   void RecordSkipped(const PlannedRun& run);
 

@@ -1,6 +1,7 @@
 #include "harness/worker_pool.h"
 
 #include <poll.h>
+#include <sched.h>
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <thread>
 #include <utility>
 
 #include "core/params.h"
@@ -97,6 +99,13 @@ void SetUpWorker(pid_t parent, double hard_limit_s, double memory_limit_mb) {
 }
 
 }  // namespace
+
+int UsableCpus() {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof set, &set) == 0 && CPU_COUNT(&set) > 0) return CPU_COUNT(&set);
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
 
 WorkerPool::WorkerPool(std::string step_dir, int jobs, double kill_grace_s, std::vector<int> close_in_workers)
     : step_dir_(std::move(step_dir)),

@@ -27,6 +27,10 @@ struct FinishedRun {
   std::string step_file;  // where its steps are; empty: none (record: runs, or the worker failed)
 };
 
+// The CPUs this process may run on (its affinity mask, which mpirun and
+// taskset narrow; workers inherit it): the default number of jobs.
+int UsableCpus();
+
 class WorkerPool {
  public:
   // Workers write their step files in step_dir and close close_in_workers
