@@ -56,13 +56,14 @@ enum Tag : int {
   kSteps = 3,      // worker -> 0: index \n a chunk of the run's step file
   kDone = 4,       // worker -> 0: index \n {"summary", "steps", "machine"}
   kHeartbeat = 5,  // both ways, empty
-  kStop = 6,       // 0 -> worker: no more runs; "lost" when a rank was lost
+  kStop = 6,       // 0 -> worker: no more runs; kNoFinalize after a loss or a signal
 };
 
-// The payload of kStop after a rank was lost: Open MPI 4.1's MPI_Finalize
-// can wait forever for a dead rank (its closing fence), so then no rank
-// calls it (mpirun --enable-recovery accepts that).
-constexpr std::string_view kRankLost = "lost";
+// The payload of kStop after a rank was lost or a stop signal came: Open
+// MPI 4.1's MPI_Finalize can wait forever for a dead rank (its closing
+// fence), and mpirun, stopping the job, would kill rank 0 in it before it
+// says what it kept; so then no rank calls it (mpirun accepts that).
+constexpr std::string_view kNoFinalize = "no-finalize";
 
 constexpr std::size_t kChunkBytes = 1 << 20;
 
@@ -234,7 +235,7 @@ class WorkerRank {
         idle = false;
         heard = Clock::now();
         if (m.tag == kStop) {
-          *peer_lost = m.bytes == kRankLost;
+          *peer_lost = m.bytes == kNoFinalize;
           return 0;
         }
         if (m.tag == kRun) StartRun(m.bytes);
@@ -663,15 +664,15 @@ MpiSweepResult RunMpiSweep(const std::string& spec_file, const RunnerOptions& op
     return result;
   }
   // However rank 0 leaves (done, an error, a signal), the workers stop.
-  bool rank_lost = false;
+  bool no_finalize = false;  // a rank was lost, or a stop signal came
   struct StopWorkers {
     MpiSession& session;
-    const bool& rank_lost;
+    const bool& no_finalize;
     ~StopWorkers() {
-      for (int r = 1; r < session.size(); ++r) Send(r, kStop, rank_lost ? std::string(kRankLost) : "");
-      if (rank_lost) session.SkipFinalize();
+      for (int r = 1; r < session.size(); ++r) Send(r, kStop, no_finalize ? std::string(kNoFinalize) : "");
+      if (no_finalize) session.SkipFinalize();
     }
-  } stop_workers{session, rank_lost};
+  } stop_workers{session, no_finalize};
   if (failure) std::rethrow_exception(failure);
   SweepRecorder recorder(*spec, options, progress, terminal);
   progress << "icpbench: " << spec->runs.size() << " runs in " << spec_file;
@@ -679,8 +680,9 @@ MpiSweepResult RunMpiSweep(const std::string& spec_file, const RunnerOptions& op
   progress << ", " << recorder.queue().size() << " to run on " << session.size() - 1
            << " worker ranks, results in " << StorePath(options.out_dir) << "\n";
   result.dispatcher = true;
-  Dispatcher dispatcher(*spec, session.size(), mpi, &recorder, progress, &rank_lost);
+  Dispatcher dispatcher(*spec, session.size(), mpi, &recorder, progress, &no_finalize);
   dispatcher.Run();
+  if (dispatcher.interrupted_by() != 0) no_finalize = true;
   result.summary = recorder.summary();
   result.summary.interrupted_by = dispatcher.interrupted_by();
   result.summary.stopped = dispatcher.InFlight();
