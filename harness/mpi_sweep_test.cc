@@ -1,7 +1,7 @@
 // `mpirun -n N icpbench run SPEC --mpi` (issue 12): the same store as a
 // local sweep, a killed worker rank costs only its runs in flight (handed to
-// another rank), a killed rank 0 leaves a store that a rerun completes, and
-// bad input is exit code 2 on every rank. Runs the icpbench binary under
+// another rank), a killed rank 0 or a SIGTERM to mpirun leaves a store that
+// a rerun completes, and bad input is exit code 2 on every rank. Runs the icpbench binary under
 // mpirun --oversubscribe (3 ranks on any machine).
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -224,6 +224,31 @@ TEST(MpiSweepTest, AKilledRankZeroLeavesAStoreThatARerunCompletes) {
   const std::vector<RunRecord> runs = RunsByKey(dir, false);
   ASSERT_EQ(runs.size(), 6u);
   for (const RunRecord& r : runs) EXPECT_EQ(r.status, RunStatus::kOk) << r.reason;
+  EXPECT_FALSE(StepFilesLeft(dir));
+}
+
+// Ctrl-C or scancel: mpirun passes SIGTERM on; rank 0 stops the runs in
+// flight, keeps the finished ones and says so, and a rerun runs the rest.
+TEST(MpiSweepTest, SigtermToMpirunKeepsTheFinishedRunsAndSaysSo) {
+  const std::string spec = testing::WriteFile("mpi_slow.yaml", kSlowRuns);
+  const std::string dir = FreshDir("sigterm"), log = dir + ".log";
+  const std::string command = MpiCommand(3, "run " + spec + " --mpi --jobs 1 --out " + dir);
+  const pid_t mpirun = Start(command, log);
+  ASSERT_TRUE(testing::WaitFor([&] { return ReadFile(log).find("[1/6]") != std::string::npos; }, 20))
+      << ReadFile(log);
+  kill(mpirun, SIGTERM);
+  EXPECT_NE(WaitExit(mpirun), 0);
+  const std::string out = ReadFile(log);
+  EXPECT_NE(out.find("runs in flight were stopped"), std::string::npos) << out;
+  const std::size_t kept = RunsByKey(dir, false).size();
+  EXPECT_NE(out.find(std::to_string(kept) + " finished runs kept"), std::string::npos) << out;
+  EXPECT_GE(kept, 1u);
+  EXPECT_LT(kept, 6u);
+  const testing::Result rerun = testing::RunCommand(command, "");
+  ASSERT_EQ(rerun.exit_code, 0) << rerun.out;
+  EXPECT_NE(rerun.out.find(std::to_string(kept) + " already stored, " + std::to_string(6 - kept) + " ok"),
+            std::string::npos)
+      << rerun.out;
   EXPECT_FALSE(StepFilesLeft(dir));
 }
 
