@@ -218,7 +218,7 @@ TEST(BinaryImageTest, NeverRemovesAPointOfTheSet) {
       for (int d = 0; d < 2; ++d) {
         // Each bound: the point itself, a random distance, a pixel edge on
         // the right side of the point, or infinite.
-        double lo, hi;
+        double lo = 0, hi = 0;  // both set below (clang cannot tell)
         const double origin = d == 0 ? frame.origin_x : frame.origin_y;
         for (int side = 0; side < 2; ++side) {
           const std::int64_t kind = UniformInt(rng, 0, 3);
