@@ -15,6 +15,9 @@
 // dies unless mpirun is given --enable-recovery; then rank 0 dies too and
 // the store is left as by a killed local sweep: rerunning resumes.) A
 // worker rank that hears nothing from rank 0 for rank_timeout_s stops.
+// SIGINT/SIGTERM (mpirun passes them on) stop the runs in flight as in a
+// local sweep. After a lost rank or a signal no rank calls MPI_Finalize
+// (Open MPI 4.1's can wait forever on a dead rank).
 #ifndef ICPBENCH_HARNESS_MPI_SWEEP_H_
 #define ICPBENCH_HARNESS_MPI_SWEEP_H_
 
