@@ -446,11 +446,7 @@ class Dispatcher {
         queue_.pop_front();
         const PlannedRun& run = spec_.runs[p.index];
         if (!run.skip_reason.empty()) {
-          RunRecord skipped;
-          skipped.spec = run.spec;
-          skipped.status = RunStatus::kSkipped;
-          skipped.reason = run.skip_reason;
-          Store(skipped, p.index, "", "rank 0");
+          Store(SweepRecorder::Skipped(run), p.index, "", "rank 0");
           continue;
         }
         if (!Send(static_cast<int>(r), kRun, WithIndex(p.index, run.spec.Key()))) {

@@ -121,6 +121,21 @@ bool StepFilesLeft(const std::string& dir) {
   return false;
 }
 
+// Runs the interrupted sweep's command again: it runs exactly the runs not
+// kept, and every run ends stored once, ok.
+void ExpectARerunRunsTheRest(const std::string& command, const std::string& dir, std::size_t kept) {
+  const testing::Result rerun = testing::RunCommand(command, "");
+  ASSERT_EQ(rerun.exit_code, 0) << rerun.out;
+  EXPECT_NE(rerun.out.find("6 planned, " + std::to_string(kept) + " already stored, " +
+                           std::to_string(6 - kept) + " ok"),
+            std::string::npos)
+      << rerun.out;
+  const std::vector<RunRecord> runs = RunsByKey(dir, false);
+  ASSERT_EQ(runs.size(), 6u);
+  for (const RunRecord& r : runs) EXPECT_EQ(r.status, RunStatus::kOk) << r.reason;
+  EXPECT_FALSE(StepFilesLeft(dir));
+}
+
 // Six runs of about a second each (ten steps of 100 ms).
 constexpr const char* kSlowRuns = R"(
 algorithms: [{name: fault, params: {mode: slow, slow_ms: 100}}]
@@ -215,16 +230,7 @@ TEST(MpiSweepTest, AKilledRankZeroLeavesAStoreThatARerunCompletes) {
   const std::size_t kept = RunsByKey(dir, false).size();
   EXPECT_GE(kept, 2u);
   EXPECT_LT(kept, 6u);
-  const testing::Result rerun = testing::RunCommand(command, "");
-  ASSERT_EQ(rerun.exit_code, 0) << rerun.out;
-  EXPECT_NE(rerun.out.find("6 planned, " + std::to_string(kept) + " already stored, " +
-                           std::to_string(6 - kept) + " ok"),
-            std::string::npos)
-      << rerun.out;
-  const std::vector<RunRecord> runs = RunsByKey(dir, false);
-  ASSERT_EQ(runs.size(), 6u);
-  for (const RunRecord& r : runs) EXPECT_EQ(r.status, RunStatus::kOk) << r.reason;
-  EXPECT_FALSE(StepFilesLeft(dir));
+  ExpectARerunRunsTheRest(command, dir, kept);
 }
 
 // Ctrl-C or scancel: mpirun passes SIGTERM on; rank 0 stops the runs in
@@ -244,12 +250,7 @@ TEST(MpiSweepTest, SigtermToMpirunKeepsTheFinishedRunsAndSaysSo) {
   EXPECT_NE(out.find(std::to_string(kept) + " finished runs kept"), std::string::npos) << out;
   EXPECT_GE(kept, 1u);
   EXPECT_LT(kept, 6u);
-  const testing::Result rerun = testing::RunCommand(command, "");
-  ASSERT_EQ(rerun.exit_code, 0) << rerun.out;
-  EXPECT_NE(rerun.out.find(std::to_string(kept) + " already stored, " + std::to_string(6 - kept) + " ok"),
-            std::string::npos)
-      << rerun.out;
-  EXPECT_FALSE(StepFilesLeft(dir));
+  ExpectARerunRunsTheRest(command, dir, kept);
 }
 
 TEST(MpiSweepTest, ABadSpecIsExitCodeTwoAndNamesTheError) {

@@ -27,9 +27,8 @@ class Progress {
   void InFlight(const SweepSummary& s, const std::string& in_flight);
   void Finish();
 
-  static std::string FormatSeconds(double s);
-
  private:
+  static std::string FormatSeconds(double s);
   void DrawBar(const SweepSummary& s, const std::string& in_flight);
   std::string Eta() const;
   std::ostream& out_;

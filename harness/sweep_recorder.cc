@@ -144,12 +144,14 @@ void SweepRecorder::Record(RunRecord r, const std::string& experiment, const std
   progress_->Done(r, summary_, where, in_flight);
 }
 
-void SweepRecorder::RecordSkipped(const PlannedRun& run) {
+void SweepRecorder::RecordSkipped(const PlannedRun& run) { Record(Skipped(run), run.experiment); }
+
+RunRecord SweepRecorder::Skipped(const PlannedRun& run) {
   RunRecord r;
   r.spec = run.spec;
   r.status = RunStatus::kSkipped;
   r.reason = run.skip_reason;
-  Record(r, run.experiment);
+  return r;
 }
 
 }  // namespace icp

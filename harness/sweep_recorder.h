@@ -75,6 +75,8 @@ class SweepRecorder {
               const std::function<void()>& while_storing = {});
   // Records a run the spec marks as skipped (incompatible views).
   void RecordSkipped(const PlannedRun& run);
+  // The record of such a run.
+  static RunRecord Skipped(const PlannedRun& run);
 
  private:
   std::string out_dir_;
