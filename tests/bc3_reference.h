@@ -1,8 +1,8 @@
 // A frozen copy of BC3's bound search as it was before issue 11 (commit
 // 37cacc2: one edge test on the original domain, then Newton + bisection down
-// to epsilon, every evaluation over the whole tape). Test-only: the identity
-// suite (tests/bc3_identity_test.cc) checks that the optimized BoxNarrower
-// gives the same bounds, bit for bit. Do not optimize this file.
+// to epsilon, every evaluation over the whole tape). Test-only: the search
+// suite (tests/bc3_search_test.cc) checks the BoxNarrower that stops at the
+// first consistent edge against it. Do not optimize this file.
 #ifndef ICPBENCH_TESTS_BC3_REFERENCE_H_
 #define ICPBENCH_TESTS_BC3_REFERENCE_H_
 

@@ -24,7 +24,7 @@ bool BoxNarrower::Small(const Interval& j) const {
 }
 
 bool BoxNarrower::Consistent(const Tape& tape, int var, const Interval& j) {
-  return !Intersect(tape.ForwardUnivariate(dependent_, j, slots_), tape.range()).IsEmpty();
+  return !Intersect(tape.ForwardUnivariate(dependent_, j, *slots_), tape.range()).IsEmpty();
 }
 
 Interval BoxNarrower::Newton(const Tape& tape, int var, Interval j, WorkCounters& work) {
@@ -35,14 +35,20 @@ Interval BoxNarrower::Newton(const Tape& tape, int var, Interval j, WorkCounters
     // Mean value form: f(t) - f(m) = f'(xi) (t - m), with f(t) in range. The
     // derivative comes from the slots of the evaluation on j, before the
     // evaluation at m overwrites them.
-    const Interval derivative = tape.DerivativeUnivariate(dependent_, slots_, dslots_);
+    if (!dslots_zeroed_) {  // the derivatives of the slots that do not depend on var
+      dslots_.assign(tape.size(), Interval(0.0));
+      dslots_zeroed_ = true;
+    }
+    const Interval derivative = tape.DerivativeUnivariate(dependent_, *slots_, dslots_);
     const double m = j.Mid();
-    Interval fm = tape.ForwardUnivariate(dependent_, Interval(m), slots_);
+    Interval fm = tape.ForwardUnivariate(dependent_, Interval(m), *slots_);
     if (fm.IsEmpty()) return j;  // f undefined at m: no Newton step
     Interval next = Interval(m) + DivideRelational(j - Interval(m), tape.range() - fm, derivative);
     next = Intersect(j, next);
     if (next.IsEmpty()) return next;
-    const bool progress = next.Width() < 0.9 * j.Width();
+    // A point derivative means f is affine on j: the step was exact up to
+    // rounding, and another would gain at most an ulp.
+    const bool progress = next.Width() < 0.9 * j.Width() && derivative.lo() != derivative.hi();
     j = next;
     if (!progress) break;
   }
@@ -62,7 +68,7 @@ std::optional<double> BoxNarrower::OuterBound(const Tape& tape, int var, const I
                              : Interval(std::max(j.lo(), b - slice), b);
     return Consistent(tape, var, edge);
   };
-  // Fast path: the bound is already a quasi-zero (the usual case at a fixpoint).
+  // The bound is already a quasi-zero: the usual case at a fixpoint.
   if (edge_consistent(x)) return outer(x);
   stack_.clear();
   stack_.push_back(x);
@@ -72,7 +78,9 @@ std::optional<double> BoxNarrower::OuterBound(const Tape& tape, int var, const I
     stack_.pop_back();
     j = Newton(tape, var, j, work);
     if (j.IsEmpty()) continue;
-    if (Small(j)) return outer(j);
+    // The first piece whose edge can hold a solution gives the bound: refining
+    // inside it would move the bound by less than a slice.
+    if (Small(j) || edge_consistent(j)) return outer(j);
     if (bisections >= max_bisections_) {
       // Out of budget: every remaining piece may hold a solution.
       double bound = outer(j);
@@ -96,31 +104,40 @@ std::optional<double> BoxNarrower::OuterBound(const Tape& tape, int var, const I
   return std::nullopt;
 }
 
-bool BoxNarrower::Narrow(const Tape& tape, int var, Box& box, WorkCounters& work) {
-  // Only var changes during the search: the slots that do not depend on it
-  // are evaluated once here.
-  if (!tape.PrepareUnivariate(box, var, slots_, dslots_)) return false;
+bool BoxNarrower::Narrow(const Tape& tape, int var, Box& box, std::vector<Interval>& slots,
+                         WorkCounters& work) {
+  // Only var changes during the search: the other slots keep their values
+  // from the caller's Forward, and only the dependent ones are swept.
+  slots_ = &slots;
   dependent_ = tape.DependentSlots(var);
+  dslots_zeroed_ = false;
+  saved_.resize(dependent_.size());
+  for (std::size_t i = 0; i < dependent_.size(); ++i) saved_[i] = slots[dependent_[i]];
   const Interval x = box[var];
   std::optional<double> lo = OuterBound(tape, var, x, true, work);
   if (!lo) return false;
   std::optional<double> hi = OuterBound(tape, var, Interval(*lo, x.hi()), false, work);
   if (!hi) return false;
   box[var] = Interval(*lo, *hi);
-  return true;
+  // Leave slots as a Forward on the narrowed box.
+  if (box[var] == x) {
+    for (std::size_t i = 0; i < dependent_.size(); ++i) slots[dependent_[i]] = saved_[i];
+    return true;
+  }
+  return !tape.ForwardUnivariate(dependent_, box[var], slots).IsEmpty();
 }
 
 BC3Contractor::BC3Contractor(std::shared_ptr<const CompiledSystem> system, const BC3Params& params)
     : PropagationContractor(std::move(system), params.ratio, params.max_revise_calls),
-      narrower_(params.epsilon, params.max_bisections) {}
+      narrower_(params.epsilon, params.max_bisections),
+      slots_(this->system().max_tape_size()) {}
 
 bool BC3Contractor::Revise(int c, Box& box, WorkCounters& work, bool*) {
   const Tape& tape = system().tape(c);
-  if (tape.variables().empty()) {  // a constant constraint (1 = 2): just test it
-    return !Intersect(tape.Forward(box, scratch_), tape.range()).IsEmpty();
-  }
+  const Interval root = tape.Forward(box, slots_);
+  if (Intersect(root, tape.range()).IsEmpty()) return false;
   for (int v : tape.variables())
-    if (!narrower_.Narrow(tape, v, box, work)) return false;
+    if (!narrower_.Narrow(tape, v, box, slots_, work)) return false;
   return true;
 }
 

@@ -3,9 +3,11 @@
 // kept as intervals, the constraint becomes univariate in x; the left bound of
 // x moves to the leftmost "quasi-zero" (a slice of relative width `epsilon`
 // on which the constraint's interval extension can hold) and the right bound
-// to the rightmost one. Slices are found by bisection, each slice first
+// to the rightmost one. Slices are found by bisection, each piece first
 // narrowed by the univariate interval Newton operator with the derivative
-// computed on the tape. Pairs are propagated with the AC3-like queue.
+// computed on the tape, and the search stops at the first piece whose edge
+// slice is consistent (BC3revise's LNAR/RNAR; RealPaver's shrink). Pairs are
+// propagated with the AC3-like queue.
 //
 // Sound: slices are removed only when the interval extension proves them
 // solution-free. Not affected by multiple occurrences the way HC4 is
@@ -45,9 +47,13 @@ class BoxNarrower {
  public:
   BoxNarrower(double epsilon, int max_bisections)
       : epsilon_(epsilon), max_bisections_(max_bisections) {}
-  // Narrows box[var] to its outermost quasi-zeros of tape. Returns false if
-  // there is none (no solution in box).
-  bool Narrow(const Tape& tape, int var, Box& box, WorkCounters& work);
+  // Narrows box[var] to its outermost quasi-zeros of tape. slots must hold
+  // tape.Forward(box): the slots that do not depend on var are read from it,
+  // and it is left as a Forward on the narrowed box, so that the variables of
+  // one constraint are narrowed in turn after one evaluation. Returns false
+  // if there is no quasi-zero (no solution in box).
+  bool Narrow(const Tape& tape, int var, Box& box, std::vector<Interval>& slots,
+              WorkCounters& work);
 
  private:
   // Where the constraint can hold on x = j (interval extension test).
@@ -62,8 +68,11 @@ class BoxNarrower {
 
   double epsilon_;
   int max_bisections_;
-  std::vector<Interval> slots_, dslots_;
+  std::vector<Interval>* slots_ = nullptr;  // the caller's, during Narrow
+  std::vector<Interval> dslots_;
+  bool dslots_zeroed_ = false;      // the independent slots' derivatives set to 0
   std::span<const int> dependent_;  // the tape's slots that depend on the narrowed variable
+  std::vector<Interval> saved_;     // the dependent slots on entry to Narrow
   std::vector<Interval> stack_;
 };
 
@@ -77,7 +86,7 @@ class BC3Contractor : public PropagationContractor {
 
  private:
   BoxNarrower narrower_;
-  std::vector<Interval> scratch_;
+  std::vector<Interval> slots_;
 };
 
 std::unique_ptr<Contractor> MakeBC3(const ParamMap& params, const ConstraintSystem& csp);

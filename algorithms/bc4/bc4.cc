@@ -20,8 +20,10 @@ bool BC4Contractor::Revise(int c, Box& box, WorkCounters& work, bool* idempotent
   // (where it is idempotent too; with multiple occurrences BC3 narrowing
   // follows and nothing is claimed).
   if (!tape.Revise(box, slots_, multiple_[c].empty() ? idempotent : nullptr)) return false;
+  if (multiple_[c].empty()) return true;
+  if (tape.Forward(box, slots_).IsEmpty()) return false;
   for (int v : multiple_[c])
-    if (!narrower_.Narrow(tape, v, box, work)) return false;
+    if (!narrower_.Narrow(tape, v, box, slots_, work)) return false;
   return true;
 }
 
