@@ -92,26 +92,6 @@ std::span<const int> Tape::DependentSlots(int var) const {
                               dependent_begin_[i + 1] - dependent_begin_[i]);
 }
 
-bool Tape::PrepareUnivariate(const Box& box, int var, std::vector<Interval>& slots,
-                             std::vector<Interval>& dslots) const {
-  if (slots.size() < code_.size()) slots.resize(code_.size());
-  if (dslots.size() < code_.size()) dslots.resize(code_.size());
-  std::span<const int> dependent = DependentSlots(var);
-  auto next = dependent.begin();
-  const int n = size();
-  for (int s = 0; s < n; ++s) {
-    if (next != dependent.end() && *next == s) {  // swept by ForwardUnivariate
-      ++next;
-      continue;
-    }
-    // As ForwardWithDerivative, on the slots whose operands are all
-    // independent (their derivatives are 0).
-    EvalWithDerivative(s, box, var, slots, dslots);
-    if (slots[s].IsEmpty()) return false;
-  }
-  return true;
-}
-
 Interval Tape::ForwardUnivariate(std::span<const int> dependent, const Interval& x,
                                  std::vector<Interval>& slots) const {
   if (x.IsEmpty()) return Interval::Empty();

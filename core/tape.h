@@ -40,21 +40,17 @@ class Tape {
   Interval ForwardWithDerivative(const Box& box, int var, std::vector<Interval>& slots,
                                  std::vector<Interval>& dslots, Interval* derivative) const;
   // Incremental evaluation for a univariate search over variable var (BC3's
-  // bound search), where only var's value changes between evaluations:
-  // PrepareUnivariate evaluates, once, the slots that do not depend on var
-  // (values, and derivatives with respect to var, exactly as
-  // ForwardWithDerivative computes them); ForwardUnivariate and
-  // DerivativeUnivariate then sweep only DependentSlots(var). The results are
-  // those of Forward and ForwardWithDerivative on box with var set to x, bit
-  // for bit. PrepareUnivariate returns false when a slot that does not depend
-  // on var is empty: every evaluation on box is then empty.
-  bool PrepareUnivariate(const Box& box, int var, std::vector<Interval>& slots,
-                         std::vector<Interval>& dslots) const;
+  // bound search), where only var's value changes between evaluations: after
+  // a Forward on the box, ForwardUnivariate and DerivativeUnivariate sweep
+  // only DependentSlots(var); the other slots keep their values, and their
+  // derivatives with respect to var are 0 (the caller's dslots must hold 0
+  // there). The results are those of Forward and ForwardWithDerivative on
+  // the box with var set to x, bit for bit.
   // The slots that depend on var (its own and every operation above them),
   // ascending; empty if var does not occur.
   std::span<const int> DependentSlots(int var) const;
   // The root's enclosure with var = x; dependent = DependentSlots(var), and
-  // slots as left by PrepareUnivariate on var (and any ForwardUnivariate since).
+  // slots as left by Forward (and any ForwardUnivariate on var since).
   Interval ForwardUnivariate(std::span<const int> dependent, const Interval& x,
                              std::vector<Interval>& slots) const;
   // The derivative's enclosure at the last ForwardUnivariate, which must have
