@@ -91,28 +91,46 @@ class RecordingHC4 : public Contractor {
   std::vector<std::vector<int>>* told_;
 };
 
-// The inner contractor is any Contractor, told through the context that only
-// the shaved variable changed; wrapping HC4 changes nothing in the result.
-TEST(ThreeBTest, TellsAnyInnerContractorWhichVariableChanged) {
+// The inner contractor is any Contractor, told through the context which
+// variables changed: only the shaved one for a cold trial and a spread, the
+// shaved one among others for a warm start; wrapping HC4 changes nothing in
+// the result.
+TEST(ThreeBTest, TellsAnyInnerContractorWhichVariablesChanged) {
   ChainParams p;
   p.w = 4;
   Step step = MakeChainStep(p, 1);
-  std::vector<std::vector<int>> told;
-  ThreeBContractor three_b("3b-recording", std::make_unique<RecordingHC4>(step.views.csp->csp, &told),
-                           ShavingParams());
-  Box box = step.views.csp->csp.domains();
-  ContractContext context;
-  ContractSummary s = three_b.Contract(box, context);
-  EXPECT_EQ(box, RunAlgorithm("3b-hc4", step.views.csp->csp));
-  ASSERT_EQ(static_cast<std::int64_t>(told.size()), s.work.inner_calls);
-  EXPECT_EQ(told[0], std::vector<int>{-1});
-  std::vector<char> shaved(box.size(), 0);
-  for (std::size_t k = 1; k < told.size(); ++k) {
-    ASSERT_EQ(told[k].size(), 1u) << "call " << k;
-    ASSERT_GE(told[k][0], 0) << "call " << k;
-    shaved[told[k][0]] = 1;
+  for (bool warm_start : {false, true}) {
+    SCOPED_TRACE(warm_start ? "warm starts" : "cold trials");
+    std::vector<std::vector<int>> told;
+    ShavingParams params;
+    params.warm_start = warm_start;
+    ThreeBContractor three_b("3b-recording",
+                             std::make_unique<RecordingHC4>(step.views.csp->csp, &told), params);
+    Box box = step.views.csp->csp.domains();
+    ContractContext context;
+    ContractSummary s = three_b.Contract(box, context);
+    EXPECT_EQ(box, RunAlgorithm("3b-hc4", step.views.csp->csp,
+                                {{"warm_start", warm_start ? "true" : "false"}}));
+    ASSERT_EQ(static_cast<std::int64_t>(told.size()), s.work.inner_calls);
+    EXPECT_EQ(told[0], std::vector<int>{-1});
+    std::vector<char> shaved(box.size(), 0);
+    int several = 0;
+    for (std::size_t k = 1; k < told.size(); ++k) {
+      ASSERT_FALSE(told[k].empty()) << "call " << k;
+      for (int v : told[k]) {
+        ASSERT_TRUE(v >= 0 && v < static_cast<int>(box.size())) << "call " << k;
+      }
+      if (!warm_start) {
+        ASSERT_EQ(told[k].size(), 1u) << "call " << k;
+      }
+      several += told[k].size() > 1;
+      for (int v : told[k]) shaved[v] = 1;
+    }
+    EXPECT_EQ(std::count(shaved.begin(), shaved.end(), 1), static_cast<int>(box.size()));
+    if (warm_start) {
+      EXPECT_GT(several, 0);
+    }
   }
-  EXPECT_EQ(std::count(shaved.begin(), shaved.end(), 1), static_cast<int>(box.size()));
 }
 
 // An inner contractor that ignores the changed variables (HC3 starts afresh at
@@ -140,6 +158,33 @@ TEST(ThreeBTest, TighterThanBC4OnChainWindowsAndSound) {
     Box bc4 = RunAlgorithm("bc4", step.views.csp->csp);
     ASSERT_TRUE(three_b.Contains(step.csp_truth)) << "seed " << seed;
     EXPECT_TRUE(three_b.IsSubsetOf(bc4)) << "seed " << seed;
+  }
+}
+
+// Warm starts (a trial starting from the same bound's previous trial) keep
+// the truth, save most of the later rounds' revisions, and on these car-track
+// windows give the boxes of cold trials bit for bit (the golden drive pins
+// the same for a whole 300-step run: tests/car_track_golden_test.cc).
+TEST(ThreeBTest, WarmStartsKeepTheBoxesOfColdTrialsWithFewerRevisions) {
+  for (bool heading_known : {false, true}) {
+    for (std::uint64_t seed = 0; seed < 4; ++seed) {
+      ChainParams p;
+      p.heading_known = heading_known;
+      Step step = MakeChainStep(p, seed);
+      const ConstraintSystem& csp = step.views.csp->csp;
+      const AlgorithmInfo& info = FindAlgorithm("3b-bc4");
+      Box warm = csp.domains(), cold = csp.domains();
+      ContractContext warm_context, cold_context;
+      const ContractSummary w = info.contractor({}, csp)->Contract(warm, warm_context);
+      const ContractSummary c =
+          info.contractor({{"warm_start", "false"}}, csp)->Contract(cold, cold_context);
+      SCOPED_TRACE(testing::Message() << "seed " << seed << ", heading known " << heading_known);
+      ASSERT_TRUE(warm.Contains(step.csp_truth));
+      ASSERT_TRUE(cold.Contains(step.csp_truth));
+      EXPECT_EQ(warm, cold);
+      EXPECT_EQ(w.work.inner_calls, c.work.inner_calls);
+      EXPECT_LT(w.work.revise_calls, c.work.revise_calls);
+    }
   }
 }
 
