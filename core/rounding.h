@@ -52,16 +52,6 @@ inline double StepUp(double x, int ulps) {
 }
 inline double StepDown(double x, int ulps) { return -StepUp(-x, ulps); }
 
-// x if !up, else the next double above x, without a branch on up (whose
-// value, the sign of a rounding error, is unpredictable). x must be finite
-// and nonzero, or up false.
-inline double NextUpIf(double x, bool up) {
-  const auto bits = std::bit_cast<std::int64_t>(x);
-  const std::int64_t step = up;
-  const std::int64_t sign = bits >> 63;  // 0, or -1 for a negative x
-  return std::bit_cast<double>(bits + ((step ^ sign) - sign));
-}
-
 // Below this magnitude an FMA residual may underflow and no longer be exact;
 // results there are widened by one ulp unconditionally.
 inline constexpr double kResidualExactThreshold = 0x1p-960;
@@ -84,8 +74,7 @@ struct ExactRounding {
       const double y_part = s - x;
       const double x_part = s - y_part;
       const double err = (x - x_part) + (y - y_part);
-      // s == 0 only when x + y == 0 exactly, with err == 0.
-      return NextUpIf(s, err > 0);
+      return err > 0 ? NextUp(s) : s;
     }
     double s = x + y;
     if (std::isnan(s)) return kInf;              // inf + -inf: no information
@@ -115,7 +104,7 @@ struct ExactRounding {
     }
     if (std::fabs(p) < kResidualExactThreshold) return NextUp(p);
     double err = std::fma(x, y, -p);             // exact: x * y = p + err
-    return NextUpIf(p, err > 0);                 // p != 0 here
+    return err > 0 ? NextUp(p) : p;
   }
 
   double div_down(double x, double y) { return -div_up(-x, y); }
@@ -133,9 +122,8 @@ struct ExactRounding {
         std::fabs(x) < kResidualExactThreshold)
       return NextUp(q);
     double r = std::fma(-q, y, x);               // exact: x = q * y + r
-    // x / y - q = r / y: positive when r and y have the same sign (q != 0:
-    // x != 0 and q is not tiny).
-    return NextUpIf(q, (r > 0 && y > 0) | (r < 0 && y < 0));
+    // x / y - q = r / y: positive when r and y have the same sign.
+    return (r > 0 && y > 0) || (r < 0 && y < 0) ? NextUp(q) : q;
   }
 
   double sqrt_down(double x) {
@@ -144,7 +132,7 @@ struct ExactRounding {
     if (std::isinf(s)) return s == kInf ? std::numeric_limits<double>::max() : s;
     if (x < kResidualExactThreshold) return NextDown(s);
     double r = std::fma(-s, s, x);               // exact: x = s * s + r
-    return -NextUpIf(-s, r < 0);                 // s > 0 here
+    return r < 0 ? NextDown(s) : s;
   }
   double sqrt_up(double x) {
     if (x <= 0) return 0;
@@ -152,7 +140,7 @@ struct ExactRounding {
     if (std::isinf(s)) return s;
     if (x < kResidualExactThreshold) return NextUp(s);
     double r = std::fma(-s, s, x);
-    return NextUpIf(s, r > 0);
+    return r > 0 ? NextUp(s) : s;
   }
 
   double median(double x, double y) { return x / 2 + y / 2; }
