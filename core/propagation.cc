@@ -95,6 +95,7 @@ PropagationContractor::PropagationContractor(std::shared_ptr<const CompiledSyste
                    max_revise_calls) {}
 
 ContractSummary PropagationContractor::Contract(Box& box, ContractContext& context) {
+  incremental_ = !context.all_changed();
   return propagation_.Run(box, context, *this);
 }
 

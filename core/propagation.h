@@ -85,9 +85,17 @@ class PropagationContractor : public Contractor, protected Revisers {
   const CompiledSystem& system() const { return *system_; }
   const std::shared_ptr<const CompiledSystem>& shared_system() const { return system_; }
 
+ protected:
+  // True during a contraction told which few variables changed (3B's
+  // trials): the same constraints are then revised over and over with most
+  // of their variables unchanged, and Tape::ReviseIncremental pays off; a
+  // fresh contraction revises each constraint a few times only.
+  bool incremental() const { return incremental_; }
+
  private:
   std::shared_ptr<const CompiledSystem> system_;
   Propagation propagation_;
+  bool incremental_ = false;
 };
 
 }  // namespace icp

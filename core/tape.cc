@@ -1,6 +1,8 @@
 #include "core/tape.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <map>
 #include <stdexcept>
 
@@ -57,6 +59,11 @@ Tape::Tape(const ExprGraph& graph, const Constraint& constraint) : range_(constr
     occurrences_.push_back(count);
     if (count > 1) idempotent_when_bounded_ = false;
   }
+  variable_position_.assign(code_.size(), -1);
+  for (int s = 0; s < size(); ++s)
+    if (code_[s].op == Op::kVar)
+      variable_position_[s] = static_cast<int>(
+          std::lower_bound(variables_.begin(), variables_.end(), code_[s].n) - variables_.begin());
   // Dependent slots: a slot depends on var if an operand does (ids are
   // topologically ordered, so one upward pass per variable).
   std::vector<char> depends(code_.size());
@@ -237,6 +244,80 @@ bool Tape::Revise(Box& box, std::vector<Interval>& slots, bool* idempotent) cons
   } else {
     if (Forward(box, slots).IsEmpty()) return false;
     if (idempotent) *idempotent = false;
+  }
+  return Backward(box, slots);
+}
+
+namespace {
+// Bit for bit: -0 and +0 can give different results (1 / x).
+bool SameBits(const Interval& a, const Interval& b) {
+  return std::bit_cast<std::uint64_t>(a.lo()) == std::bit_cast<std::uint64_t>(b.lo()) &&
+         std::bit_cast<std::uint64_t>(a.hi()) == std::bit_cast<std::uint64_t>(b.hi());
+}
+}  // namespace
+
+Interval Tape::ForwardIncremental(const Box& box, ForwardMemory& memory,
+                                  std::vector<Interval>& slots) const {
+  const int n = size();
+  const int num_vars = static_cast<int>(variables_.size());
+  constexpr int kStackSlots = 256;
+  if (slots.size() < code_.size()) slots.resize(code_.size());
+  if (memory.slots_.size() != code_.size() || n > kStackSlots) {
+    memory.slots_.resize(code_.size());
+    memory.inputs_.resize(variables_.size());
+    if (Forward(box, memory.slots_).IsEmpty()) {
+      memory.slots_.clear();
+      return Interval::Empty();
+    }
+    for (int i = 0; i < num_vars; ++i) memory.inputs_[i] = box[variables_[i]];
+  } else {
+    char variable_changed[kStackSlots];
+    bool any = false;
+    for (int i = 0; i < num_vars; ++i) {
+      const Interval& x = box[variables_[i]];
+      variable_changed[i] = !SameBits(x, memory.inputs_[i]);
+      if (variable_changed[i]) {
+        any = true;
+        memory.inputs_[i] = x;
+      }
+    }
+    if (any) {
+      char dirty[kStackSlots];
+      for (int s = 0; s < n; ++s) {
+        const TapeInstr& in = code_[s];
+        Interval& z = memory.slots_[s];
+        if (in.op == Op::kConst) {
+          dirty[s] = 0;
+          continue;
+        }
+        if (in.op == Op::kVar) {
+          dirty[s] = variable_changed[variable_position_[s]];
+          if (dirty[s]) z = box[in.n];
+        } else {
+          const int b = in.b >= 0 ? in.b : in.a;
+          dirty[s] = dirty[in.a] | dirty[b];
+          if (dirty[s]) z = EvalOp(in.op, memory.slots_[in.a], memory.slots_[b], in.n);
+        }
+        if (dirty[s] && z.IsEmpty()) {
+          memory.slots_.clear();
+          return Interval::Empty();
+        }
+      }
+    }
+  }
+  std::copy(memory.slots_.begin(), memory.slots_.end(), slots.begin());
+  return slots[n - 1];
+}
+
+bool Tape::ReviseIncremental(Box& box, ForwardMemory& memory, std::vector<Interval>& slots,
+                             bool* idempotent) const {
+  if (ForwardIncremental(box, memory, slots).IsEmpty()) return false;
+  if (idempotent) {
+    // As Revise: every operation's and constant's enclosure bounded.
+    bool bounded = idempotent_when_bounded_;
+    for (int s = 0; s < size() && bounded; ++s)
+      if (code_[s].op != Op::kVar && !slots[s].IsBounded()) bounded = false;
+    *idempotent = bounded;
   }
   return Backward(box, slots);
 }

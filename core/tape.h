@@ -21,6 +21,15 @@ struct TapeInstr {
   int n = 0;   // variable index (kVar) or exponent (kPow)
 };
 
+// A constraint's forward values kept from one revision to the next (see
+// Tape::ReviseIncremental), with the variable domains they were computed on.
+class ForwardMemory {
+ private:
+  friend class Tape;
+  std::vector<Interval> slots_;   // empty: nothing kept
+  std::vector<Interval> inputs_;  // parallel to Tape::variables()
+};
+
 class Tape {
  public:
   Tape(const ExprGraph& graph, const Constraint& constraint);
@@ -62,6 +71,13 @@ class Tape {
   // this one could narrow nothing more (see idempotent_when_bounded()): the
   // tape qualifies and the forward enclosure of every operation was bounded.
   bool Revise(Box& box, std::vector<Interval>& slots, bool* idempotent = nullptr) const;
+  // Revise for propagations that revise a constraint many times with few of
+  // its variables changed in between (3B's trials): the forward sweep
+  // re-evaluates only the slots that depend on a variable whose domain
+  // differs, bit for bit, from the one memory's last sweep read, and keeps
+  // the others' values in memory. Same results as Revise, bit for bit.
+  bool ReviseIncremental(Box& box, ForwardMemory& memory, std::vector<Interval>& slots,
+                         bool* idempotent) const;
   // True when every variable occurs once and every operation is continuous
   // with an interval image (no division, tan, log or negative power). HC4Revise
   // on such a tape is then idempotent while all forward enclosures of the
@@ -88,6 +104,10 @@ class Tape {
   // some operation or constant is unbounded.
   template <bool kTrackBounded>
   Interval ForwardSweep(const Box& box, std::vector<Interval>& slots, bool* bounded) const;
+  // The forward sweep of ReviseIncremental: memory's slots brought up to date
+  // with box, copied into slots; empty (and memory cleared) as Forward.
+  Interval ForwardIncremental(const Box& box, ForwardMemory& memory,
+                              std::vector<Interval>& slots) const;
   // Slot s's value and derivative with respect to variable var from its
   // operands' (forward-mode differentiation, one slot).
   void EvalWithDerivative(int s, const Box& box, int var, std::vector<Interval>& slots,
@@ -97,6 +117,7 @@ class Tape {
   std::vector<Interval> constants_;  // per slot; used by kConst slots
   std::vector<int> variables_;
   std::vector<int> occurrences_;     // parallel to variables_
+  std::vector<int> variable_position_;  // per kVar slot: its variable's index in variables_
   // Per variable (parallel to variables_): its dependent slots, ascending,
   // at dependent_slots_[dependent_begin_[i] .. dependent_begin_[i + 1]).
   std::vector<int> dependent_slots_;
