@@ -23,7 +23,7 @@ ThreeBContractor::ThreeBContractor(std::string name, std::unique_ptr<Contractor>
     : name_(std::move(name)), inner_(std::move(inner)), params_(params) {}
 
 bool ThreeBContractor::Trial(const Box& box, int var, const Interval& slice, LastTrial& last,
-                             const StopCondition& stop, WorkCounters& work) {
+                             ContractContext& inner_context, WorkCounters& work) {
   trial_ = box;
   trial_[var] = slice;
   changed_.assign(1, var);
@@ -40,10 +40,9 @@ bool ThreeBContractor::Trial(const Box& box, int var, const Interval& slice, Las
       if (i == var || !(trial_[i] == last.result[i])) changed_.push_back(i);
     }
   }
-  ContractContext context(stop);
-  context.SetChanged(changed_);
+  inner_context.SetChanged(changed_);
   ++work.inner_calls;
-  const ContractSummary s = inner_->Contract(trial_, context);
+  const ContractSummary s = inner_->Contract(trial_, inner_context);
   work += s.work;
   // A stopped contraction is sound but maybe short of a fixpoint, which the
   // next start from it would take it for.
@@ -53,19 +52,19 @@ bool ThreeBContractor::Trial(const Box& box, int var, const Interval& slice, Las
   return s.status != ContractStatus::kEmpty;
 }
 
-bool ThreeBContractor::Shave(Box& box, int var, bool left, const StopCondition& stop,
+bool ThreeBContractor::Shave(Box& box, int var, bool left, ContractContext& inner_context,
                              WorkCounters& work) {
   Interval x = box[var];
   if (!x.IsBounded()) return true;  // an infinite side cannot be sliced
   const double slice_width = x.Width() / params_.slices;
   if (slice_width <= params_.epsilon * std::max(1.0, x.Mag())) return true;
   LastTrial& last = last_trials_[2 * var + (left ? 0 : 1)];
-  for (int k = 0; k < params_.slices && !stop.ShouldStop(); ++k) {
+  for (int k = 0; k < params_.slices && !inner_context.stop().ShouldStop(); ++k) {
     const bool last_slice = k == params_.slices - 1;
     Interval slice =
         left ? Interval(x.lo(), last_slice ? x.hi() : std::min(x.hi(), x.lo() + slice_width))
              : Interval(last_slice ? x.lo() : std::max(x.lo(), x.hi() - slice_width), x.hi());
-    if (Trial(box, var, slice, last, stop, work)) {
+    if (Trial(box, var, slice, last, inner_context, work)) {
       // Every solution with x in the slice lies in trial_, so none is
       // beyond trial_'s bound on this side.
       x = left ? Interval(trial_[var].lo(), x.hi()) : Interval(x.lo(), trial_[var].hi());
@@ -102,8 +101,8 @@ ContractSummary ThreeBContractor::Contract(Box& box, ContractContext& context) {
       if (context.stop().ShouldStop())
         return fail(ContractStatus::kStopped, "stopped (time limit)");
       const Interval before = box[var];
-      if (!Shave(box, var, true, context.stop(), summary.work) ||
-          !Shave(box, var, false, context.stop(), summary.work))
+      if (!Shave(box, var, true, inner_context, summary.work) ||
+          !Shave(box, var, false, inner_context, summary.work))
         return fail(ContractStatus::kEmpty, "");
       if (!ShrankByMoreThan(before, box[var], params_.ratio)) continue;
       shrank = true;

@@ -83,14 +83,14 @@ class ThreeBContractor : public Contractor {
     Box result;
   };
 
-  // Shaves the left (or right) bound of box[var] with the inner contractor;
-  // false if box has no solution.
-  bool Shave(Box& box, int var, bool left, const StopCondition& stop, WorkCounters& work);
+  // Shaves the left (or right) bound of box[var] with the inner contractor,
+  // called with inner_context; false if box has no solution.
+  bool Shave(Box& box, int var, bool left, ContractContext& inner_context, WorkCounters& work);
   // Contracts trial_ (box with var in slice) with the inner contractor,
   // starting from last's result when slice lies inside last's slice; false
   // when the slice holds no solution. Records the trial in last.
   bool Trial(const Box& box, int var, const Interval& slice, LastTrial& last,
-             const StopCondition& stop, WorkCounters& work);
+             ContractContext& inner_context, WorkCounters& work);
 
   std::string name_;
   std::unique_ptr<Contractor> inner_;
