@@ -64,6 +64,22 @@ Tape::Tape(const ExprGraph& graph, const Constraint& constraint) : range_(constr
     if (code_[s].op == Op::kVar)
       variable_position_[s] = static_cast<int>(
           std::lower_bound(variables_.begin(), variables_.end(), code_[s].n) - variables_.begin());
+  if (variables_.size() <= kMaskVariables) {
+    const int masks = 1 << variables_.size();
+    std::vector<char> depends_on_mask(code_.size());
+    for (int m = 0; m < masks; ++m) {
+      recompute_begin_.push_back(static_cast<int>(recompute_slots_.size()));
+      for (int s = 0; s < size(); ++s) {
+        const TapeInstr& in = code_[s];
+        depends_on_mask[s] = in.op == Op::kVar ? (m >> variable_position_[s]) & 1
+                             : in.op == Op::kConst
+                                 ? 0
+                                 : depends_on_mask[in.a] || (in.b >= 0 && depends_on_mask[in.b]);
+        if (depends_on_mask[s]) recompute_slots_.push_back(s);
+      }
+    }
+    recompute_begin_.push_back(static_cast<int>(recompute_slots_.size()));
+  }
   // Dependent slots: a slot depends on var if an operand does (ids are
   // topologically ordered, so one upward pass per variable).
   std::vector<char> depends(code_.size());
@@ -260,9 +276,11 @@ Interval Tape::ForwardIncremental(const Box& box, ForwardMemory& memory,
                                   std::vector<Interval>& slots) const {
   const int n = size();
   const int num_vars = static_cast<int>(variables_.size());
-  constexpr int kStackSlots = 256;
   if (slots.size() < code_.size()) slots.resize(code_.size());
-  if (memory.slots_.size() != code_.size() || n > kStackSlots) {
+  auto unbounded = [this](int s, const Interval& z) {
+    return code_[s].op != Op::kVar && !z.IsBounded();
+  };
+  if (memory.slots_.size() != code_.size() || num_vars > kMaskVariables) {
     memory.slots_.resize(code_.size());
     memory.inputs_.resize(variables_.size());
     if (Forward(box, memory.slots_).IsEmpty()) {
@@ -270,39 +288,31 @@ Interval Tape::ForwardIncremental(const Box& box, ForwardMemory& memory,
       return Interval::Empty();
     }
     for (int i = 0; i < num_vars; ++i) memory.inputs_[i] = box[variables_[i]];
+    memory.unbounded_ = 0;
+    for (int s = 0; s < n; ++s) memory.unbounded_ += unbounded(s, memory.slots_[s]);
   } else {
-    char variable_changed[kStackSlots];
-    bool any = false;
+    int mask = 0;
     for (int i = 0; i < num_vars; ++i) {
       const Interval& x = box[variables_[i]];
-      variable_changed[i] = !SameBits(x, memory.inputs_[i]);
-      if (variable_changed[i]) {
-        any = true;
-        memory.inputs_[i] = x;
-      }
+      if (SameBits(x, memory.inputs_[i])) continue;
+      mask |= 1 << i;
+      memory.inputs_[i] = x;
     }
-    if (any) {
-      char dirty[kStackSlots];
-      for (int s = 0; s < n; ++s) {
-        const TapeInstr& in = code_[s];
-        Interval& z = memory.slots_[s];
-        if (in.op == Op::kConst) {
-          dirty[s] = 0;
-          continue;
-        }
-        if (in.op == Op::kVar) {
-          dirty[s] = variable_changed[variable_position_[s]];
-          if (dirty[s]) z = box[in.n];
-        } else {
-          const int b = in.b >= 0 ? in.b : in.a;
-          dirty[s] = dirty[in.a] | dirty[b];
-          if (dirty[s]) z = EvalOp(in.op, memory.slots_[in.a], memory.slots_[b], in.n);
-        }
-        if (dirty[s] && z.IsEmpty()) {
-          memory.slots_.clear();
-          return Interval::Empty();
-        }
+    for (int k = recompute_begin_[mask]; k < recompute_begin_[mask + 1]; ++k) {
+      const int s = recompute_slots_[k];
+      const TapeInstr& in = code_[s];
+      Interval& z = memory.slots_[s];
+      memory.unbounded_ -= unbounded(s, z);
+      if (in.op == Op::kVar) {
+        z = box[in.n];
+      } else {
+        z = EvalOp(in.op, memory.slots_[in.a], memory.slots_[in.b >= 0 ? in.b : in.a], in.n);
       }
+      if (z.IsEmpty()) {
+        memory.slots_.clear();
+        return Interval::Empty();
+      }
+      memory.unbounded_ += unbounded(s, z);
     }
   }
   std::copy(memory.slots_.begin(), memory.slots_.end(), slots.begin());
@@ -312,13 +322,8 @@ Interval Tape::ForwardIncremental(const Box& box, ForwardMemory& memory,
 bool Tape::ReviseIncremental(Box& box, ForwardMemory& memory, std::vector<Interval>& slots,
                              bool* idempotent) const {
   if (ForwardIncremental(box, memory, slots).IsEmpty()) return false;
-  if (idempotent) {
-    // As Revise: every operation's and constant's enclosure bounded.
-    bool bounded = idempotent_when_bounded_;
-    for (int s = 0; s < size() && bounded; ++s)
-      if (code_[s].op != Op::kVar && !slots[s].IsBounded()) bounded = false;
-    *idempotent = bounded;
-  }
+  // As Revise: every operation's and constant's enclosure bounded.
+  if (idempotent) *idempotent = idempotent_when_bounded_ && memory.unbounded_ == 0;
   return Backward(box, slots);
 }
 

@@ -28,6 +28,7 @@ class ForwardMemory {
   friend class Tape;
   std::vector<Interval> slots_;   // empty: nothing kept
   std::vector<Interval> inputs_;  // parallel to Tape::variables()
+  int unbounded_ = 0;             // constant and operation slots with an unbounded value
 };
 
 class Tape {
@@ -75,7 +76,8 @@ class Tape {
   // its variables changed in between (3B's trials): the forward sweep
   // re-evaluates only the slots that depend on a variable whose domain
   // differs, bit for bit, from the one memory's last sweep read, and keeps
-  // the others' values in memory. Same results as Revise, bit for bit.
+  // the others' values in memory (tapes of more than kMaskVariables
+  // variables are swept in full). Same results as Revise, bit for bit.
   bool ReviseIncremental(Box& box, ForwardMemory& memory, std::vector<Interval>& slots,
                          bool* idempotent) const;
   // True when every variable occurs once and every operation is continuous
@@ -118,6 +120,13 @@ class Tape {
   std::vector<int> variables_;
   std::vector<int> occurrences_;     // parallel to variables_
   std::vector<int> variable_position_;  // per kVar slot: its variable's index in variables_
+  // For tapes of at most kMaskVariables variables, per set of changed
+  // variables (bit i: variables_[i]): the variable and operation slots that
+  // depend on one of them, ascending, at recompute_slots_[recompute_begin_[m]
+  // .. recompute_begin_[m + 1]).
+  static constexpr int kMaskVariables = 4;
+  std::vector<int> recompute_slots_;
+  std::vector<int> recompute_begin_;
   // Per variable (parallel to variables_): its dependent slots, ascending,
   // at dependent_slots_[dependent_begin_[i] .. dependent_begin_[i + 1]).
   std::vector<int> dependent_slots_;

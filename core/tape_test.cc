@@ -204,8 +204,9 @@ TEST(TapeTest, UnivariateSweepsMatchTheFullSweeps) {
 
 // ReviseIncremental, with one memory kept along a sequence of boxes in which
 // a few variables change at a time (to values that empty the forward sweep,
-// to -0 for +0, back to earlier values), does what Revise does: the same
-// result, the same box and the same idempotence claim, bit for bit.
+// to -0 for +0, to unbounded ones, back to earlier values), does what Revise
+// does: the same result, the same box and the same idempotence claim, bit
+// for bit; on tapes of few variables (swept in part) and of many (in full).
 TEST(TapeTest, IncrementalRevisionsMatchFullOnes) {
   ConstraintSystem csp;
   Expr x = csp.AddVariable("x", {-2, 3});
@@ -213,9 +214,12 @@ TEST(TapeTest, IncrementalRevisionsMatchFullOnes) {
   Expr z = csp.AddVariable("z", {-1, 4});
   Expr t = csp.AddVariable("t", {-1, 1});
   csp.AddConstraint(Sqrt(x) * Cos(y + z) + x / (z - 1.0) + Sqr(y), Interval(-1, 1));
+  Expr u = csp.AddVariable("u", {-3, 3});
   csp.AddConstraint(t - (y + 2.0 * Cos(z + 0.5)), Interval(0.0));  // car-track shape
-  const Interval values[] = {{-2, 3}, {-2, -1}, {0, 0},   {-0.0, 0}, {1, 1},
-                             {0.25, 2.5}, {2, 3}, {-1, 4}, {0.5, 1},  {-1, 1}};
+  csp.AddConstraint(x * u + Sin(t) - y / z + Sqr(u - t), Interval(0, 2));  // 5 variables
+  const Interval values[] = {{-2, 3}, {-2, -1},  {0, 0},  {-0.0, 0},   {1, 1},     {0.25, 2.5},
+                             {2, 3},  {-1, 4},   {0.5, 1}, {-1, 1},     {-kInf, 1}, {2, kInf},
+                             Interval::Entire()};
   std::mt19937 rng(7);
   for (const Constraint& constraint : csp.constraints()) {
     Tape tape(csp.graph(), constraint);
