@@ -14,8 +14,9 @@
 // holds every solution with the variable in the slice, since the box only
 // shrinks during a contraction; the inner contractor is told that only the
 // variables where the start differs from that result (and the shaved one)
-// changed. Later rounds then cost a fifth of the first (tests/three_b_test.cc
-// pins that the car-track boxes stay those of cold trials).
+// changed. A later round's trial then costs about a fifth of a first one's
+// (algorithms/three_b/three_b_test.cc checks that on car-track windows the
+// boxes stay those of cold trials).
 //
 // Sound: a slice or part of a slice is removed only when the sound inner
 // contractor proves it holds no solution.
