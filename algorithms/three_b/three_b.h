@@ -14,7 +14,7 @@
 // holds every solution with the variable in the slice, since the box only
 // shrinks during a contraction; the inner contractor is told that only the
 // variables where the start differs from that result (and the shaved one)
-// changed. A later round's trial then costs about a fifth of a first one's
+// changed. A later round's trial then costs about a quarter of a first one's
 // (algorithms/three_b/three_b_test.cc checks that on car-track windows the
 // boxes stay those of cold trials).
 //
