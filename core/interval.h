@@ -8,7 +8,9 @@
 #ifndef ICPBENCH_CORE_INTERVAL_H_
 #define ICPBENCH_CORE_INTERVAL_H_
 
+#include <bit>
 #include <boost/numeric/interval.hpp>
+#include <cstdint>
 #include <iosfwd>
 #include <string>
 
@@ -158,6 +160,13 @@ inline Interval operator/(const Interval& x, const Interval& y) {
 }
 inline Interval operator-(const Interval& x) { return Interval(-x.boost()); }
 inline Interval Sqr(const Interval& x) { return Interval(boost::numeric::square(x.boost())); }
+
+// Equal bounds, bit for bit (so -0 and +0 differ, as they can in 1 / x): for
+// checking that a computation gives the very same result, or may be skipped.
+inline bool SameBits(const Interval& a, const Interval& b) {
+  return std::bit_cast<std::uint64_t>(a.lo()) == std::bit_cast<std::uint64_t>(b.lo()) &&
+         std::bit_cast<std::uint64_t>(a.hi()) == std::bit_cast<std::uint64_t>(b.hi());
+}
 
 // Bounds of non-empty intervals are never NaN, so plain comparisons do what
 // fmin / fmax would, without the libm call.

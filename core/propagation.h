@@ -86,16 +86,19 @@ class PropagationContractor : public Contractor, protected Revisers {
   const std::shared_ptr<const CompiledSystem>& shared_system() const { return system_; }
 
  protected:
-  // True during a contraction told which few variables changed (3B's
-  // trials): the same constraints are then revised over and over with most
-  // of their variables unchanged, and Tape::ReviseIncremental pays off; a
-  // fresh contraction revises each constraint a few times only.
-  bool incremental() const { return incremental_; }
+  // HC4Revise of constraint c (Tape::Revise; slots are scratch). During a
+  // contraction told which few variables changed (3B's trials) the same
+  // constraints are revised over and over with most of their variables
+  // unchanged, and it revises incrementally (Tape::ReviseIncremental, the
+  // same results); a fresh contraction revises each constraint a few times
+  // only, and sweeps in full.
+  bool HC4Revise(int c, Box& box, std::vector<Interval>& slots, bool* idempotent);
 
  private:
   std::shared_ptr<const CompiledSystem> system_;
   Propagation propagation_;
   bool incremental_ = false;
+  std::vector<ForwardMemory> memories_;  // per constraint, for HC4Revise
 };
 
 }  // namespace icp

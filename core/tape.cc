@@ -1,14 +1,29 @@
 #include "core/tape.h"
 
 #include <algorithm>
-#include <bit>
-#include <cstdint>
 #include <map>
 #include <stdexcept>
 
 #include "core/ops.h"
 
 namespace icp {
+
+namespace {
+// Appends to out, ascending, the slots of code that depend on a variable n
+// with selected(n): its own and every operation above them (ids are
+// topologically ordered, so one upward pass).
+template <class Selected>
+void AppendDependentSlots(const std::vector<TapeInstr>& code, Selected selected,
+                          std::vector<int>& out) {
+  std::vector<char> depends(code.size());
+  for (std::size_t s = 0; s < code.size(); ++s) {
+    const TapeInstr& in = code[s];
+    depends[s] = in.op == Op::kVar ? selected(in.n)
+                                   : (in.a >= 0 && depends[in.a]) || (in.b >= 0 && depends[in.b]);
+    if (depends[s]) out.push_back(static_cast<int>(s));
+  }
+}
+}  // namespace
 
 Tape::Tape(const ExprGraph& graph, const Constraint& constraint) : range_(constraint.range) {
   if (constraint.root < 0 || constraint.root >= graph.size())
@@ -59,39 +74,22 @@ Tape::Tape(const ExprGraph& graph, const Constraint& constraint) : range_(constr
     occurrences_.push_back(count);
     if (count > 1) idempotent_when_bounded_ = false;
   }
-  variable_position_.assign(code_.size(), -1);
-  for (int s = 0; s < size(); ++s)
-    if (code_[s].op == Op::kVar)
-      variable_position_[s] = static_cast<int>(
-          std::lower_bound(variables_.begin(), variables_.end(), code_[s].n) - variables_.begin());
-  if (variables_.size() <= kMaskVariables) {
-    const int masks = 1 << variables_.size();
-    std::vector<char> depends_on_mask(code_.size());
-    for (int m = 0; m < masks; ++m) {
-      recompute_begin_.push_back(static_cast<int>(recompute_slots_.size()));
-      for (int s = 0; s < size(); ++s) {
-        const TapeInstr& in = code_[s];
-        depends_on_mask[s] = in.op == Op::kVar ? (m >> variable_position_[s]) & 1
-                             : in.op == Op::kConst
-                                 ? 0
-                                 : depends_on_mask[in.a] || (in.b >= 0 && depends_on_mask[in.b]);
-        if (depends_on_mask[s]) recompute_slots_.push_back(s);
-      }
-    }
-    recompute_begin_.push_back(static_cast<int>(recompute_slots_.size()));
-  }
-  // Dependent slots: a slot depends on var if an operand does (ids are
-  // topologically ordered, so one upward pass per variable).
-  std::vector<char> depends(code_.size());
+  // Dependent slots, per variable and, for few variables, per set of them.
   dependent_begin_.push_back(0);
   for (int var : variables_) {
-    for (int s = 0; s < size(); ++s) {
-      const TapeInstr& in = code_[s];
-      depends[s] = in.op == Op::kVar ? in.n == var
-                                     : (in.a >= 0 && depends[in.a]) || (in.b >= 0 && depends[in.b]);
-      if (depends[s]) dependent_slots_.push_back(s);
-    }
+    AppendDependentSlots(code_, [var](int n) { return n == var; }, dependent_slots_);
     dependent_begin_.push_back(static_cast<int>(dependent_slots_.size()));
+  }
+  if (variables_.size() <= kMaskVariables) {
+    for (int m = 0; m < (1 << variables_.size()); ++m) {
+      recompute_begin_.push_back(static_cast<int>(recompute_slots_.size()));
+      auto in_mask = [this, m](int n) {
+        const auto i = std::lower_bound(variables_.begin(), variables_.end(), n) - variables_.begin();
+        return ((m >> i) & 1) != 0;
+      };
+      AppendDependentSlots(code_, in_mask, recompute_slots_);
+    }
+    recompute_begin_.push_back(static_cast<int>(recompute_slots_.size()));
   }
   for (const TapeInstr& in : code_) {
     if (in.op == Op::kDiv || in.op == Op::kTan || in.op == Op::kLog ||
@@ -263,14 +261,6 @@ bool Tape::Revise(Box& box, std::vector<Interval>& slots, bool* idempotent) cons
   }
   return Backward(box, slots);
 }
-
-namespace {
-// Bit for bit: -0 and +0 can give different results (1 / x).
-bool SameBits(const Interval& a, const Interval& b) {
-  return std::bit_cast<std::uint64_t>(a.lo()) == std::bit_cast<std::uint64_t>(b.lo()) &&
-         std::bit_cast<std::uint64_t>(a.hi()) == std::bit_cast<std::uint64_t>(b.hi());
-}
-}  // namespace
 
 Interval Tape::ForwardIncremental(const Box& box, ForwardMemory& memory,
                                   std::vector<Interval>& slots) const {

@@ -119,7 +119,6 @@ class Tape {
   std::vector<Interval> constants_;  // per slot; used by kConst slots
   std::vector<int> variables_;
   std::vector<int> occurrences_;     // parallel to variables_
-  std::vector<int> variable_position_;  // per kVar slot: its variable's index in variables_
   // For tapes of at most kMaskVariables variables, per set of changed
   // variables (bit i: variables_[i]): the variable and operation slots that
   // depend on one of them, ascending, at recompute_slots_[recompute_begin_[m]

@@ -10,7 +10,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -25,12 +24,6 @@
 
 namespace icp {
 namespace {
-
-// Equal bounds, bit for bit (so -0 and +0 differ).
-bool SameBits(const Interval& a, const Interval& b) {
-  return std::bit_cast<std::uint64_t>(a.lo()) == std::bit_cast<std::uint64_t>(b.lo()) &&
-         std::bit_cast<std::uint64_t>(a.hi()) == std::bit_cast<std::uint64_t>(b.hi());
-}
 
 // Every component the same bit for bit; all empty boxes are equal.
 bool SameBits(const Box& a, const Box& b) {

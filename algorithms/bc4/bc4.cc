@@ -6,7 +6,6 @@ BC4Contractor::BC4Contractor(std::shared_ptr<const CompiledSystem> system, const
     : PropagationContractor(std::move(system), params.ratio, params.max_revise_calls),
       narrower_(params.epsilon, params.max_bisections),
       slots_(this->system().max_tape_size()),
-      memories_(this->system().num_constraints()),
       multiple_(this->system().num_constraints()) {
   for (int c = 0; c < this->system().num_constraints(); ++c) {
     const Tape& t = this->system().tape(c);
@@ -20,10 +19,7 @@ bool BC4Contractor::Revise(int c, Box& box, WorkCounters& work, bool* idempotent
   // HC4Revise is sound for every variable and optimal for single occurrences
   // (where it is idempotent too; with multiple occurrences BC3 narrowing
   // follows and nothing is claimed).
-  bool* claim = multiple_[c].empty() ? idempotent : nullptr;
-  if (!(incremental() ? tape.ReviseIncremental(box, memories_[c], slots_, claim)
-                      : tape.Revise(box, slots_, claim)))
-    return false;
+  if (!HC4Revise(c, box, slots_, multiple_[c].empty() ? idempotent : nullptr)) return false;
   if (multiple_[c].empty()) return true;
   if (tape.Forward(box, slots_).IsEmpty()) return false;
   for (int v : multiple_[c])

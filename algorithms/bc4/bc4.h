@@ -31,7 +31,6 @@ class BC4Contractor : public PropagationContractor {
  private:
   BoxNarrower narrower_;
   std::vector<Interval> slots_;
-  std::vector<ForwardMemory> memories_;  // per constraint
   std::vector<std::vector<int>> multiple_;  // per constraint: variables occurring twice or more
 };
 

@@ -12,13 +12,10 @@ void Describe(HC4Params& p, ParamSet& set) {
 
 HC4Contractor::HC4Contractor(std::shared_ptr<const CompiledSystem> system, const HC4Params& params)
     : PropagationContractor(std::move(system), params.ratio, params.max_revise_calls),
-      slots_(this->system().max_tape_size()),
-      memories_(this->system().num_constraints()) {}
+      slots_(this->system().max_tape_size()) {}
 
 bool HC4Contractor::Revise(int c, Box& box, WorkCounters&, bool* idempotent) {
-  const Tape& tape = system().tape(c);
-  return incremental() ? tape.ReviseIncremental(box, memories_[c], slots_, idempotent)
-                       : tape.Revise(box, slots_, idempotent);
+  return HC4Revise(c, box, slots_, idempotent);
 }
 
 std::unique_ptr<Contractor> MakeHC4(const ParamMap& params, const ConstraintSystem& csp) {

@@ -40,7 +40,6 @@ class HC4Contractor : public PropagationContractor {
 
  private:
   std::vector<Interval> slots_;
-  std::vector<ForwardMemory> memories_;  // per constraint
 };
 
 std::unique_ptr<Contractor> MakeHC4(const ParamMap& params, const ConstraintSystem& csp);
