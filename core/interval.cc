@@ -107,17 +107,20 @@ constexpr double kTrigFar = 0x1p50;
 constexpr double kHalfPiApprox = std::numbers::pi / 2;  // only to count multiples
 
 // Every integer m with m * pi / 2 in x lies in [*first, *last] (x bounded,
-// |x| < kTrigFar). The quotient x / kHalfPiApprox is within 2.5e-16 of the
-// exact x / (pi / 2) in relative terms (one rounding of pi / 2, one of the
-// division; no overflow below kTrigFar and an absolute error under 1e-300
+// |x| < kTrigFar), and so does every m that MayContainHalfPiMultiple accepts
+// (its enclosure of m * pi / 2 is within 5e-16 relative of the exact value);
+// the range is empty (first > last) when x is far from every multiple, the
+// usual case for a narrow x. The quotient x / kHalfPiApprox is within 2.5e-16
+// of the exact x / (pi / 2) in relative terms (one rounding of pi / 2, one of
+// the division; no overflow below kTrigFar and an absolute error under 1e-300
 // if it underflows), so a margin of 1e-15 relative, which also covers the
 // rounding of the subtraction, is safe. Below 2^51 the integers are exact
 // in an int64.
 void HalfPiMultiplesIn(const Interval& x, std::int64_t* first, std::int64_t* last) {
   const double q_lo = x.lo() / kHalfPiApprox;
   const double q_hi = x.hi() / kHalfPiApprox;
-  *first = static_cast<std::int64_t>(std::floor(q_lo - (1e-15 * std::fabs(q_lo) + 1e-300)));
-  *last = static_cast<std::int64_t>(std::ceil(q_hi + (1e-15 * std::fabs(q_hi) + 1e-300)));
+  *first = static_cast<std::int64_t>(std::ceil(q_lo - (1e-15 * std::fabs(q_lo) + 1e-300)));
+  *last = static_cast<std::int64_t>(std::floor(q_hi + (1e-15 * std::fabs(q_hi) + 1e-300)));
 }
 
 // Whether x may contain m * pi / 2 (m an integer): the enclosure of

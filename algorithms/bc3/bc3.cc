@@ -24,6 +24,12 @@ bool BoxNarrower::Small(const Interval& j) const {
 }
 
 bool BoxNarrower::Consistent(const Tape& tape, int var, const Interval& j) {
+  // On the whole domain (Newton's first step after a failed edge test) the
+  // caller's Forward, saved on entry, is the evaluation: restore it.
+  if (SameBits(j, entry_)) {
+    for (std::size_t i = 0; i < dependent_.size(); ++i) (*slots_)[dependent_[i]] = saved_[i];
+    return !Intersect((*slots_)[tape.size() - 1], tape.range()).IsEmpty();
+  }
   return !Intersect(tape.ForwardUnivariate(dependent_, j, *slots_), tape.range()).IsEmpty();
 }
 
@@ -114,6 +120,7 @@ bool BoxNarrower::Narrow(const Tape& tape, int var, Box& box, std::vector<Interv
   saved_.resize(dependent_.size());
   for (std::size_t i = 0; i < dependent_.size(); ++i) saved_[i] = slots[dependent_[i]];
   const Interval x = box[var];
+  entry_ = x;
   std::optional<double> lo = OuterBound(tape, var, x, true, work);
   if (!lo) return false;
   std::optional<double> hi = OuterBound(tape, var, Interval(*lo, x.hi()), false, work);

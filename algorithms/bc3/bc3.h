@@ -72,6 +72,7 @@ class BoxNarrower {
   std::vector<Interval> dslots_;
   bool dslots_zeroed_ = false;      // the independent slots' derivatives set to 0
   std::span<const int> dependent_;  // the tape's slots that depend on the narrowed variable
+  Interval entry_;                  // the variable's domain on entry to Narrow
   std::vector<Interval> saved_;     // the dependent slots on entry to Narrow
   std::vector<Interval> stack_;
 };
