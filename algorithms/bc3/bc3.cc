@@ -139,12 +139,21 @@ BC3Contractor::BC3Contractor(std::shared_ptr<const CompiledSystem> system, const
       narrower_(params.epsilon, params.max_bisections),
       slots_(this->system().max_tape_size()) {}
 
-bool BC3Contractor::Revise(int c, Box& box, WorkCounters& work, bool*) {
+bool BC3Contractor::Revise(int c, Box& box, WorkCounters& work, bool* idempotent) {
   const Tape& tape = system().tape(c);
   const Interval root = tape.Forward(box, slots_);
   if (Intersect(root, tape.range()).IsEmpty()) return false;
-  for (int v : tape.variables())
-    if (!narrower_.Narrow(tape, v, box, slots_, work)) return false;
+  // Each variable is narrowed against the others' domains as they are at its
+  // turn, so its narrowing stays valid unless a variable after it changes:
+  // when none but the first changed, the constraint is at its own fixpoint.
+  bool later_changed = false;
+  const std::vector<int>& vars = tape.variables();
+  for (std::size_t i = 0; i < vars.size(); ++i) {
+    const Interval before = box[vars[i]];
+    if (!narrower_.Narrow(tape, vars[i], box, slots_, work)) return false;
+    if (i > 0 && !SameBits(before, box[vars[i]])) later_changed = true;
+  }
+  if (idempotent) *idempotent = !later_changed;
   return true;
 }
 
