@@ -137,23 +137,47 @@ bool BoxNarrower::Narrow(const Tape& tape, int var, Box& box, std::vector<Interv
 BC3Contractor::BC3Contractor(std::shared_ptr<const CompiledSystem> system, const BC3Params& params)
     : PropagationContractor(std::move(system), params.ratio, params.max_revise_calls),
       narrower_(params.epsilon, params.max_bisections),
-      slots_(this->system().max_tape_size()) {}
+      memories_(this->system().num_constraints()) {
+  for (int c = 0; c < this->system().num_constraints(); ++c) {
+    const Tape& tape = this->system().tape(c);
+    memories_[c].slots.resize(tape.size());
+    memories_[c].domains.resize(tape.variables().size());
+  }
+}
 
 bool BC3Contractor::Revise(int c, Box& box, WorkCounters& work, bool* idempotent) {
   const Tape& tape = system().tape(c);
-  const Interval root = tape.Forward(box, slots_);
-  if (Intersect(root, tape.range()).IsEmpty()) return false;
-  // Each variable is narrowed against the others' domains as they are at its
-  // turn, so its narrowing stays valid unless a variable after it changes:
-  // when none but the first changed, the constraint is at its own fixpoint.
-  bool later_changed = false;
   const std::vector<int>& vars = tape.variables();
-  for (std::size_t i = 0; i < vars.size(); ++i) {
-    const Interval before = box[vars[i]];
-    if (!narrower_.Narrow(tape, vars[i], box, slots_, work)) return false;
-    if (i > 0 && !SameBits(before, box[vars[i]])) later_changed = true;
+  const std::size_t k = vars.size();
+  Memory& memory = memories_[c];
+  // Each variable is narrowed against the others' domains as they are at its
+  // turn, and its narrowing holds until one of them shrinks. If none changed
+  // since the last revise, its slots are still a Forward of the box and the
+  // variables from settled_from on need no narrowing until one before shrinks.
+  bool unchanged = memory.valid;
+  for (std::size_t i = 0; unchanged && i < k; ++i)
+    unchanged = SameBits(memory.domains[i], box[vars[i]]);
+  memory.valid = false;  // until this revise succeeds
+  std::size_t settled_from = k;
+  if (unchanged) {
+    settled_from = memory.settled_from;
+  } else if (Intersect(tape.Forward(box, memory.slots), tape.range()).IsEmpty()) {
+    return false;
   }
-  if (idempotent) *idempotent = !later_changed;
+  std::size_t last_shrunk = k;  // k: none
+  for (std::size_t i = 0; i < k; ++i) {
+    if (i >= settled_from && last_shrunk == k) break;
+    const Interval before = box[vars[i]];
+    if (!narrower_.Narrow(tape, vars[i], box, memory.slots, work)) return false;
+    if (!SameBits(before, box[vars[i]])) last_shrunk = i;
+  }
+  // The variables after the last one that shrank were narrowed against the
+  // final domains, and so was that one: when it is the first, or none shrank,
+  // the constraint is at its own fixpoint.
+  memory.settled_from = last_shrunk == k ? 0 : last_shrunk;
+  for (std::size_t i = 0; i < k; ++i) memory.domains[i] = box[vars[i]];
+  memory.valid = true;
+  if (idempotent) *idempotent = memory.settled_from == 0;
   return true;
 }
 

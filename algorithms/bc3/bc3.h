@@ -7,7 +7,11 @@
 // narrowed by the univariate interval Newton operator with the derivative
 // computed on the tape, and the search stops at the first piece whose edge
 // slice is consistent (BC3revise's LNAR/RNAR; RealPaver's shrink). Pairs are
-// propagated with the AC3-like queue.
+// propagated with the AC3-like queue. A revise narrows its constraint's
+// variables in turn on one evaluation of the tape; each constraint keeps that
+// evaluation and which variables were narrowed against its final domains, so
+// a revise whose domains did not change since evaluates nothing twice, and a
+// revise in which only the first variable shrank is not queued again.
 //
 // Sound: slices are removed only when the interval extension proves them
 // solution-free. Not affected by multiple occurrences the way HC4 is
@@ -86,8 +90,15 @@ class BC3Contractor : public PropagationContractor {
   bool Revise(int c, Box& box, WorkCounters& work, bool* idempotent) override;
 
  private:
+  // What the last revise of a constraint leaves for the next one.
+  struct Memory {
+    bool valid = false;             // whether there was one and it succeeded
+    std::vector<Interval> domains;  // its variables' domains after it
+    std::vector<Interval> slots;    // the tape's Forward on those domains
+    std::size_t settled_from = 0;   // the variables from here on need no narrowing there
+  };
   BoxNarrower narrower_;
-  std::vector<Interval> slots_;
+  std::vector<Memory> memories_;
 };
 
 std::unique_ptr<Contractor> MakeBC3(const ParamMap& params, const ConstraintSystem& csp);
