@@ -262,6 +262,25 @@ bool Tape::Revise(Box& box, std::vector<Interval>& slots, bool* idempotent) cons
   return Backward(box, slots);
 }
 
+// ForwardIncremental keeps its own copy of this loop, with the count of
+// unbounded slots: sharing one through a helper cost 3B 1-2 % of its
+// instructions (callgrind, 100 lap steps), even inlined.
+Interval Tape::Reforward(const Box& box, int changed, std::vector<Interval>& slots) const {
+  if (static_cast<int>(variables_.size()) > kMaskVariables) return Forward(box, slots);
+  for (int k = recompute_begin_[changed]; k < recompute_begin_[changed + 1]; ++k) {
+    const int s = recompute_slots_[k];
+    const TapeInstr& in = code_[s];
+    Interval& z = slots[s];
+    if (in.op == Op::kVar) {
+      z = box[in.n];
+    } else {
+      z = EvalOp(in.op, slots[in.a], slots[in.b >= 0 ? in.b : in.a], in.n);
+    }
+    if (z.IsEmpty()) return Interval::Empty();
+  }
+  return slots[size() - 1];
+}
+
 Interval Tape::ForwardIncremental(const Box& box, ForwardMemory& memory,
                                   std::vector<Interval>& slots) const {
   const int n = size();

@@ -38,6 +38,15 @@ class Tape {
   // Evaluates every slot on box; returns the root's enclosure (empty if some
   // sub-expression is undefined everywhere on the box).
   Interval Forward(const Box& box, std::vector<Interval>& slots) const;
+  // Brings slots, a Forward on a box that differs from box at most in the
+  // variables of the set changed (bit i: variables()[i]), up to a Forward on
+  // box: re-evaluates only the slots that depend on those variables (every
+  // slot for tapes of more than kMaskVariables variables). The same result
+  // as Forward(box, slots), bit for bit.
+  Interval Reforward(const Box& box, int changed, std::vector<Interval>& slots) const;
+  // The largest number of variables for which Reforward and ReviseIncremental
+  // re-evaluate only the dependent slots.
+  static constexpr int kMaskVariables = 4;
   // Intersects the root slot with range and projects back to the variables,
   // writing their contracted domains into box. slots must hold a Forward pass
   // on box. Returns false when the constraint has no solution in box (box is
@@ -123,7 +132,6 @@ class Tape {
   // variables (bit i: variables_[i]): the variable and operation slots that
   // depend on one of them, ascending, at recompute_slots_[recompute_begin_[m]
   // .. recompute_begin_[m + 1]).
-  static constexpr int kMaskVariables = 4;
   std::vector<int> recompute_slots_;
   std::vector<int> recompute_begin_;
   // Per variable (parallel to variables_): its dependent slots, ascending,

@@ -151,18 +151,27 @@ bool BC3Contractor::Revise(int c, Box& box, WorkCounters& work, bool* idempotent
   const std::size_t k = vars.size();
   Memory& memory = memories_[c];
   // Each variable is narrowed against the others' domains as they are at its
-  // turn, and its narrowing holds until one of them shrinks. If none changed
-  // since the last revise, its slots are still a Forward of the box and the
-  // variables from settled_from on need no narrowing until one before shrinks.
-  bool unchanged = memory.valid;
-  for (std::size_t i = 0; unchanged && i < k; ++i)
-    unchanged = SameBits(memory.domains[i], box[vars[i]]);
+  // turn, and its narrowing holds until one of them shrinks. The last revise
+  // left its slots as a Forward on its final domains: only the slots that
+  // depend on a variable changed since are evaluated again, and if none
+  // changed, the variables from settled_from on need no narrowing until one
+  // before them shrinks.
+  const bool remembered = memory.valid;
+  bool unchanged = remembered;
+  int changed = 0;  // bit i: vars[i] changed since (Reforward sweeps all past kMaskVariables)
+  for (std::size_t i = 0; remembered && i < k; ++i) {
+    if (SameBits(memory.domains[i], box[vars[i]])) continue;
+    unchanged = false;
+    if (i < Tape::kMaskVariables) changed |= 1 << i;
+  }
   memory.valid = false;  // until this revise succeeds
   std::size_t settled_from = k;
   if (unchanged) {
     settled_from = memory.settled_from;
-  } else if (Intersect(tape.Forward(box, memory.slots), tape.range()).IsEmpty()) {
-    return false;
+  } else {
+    const Interval root = remembered ? tape.Reforward(box, changed, memory.slots)
+                                     : tape.Forward(box, memory.slots);
+    if (Intersect(root, tape.range()).IsEmpty()) return false;
   }
   std::size_t last_shrunk = k;  // k: none
   for (std::size_t i = 0; i < k; ++i) {
