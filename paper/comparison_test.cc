@@ -80,6 +80,17 @@ TEST(ComparisonTest, Table1RatiosToHc4DecideTheVerdicts) {
   rows = Paper000Comparison(runs);
   EXPECT_EQ(Row(rows, "Table 1: BC3 / HC4").verdict, Verdict::kDiffers);
   EXPECT_EQ(Row(rows, "Table 1: BC3 / HC4").reason, kNotMeasured);
+  // With the stored work counters the reason is measured: per CSP, from them.
+  runs[0].properties = {{"revise_calls", std::int64_t{240}}};
+  runs[1].properties = {{"revise_calls", std::int64_t{280}},
+                        {"newton_steps", std::int64_t{160}},
+                        {"bisections", std::int64_t{40}}};
+  rows = Paper000Comparison(runs);
+  const std::string reason = Row(rows, "Table 1: BC3 / HC4").reason;
+  EXPECT_NE(reason.find("BC3 revised 280 constraints (HC4: 240)"), std::string::npos) << reason;
+  EXPECT_NE(reason.find("160 Newton steps and 40 bisections"), std::string::npos) << reason;
+  EXPECT_NE(reason.find("HC4 runs 26x faster than published, BC3 0.051x"), std::string::npos)
+      << reason;
   const ComparisonRow& absolute = Row(rows, "Table 1: HC4, ms per CSP");
   EXPECT_EQ(absolute.verdict, Verdict::kDiffers);
   EXPECT_NE(absolute.reason.find("by construction"), std::string::npos);
