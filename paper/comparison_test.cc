@@ -91,6 +91,13 @@ TEST(ComparisonTest, Table1RatiosToHc4DecideTheVerdicts) {
   EXPECT_NE(reason.find("160 Newton steps and 40 bisections"), std::string::npos) << reason;
   EXPECT_NE(reason.find("HC4 runs 26x faster than published, BC3 0.051x"), std::string::npos)
       << reason;
+  runs[3].properties = {{"inner_calls", std::int64_t{300}}, {"revise_calls", std::int64_t{24000}}};
+  rows = Paper000Comparison(runs);
+  const std::string three_b = Row(rows, "Table 1: 3B-BC4 / HC4").reason;  // 60000x HC4
+  EXPECT_NE(three_b.find("ran 300 inner contractions (shaving trials) with 24000 revisions, "
+                         "100x HC4's 240, and a revision cost 600x one of HC4's"),
+            std::string::npos)
+      << three_b;
   const ComparisonRow& absolute = Row(rows, "Table 1: HC4, ms per CSP");
   EXPECT_EQ(absolute.verdict, Verdict::kDiffers);
   EXPECT_NE(absolute.reason.find("by construction"), std::string::npos);
