@@ -200,12 +200,10 @@ TEST(TapeTest, UnivariateSweepsMatchTheFullSweeps) {
   }
 }
 
-// ReviseIncremental, with one memory kept along a sequence of boxes in which
-// a few variables change at a time (to values that empty the forward sweep,
-// to -0 for +0, to unbounded ones, back to earlier values), does what Revise
-// does: the same result, the same box and the same idempotence claim, bit
-// for bit; on tapes of few variables (swept in part) and of many (in full).
-TEST(TapeTest, IncrementalRevisionsMatchFullOnes) {
+// The system of the incremental-sweep tests: tapes of 2 to 5 variables
+// (swept in part up to Tape::kMaskVariables, in full beyond), with sqrt and
+// division undefined on part of the domains.
+ConstraintSystem IncrementalSweepSystem() {
   ConstraintSystem csp;
   Expr x = csp.AddVariable("x", {-2, 3});
   Expr y = csp.AddVariable("y", {0.5, 1});
@@ -215,9 +213,23 @@ TEST(TapeTest, IncrementalRevisionsMatchFullOnes) {
   Expr u = csp.AddVariable("u", {-3, 3});
   csp.AddConstraint(t - (y + 2.0 * Cos(z + 0.5)), Interval(0.0));  // car-track shape
   csp.AddConstraint(x * u + Sin(t) - y / z + Sqr(u - t), Interval(0, 2));  // 5 variables
-  const Interval values[] = {{-2, 3}, {-2, -1},  {0, 0},  {-0.0, 0},   {1, 1},     {0.25, 2.5},
-                             {2, 3},  {-1, 4},   {0.5, 1}, {-1, 1},     {-kInf, 1}, {2, kInf},
-                             Interval::Entire()};
+  return csp;
+}
+
+// The values the variables take along those tests' sequences: ones that
+// empty the forward sweep, -0 for +0, unbounded ones.
+const Interval kSweepValues[] = {{-2, 3},  {-2, -1}, {0, 0},  {-0.0, 0},  {1, 1},
+                                     {0.25, 2.5}, {2, 3}, {-1, 4}, {0.5, 1},   {-1, 1},
+                                     {-kInf, 1},  {2, kInf}, Interval::Entire()};
+
+// ReviseIncremental, with one memory kept along a sequence of boxes in which
+// a few variables change at a time (to values that empty the forward sweep,
+// to -0 for +0, to unbounded ones, back to earlier values), does what Revise
+// does: the same result, the same box and the same idempotence claim, bit
+// for bit; on tapes of few variables (swept in part) and of many (in full).
+TEST(TapeTest, IncrementalRevisionsMatchFullOnes) {
+  const ConstraintSystem csp = IncrementalSweepSystem();
+  const auto& values = kSweepValues;
   std::mt19937 rng(7);
   for (const Constraint& constraint : csp.constraints()) {
     Tape tape(csp.graph(), constraint);
@@ -248,17 +260,8 @@ TEST(TapeTest, IncrementalRevisionsMatchFullOnes) {
 // those of a Forward on the new one, bit for bit; after an empty result the
 // next box starts from a full Forward, as BC3's revise does.
 TEST(TapeTest, ReforwardMatchesAFullForward) {
-  ConstraintSystem csp;
-  Expr x = csp.AddVariable("x", {-2, 3});
-  Expr y = csp.AddVariable("y", {0.5, 1});
-  Expr z = csp.AddVariable("z", {-1, 4});
-  Expr t = csp.AddVariable("t", {-1, 1});
-  csp.AddConstraint(Sqrt(x) * Cos(y + z) + x / (z - 1.0) + Sqr(y), Interval(-1, 1));
-  Expr u = csp.AddVariable("u", {-3, 3});
-  csp.AddConstraint(t - (y + 2.0 * Cos(z + 0.5)), Interval(0.0));
-  csp.AddConstraint(x * u + Sin(t) - y / z + Sqr(u - t), Interval(0, 2));  // 5 variables
-  const Interval values[] = {{-2, 3}, {-2, -1}, {0, 0},  {-0.0, 0},  {1, 1},     {0.25, 2.5},
-                             {2, 3},  {-1, 4},  {0.5, 1}, {-1, 1},    {-kInf, 1}, {2, kInf}};
+  const ConstraintSystem csp = IncrementalSweepSystem();
+  const auto& values = kSweepValues;
   std::mt19937 rng(11);
   int partial = 0;
   for (const Constraint& constraint : csp.constraints()) {

@@ -23,11 +23,15 @@ bool BoxNarrower::Small(const Interval& j) const {
   return j.IsBounded() && j.Width() <= epsilon_ * std::max(1.0, j.Mag());
 }
 
+void BoxNarrower::RestoreEntry() {
+  for (std::size_t i = 0; i < dependent_.size(); ++i) (*slots_)[dependent_[i]] = saved_[i];
+}
+
 bool BoxNarrower::Consistent(const Tape& tape, int var, const Interval& j) {
   // On the whole domain (Newton's first step after a failed edge test) the
   // caller's Forward, saved on entry, is the evaluation: restore it.
   if (SameBits(j, entry_)) {
-    for (std::size_t i = 0; i < dependent_.size(); ++i) (*slots_)[dependent_[i]] = saved_[i];
+    RestoreEntry();
     return !Intersect((*slots_)[tape.size() - 1], tape.range()).IsEmpty();
   }
   return !Intersect(tape.ForwardUnivariate(dependent_, j, *slots_), tape.range()).IsEmpty();
@@ -128,7 +132,7 @@ bool BoxNarrower::Narrow(const Tape& tape, int var, Box& box, std::vector<Interv
   box[var] = Interval(*lo, *hi);
   // Leave slots as a Forward on the narrowed box.
   if (box[var] == x) {
-    for (std::size_t i = 0; i < dependent_.size(); ++i) slots[dependent_[i]] = saved_[i];
+    RestoreEntry();
     return true;
   }
   return !tape.ForwardUnivariate(dependent_, box[var], slots).IsEmpty();

@@ -69,6 +69,9 @@ class BoxNarrower {
   std::optional<double> OuterBound(const Tape& tape, int var, const Interval& x, bool leftward,
                                    WorkCounters& work);
   bool Small(const Interval& j) const;
+  // Puts back the dependent slots saved on entry to Narrow (a Forward on
+  // the variable's entry domain).
+  void RestoreEntry();
 
   double epsilon_;
   int max_bisections_;
