@@ -43,6 +43,9 @@ class Interval {
     }
   }
   explicit Interval(const detail::BoostInterval& b) : Interval(b.lower(), b.upper()) {}
+  // [lo, hi] where the caller knows that lo <= hi, both finite: no checks.
+  enum Ordered { kOrdered };
+  Interval(double lo, double hi, Ordered) : b_(lo, hi, true) {}
 
   static Interval Empty() { return Interval(kInf, -kInf); }
   static Interval Entire() { return Interval(); }
@@ -140,13 +143,35 @@ inline double Interval::Mag() const {
 }
 
 // As Boost's operators with the ExactRounding policy, without the wrapper's
-// second round of checks.
+// second round of checks. Sums and differences compute both bounds at once
+// where AddUpPair can (finite operands below 2^1020, so never an empty
+// one's infinite bounds), the lower one as -add_up(-a, -b); the result of
+// such operands is ordered and finite, so it needs no check either.
+#if defined(__SSE2__)
+namespace detail {
+inline __m128d NegatedLoAndHi(const Interval& x) { return _mm_set_pd(x.hi(), -x.lo()); }
+inline __m128d HiAndNegatedLo(const Interval& x) { return _mm_set_pd(-x.lo(), x.hi()); }
+inline Interval FromNegatedLoAndHi(__m128d v) {
+  return Interval(-_mm_cvtsd_f64(v), _mm_cvtsd_f64(_mm_unpackhi_pd(v, v)), Interval::kOrdered);
+}
+}  // namespace detail
+#endif
 inline Interval operator+(const Interval& x, const Interval& y) {
+#if defined(__SSE2__)
+  __m128d sum;
+  if (AddUpPair(detail::NegatedLoAndHi(x), detail::NegatedLoAndHi(y), sum))
+    return detail::FromNegatedLoAndHi(sum);
+#endif
   if (x.IsEmpty() || y.IsEmpty()) return Interval::Empty();
   ExactRounding rnd;
   return Interval(rnd.add_down(x.lo(), y.lo()), rnd.add_up(x.hi(), y.hi()));
 }
 inline Interval operator-(const Interval& x, const Interval& y) {
+#if defined(__SSE2__)
+  __m128d sum;
+  if (AddUpPair(detail::NegatedLoAndHi(x), detail::HiAndNegatedLo(y), sum))
+    return detail::FromNegatedLoAndHi(sum);
+#endif
   if (x.IsEmpty() || y.IsEmpty()) return Interval::Empty();
   ExactRounding rnd;
   return Interval(rnd.sub_down(x.lo(), y.hi()), rnd.sub_up(x.hi(), y.lo()));

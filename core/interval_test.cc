@@ -4,10 +4,14 @@
 // Random soundness against MPFR is in core/interval_oracle_test.cc.
 #include "core/interval.h"
 
+#include "core/random.h"
+
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 #include <sstream>
@@ -118,6 +122,48 @@ TEST(IntervalArithmetic, RoundsOutward) {
   // Overflow goes to inf on the outer side, DBL_MAX on the inner one.
   ExpectBounds(Interval(kMax) + Interval(kMax), kMax, kInf);
   ExpectBounds(Interval(-kMax) * Interval(kMax), -kInf, -kMax);
+}
+
+// operator+ and operator- take a two-lane SSE2 path for finite operands
+// below 2^1020 and the scalar ExactRounding calls otherwise: both must give
+// the same bits (signed zeros included) on each side of that boundary.
+double AnyBound(RandomEngine& g) {
+  const auto pick = UniformInt(g, 0, 9);
+  const double sign = UniformInt(g, 0, 1) ? 1.0 : -1.0;
+  if (pick < 4) return sign * std::ldexp(1 + UniformReal(g, 0, 1), UniformInt(g, -60, 60));
+  if (pick < 6) return sign * std::ldexp(1 + UniformReal(g, 0, 1), UniformInt(g, 1015, 1023));
+  if (pick < 7) return sign * std::bit_cast<double>(UniformInt(g, 1, (std::int64_t{1} << 53)));
+  if (pick < 8) return sign * 0.0;
+  if (pick < 9) return sign * StepUp(0x1p1020, UniformInt(g, -2, 2) + 2);
+  return sign * UniformInt(g, 0, 8);
+}
+
+Interval AnyInterval(RandomEngine& g) {
+  if (UniformInt(g, 0, 49) == 0) return Interval::Empty();
+  double a = AnyBound(g), b = UniformInt(g, 0, 3) ? AnyBound(g) : a;
+  if (UniformInt(g, 0, 19) == 0) (UniformInt(g, 0, 1) ? a : b) = kInf;
+  return Interval(std::fmin(a, b), std::fmax(a, b));
+}
+
+void ExpectSameBits(const Interval& got, const Interval& want) {
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(got.lo()), std::bit_cast<std::uint64_t>(want.lo()))
+      << got << " vs " << want;
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(got.hi()), std::bit_cast<std::uint64_t>(want.hi()))
+      << got << " vs " << want;
+}
+
+TEST(IntervalArithmetic, SumAndDifferenceMatchTheScalarRoundingBitForBit) {
+  RandomEngine g(20261204);
+  ExactRounding rnd;
+  for (int i = 0; i < 200000; ++i) {
+    const Interval x = AnyInterval(g), y = AnyInterval(g);
+    const bool empty = x.IsEmpty() || y.IsEmpty();
+    ExpectSameBits(x + y, empty ? Interval::Empty()
+                                : Interval(rnd.add_down(x.lo(), y.lo()), rnd.add_up(x.hi(), y.hi())));
+    ExpectSameBits(x - y, empty ? Interval::Empty()
+                                : Interval(rnd.sub_down(x.lo(), y.hi()), rnd.sub_up(x.hi(), y.lo())));
+    if (HasFailure()) break;
+  }
 }
 
 TEST(IntervalDivision, ZeroInTheInterior) {

@@ -21,6 +21,9 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace icp {
 
@@ -55,6 +58,38 @@ inline double StepDown(double x, int ulps) { return -StepUp(-x, ulps); }
 // Below this magnitude an FMA residual may underflow and no longer be exact;
 // results there are widened by one ulp unconditionally.
 inline constexpr double kResidualExactThreshold = 0x1p-960;
+
+// Two of ExactRounding::add_up's usual cases at once, one per lane of an
+// SSE2 register: an interval sum or difference needs two rounded-up
+// additions (its lower bound is -add_up(-a, -b)), and doing them side by
+// side takes half the instructions of the hottest operation of every revise.
+// Returns false, leaving sum alone, unless every operand is finite and below
+// 2^1020 in magnitude (and always without SSE2); the scalar add_up handles
+// the rest. Bit for bit add_up's result: the same operations in the same
+// order.
+#if defined(__SSE2__)
+inline bool AddUpPair(__m128d x, __m128d y, __m128d& sum) {
+  const __m128d magnitude = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffff));
+  const __m128d limit = _mm_set1_pd(0x1p1020);
+  const __m128d small = _mm_and_pd(_mm_cmplt_pd(_mm_and_pd(x, magnitude), limit),
+                                   _mm_cmplt_pd(_mm_and_pd(y, magnitude), limit));
+  if (_mm_movemask_pd(small) != 3) return false;  // NaN compares false too
+  // Knuth's TwoSum per lane, as in add_up.
+  const __m128d s = _mm_add_pd(x, y);
+  const __m128d y_part = _mm_sub_pd(s, x);
+  const __m128d x_part = _mm_sub_pd(s, y_part);
+  const __m128d err = _mm_add_pd(_mm_sub_pd(x, x_part), _mm_sub_pd(y, y_part));
+  // err > 0 only when s is inexact, so finite and not zero: the next double
+  // up is one step of its bit pattern, +1 for s > 0 and -1 for s < 0 (the
+  // sign copied over each 64-bit lane, or 1).
+  const __m128i bits = _mm_castpd_si128(s);
+  const __m128i negative = _mm_shuffle_epi32(_mm_srai_epi32(bits, 31), 0xf5);
+  const __m128i step = _mm_or_si128(negative, _mm_set1_epi64x(1));
+  const __m128i up = _mm_castpd_si128(_mm_cmpgt_pd(err, _mm_setzero_pd()));
+  sum = _mm_castsi128_pd(_mm_add_epi64(bits, _mm_and_si128(step, up)));
+  return true;
+}
+#endif
 
 // The rounding policy plugged into boost::numeric::interval (see interval.h).
 struct ExactRounding {
