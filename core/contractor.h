@@ -105,8 +105,7 @@ ContractStatus StatusOf(const Box& before, const Box& after);
 // ratio times its width (or became bounded).
 inline bool ShrankByMoreThan(const Interval& before, const Interval& after, double ratio) {
   if (after.IsEmpty()) return !before.IsEmpty();
-  const double wb = before.Width();
-  const double wa = after.Width();
+  const auto [wb, wa] = Widths(before, after);
   if (wb == kInf) return wa < kInf;
   return wb - wa > ratio * wb;
 }

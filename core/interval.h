@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <iosfwd>
 #include <string>
+#include <utility>
 
 #include "core/rounding.h"
 
@@ -134,6 +135,18 @@ std::ostream& operator<<(std::ostream& os, const Interval& x);
 inline double Interval::Width() const {
   if (IsEmpty()) return 0;
   return ExactRounding().sub_up(hi(), lo());
+}
+
+// x.Width() and y.Width(), bit for bit, in one SSE2 register where both are
+// finite below 2^1020 (propagation compares a variable's widths before and
+// after each revise that moved it).
+inline std::pair<double, double> Widths(const Interval& x, const Interval& y) {
+#if defined(__SSE2__)
+  __m128d w;
+  if (AddUpPair(_mm_set_pd(y.hi(), x.hi()), _mm_set_pd(-y.lo(), -x.lo()), w))
+    return {_mm_cvtsd_f64(w), _mm_cvtsd_f64(_mm_unpackhi_pd(w, w))};
+#endif
+  return {x.Width(), y.Width()};
 }
 
 inline double Interval::Mag() const {

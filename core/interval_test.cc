@@ -124,8 +124,8 @@ TEST(IntervalArithmetic, RoundsOutward) {
   ExpectBounds(Interval(-kMax) * Interval(kMax), -kInf, -kMax);
 }
 
-// operator+ and operator- take a two-lane SSE2 path for finite operands
-// below 2^1020 and the scalar ExactRounding calls otherwise: both must give
+// operator+, operator- and Widths take a two-lane SSE2 path for finite
+// operands below 2^1020 and the scalar ExactRounding calls otherwise: both give
 // the same bits (signed zeros included) on each side of that boundary.
 double AnyBound(RandomEngine& g) {
   const auto pick = UniformInt(g, 0, 9);
@@ -152,7 +152,7 @@ void ExpectSameBits(const Interval& got, const Interval& want) {
       << got << " vs " << want;
 }
 
-TEST(IntervalArithmetic, SumAndDifferenceMatchTheScalarRoundingBitForBit) {
+TEST(IntervalArithmetic, PairedPathsMatchTheScalarRoundingBitForBit) {
   RandomEngine g(20261204);
   ExactRounding rnd;
   for (int i = 0; i < 200000; ++i) {
@@ -162,6 +162,9 @@ TEST(IntervalArithmetic, SumAndDifferenceMatchTheScalarRoundingBitForBit) {
                                 : Interval(rnd.add_down(x.lo(), y.lo()), rnd.add_up(x.hi(), y.hi())));
     ExpectSameBits(x - y, empty ? Interval::Empty()
                                 : Interval(rnd.sub_down(x.lo(), y.hi()), rnd.sub_up(x.hi(), y.lo())));
+    const auto [wx, wy] = Widths(x, y);
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(wx), std::bit_cast<std::uint64_t>(x.Width())) << x;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(wy), std::bit_cast<std::uint64_t>(y.Width())) << y;
     if (HasFailure()) break;
   }
 }

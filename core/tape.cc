@@ -311,17 +311,17 @@ Interval Tape::ForwardIncremental(const Box& box, ForwardMemory& memory,
       const int s = recompute_slots_[k];
       const TapeInstr& in = code_[s];
       Interval& z = memory.slots_[s];
-      memory.unbounded_ -= unbounded(s, z);
       if (in.op == Op::kVar) {
-        z = box[in.n];
+        z = box[in.n];  // variables are not counted in unbounded_
       } else {
+        const bool was_unbounded = !z.IsBounded();
         z = EvalOp(in.op, memory.slots_[in.a], memory.slots_[in.b >= 0 ? in.b : in.a], in.n);
+        memory.unbounded_ += static_cast<int>(!z.IsBounded()) - static_cast<int>(was_unbounded);
       }
       if (z.IsEmpty()) {
         memory.slots_.clear();
         return Interval::Empty();
       }
-      memory.unbounded_ += unbounded(s, z);
     }
   }
   std::copy(memory.slots_.begin(), memory.slots_.end(), slots.begin());
