@@ -134,7 +134,7 @@ double AnyBound(RandomEngine& g) {
   if (pick < 6) return sign * std::ldexp(1 + UniformReal(g, 0, 1), UniformInt(g, 1015, 1023));
   if (pick < 7) return sign * std::bit_cast<double>(UniformInt(g, 1, (std::int64_t{1} << 53)));
   if (pick < 8) return sign * 0.0;
-  if (pick < 9) return sign * StepUp(0x1p1020, UniformInt(g, -2, 2) + 2);
+  if (pick < 9) return sign * StepUp(StepDown(0x1p1020, 2), UniformInt(g, 0, 4));  // 2^1020 +- 2 ulps
   return sign * UniformInt(g, 0, 8);
 }
 

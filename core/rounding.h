@@ -64,8 +64,8 @@ inline constexpr double kResidualExactThreshold = 0x1p-960;
 // additions (its lower bound is -add_up(-a, -b)), and doing them side by
 // side takes half the instructions of the hottest operation of every revise.
 // Returns false, leaving sum alone, unless every operand is finite and below
-// 2^1020 in magnitude (and always without SSE2); the scalar add_up handles
-// the rest. Bit for bit add_up's result: the same operations in the same
+// 2^1020 in magnitude; the scalar add_up handles the rest (and everything on
+// processors without SSE2, where this function does not exist). Bit for bit add_up's result: the same operations in the same
 // order.
 #if defined(__SSE2__)
 inline bool AddUpPair(__m128d x, __m128d y, __m128d& sum) {
