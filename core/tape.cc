@@ -80,6 +80,23 @@ Tape::Tape(const ExprGraph& graph, const Constraint& constraint) : range_(constr
     AppendDependentSlots(code_, [var](int n) { return n == var; }, dependent_slots_);
     dependent_begin_.push_back(static_cast<int>(dependent_slots_.size()));
   }
+  // The sweeps' code: an operand that depends on the variable is read from
+  // the lane, at its place among the dependent slots.
+  for (std::size_t i = 0; i < variables_.size(); ++i) {
+    std::vector<int> lane_of(code_.size(), -1);
+    for (int k = dependent_begin_[i]; k < dependent_begin_[i + 1]; ++k)
+      lane_of[dependent_slots_[k]] = k - dependent_begin_[i];
+    auto operand = [&lane_of](int slot) { return lane_of[slot] >= 0 ? ~lane_of[slot] : slot; };
+    for (int k = dependent_begin_[i]; k < dependent_begin_[i + 1]; ++k) {
+      const TapeInstr& in = code_[dependent_slots_[k]];
+      if (in.op == Op::kVar) {
+        univariate_code_.push_back({Op::kVar, 0, 0, in.n});
+        continue;
+      }
+      const int a = operand(in.a);
+      univariate_code_.push_back({in.op, a, in.b >= 0 ? operand(in.b) : a, in.n});
+    }
+  }
   if (variables_.size() <= kMaskVariables) {
     for (int m = 0; m < (1 << variables_.size()); ++m) {
       recompute_begin_.push_back(static_cast<int>(recompute_slots_.size()));
@@ -105,43 +122,91 @@ int Tape::Occurrences(int var) const {
   return occurrences_[it - variables_.begin()];
 }
 
-std::span<const int> Tape::DependentSlots(int var) const {
-  auto it = std::lower_bound(variables_.begin(), variables_.end(), var);
-  if (it == variables_.end() || *it != var) return {};
+Tape::UnivariateCode Tape::Univariate(int var) const {
+  // A constraint has few variables: a linear search is the quickest.
+  const auto it = std::find(variables_.begin(), variables_.end(), var);
+  if (it == variables_.end()) return {};
   const int i = static_cast<int>(it - variables_.begin());
-  return std::span<const int>(dependent_slots_.data() + dependent_begin_[i],
-                              dependent_begin_[i + 1] - dependent_begin_[i]);
+  const int begin = dependent_begin_[i], count = dependent_begin_[i + 1] - begin;
+  return {std::span<const int>(dependent_slots_.data() + begin, count),
+          std::span<const UnivariateInstr>(univariate_code_.data() + begin, count)};
 }
 
-Interval Tape::ForwardUnivariate(std::span<const int> dependent, const Interval& x,
-                                 std::vector<Interval>& slots) const {
+namespace {
+// An operand of a univariate sweep: a slot of the Forward or a lane value.
+inline const Interval& Operand(int ref, const std::vector<Interval>& slots, const Interval* lane) {
+  return ref >= 0 ? slots[ref] : lane[~ref];
+}
+
+// The sweep of ForwardUnivariate from code[begin] on, lane[0 .. begin)
+// already computed.
+Interval SweepUnivariate(std::span<const UnivariateInstr> code, std::size_t begin,
+                         const Interval& x, const std::vector<Interval>& slots, Interval* lane) {
+  for (std::size_t k = begin; k < code.size(); ++k) {
+    const UnivariateInstr& in = code[k];
+    if (in.op == Op::kVar) {
+      lane[k] = x;
+      continue;
+    }
+    lane[k] = EvalOp(in.op, Operand(in.a, slots, lane), Operand(in.b, slots, lane), in.n);
+    if (lane[k].IsEmpty()) return Interval::Empty();
+  }
+  return lane[code.size() - 1];
+}
+}  // namespace
+
+Interval Tape::ForwardUnivariate(std::span<const UnivariateInstr> code, const Interval& x,
+                                 const std::vector<Interval>& slots, Interval* lane) {
   if (x.IsEmpty()) return Interval::Empty();
-  for (int s : dependent) {
-    const TapeInstr& in = code_[s];
-    Interval& z = slots[s];
-    if (in.op == Op::kVar) {
-      z = x;
-      continue;
-    }
-    z = EvalOp(in.op, slots[in.a], slots[in.b >= 0 ? in.b : in.a], in.n);
-    if (z.IsEmpty()) return Interval::Empty();
-  }
-  return slots[size() - 1];
+  return SweepUnivariate(code, 0, x, slots, lane);
 }
 
-Interval Tape::DerivativeUnivariate(std::span<const int> dependent,
-                                    const std::vector<Interval>& slots,
-                                    std::vector<Interval>& dslots) const {
-  for (int s : dependent) {
-    const TapeInstr& in = code_[s];
+void Tape::ForwardUnivariatePair(std::span<const UnivariateInstr> code, const Interval& x,
+                                 const Interval& y, const std::vector<Interval>& slots,
+                                 Interval* lane_x, Interval* lane_y, Interval* fx, Interval* fy) {
+  if (x.IsEmpty() || y.IsEmpty()) {
+    *fx = ForwardUnivariate(code, x, slots, lane_x);
+    *fy = ForwardUnivariate(code, y, slots, lane_y);
+    return;
+  }
+  // Both lanes step together until one of them is empty; the other then
+  // finishes alone.
+  for (std::size_t k = 0; k < code.size(); ++k) {
+    const UnivariateInstr& in = code[k];
     if (in.op == Op::kVar) {
-      dslots[s] = Interval(1.0);
+      lane_x[k] = x;
+      lane_y[k] = y;
       continue;
     }
-    const int b = in.b >= 0 ? in.b : in.a;
-    dslots[s] = DerivOp(in.op, slots[in.a], slots[b], slots[s], dslots[in.a], dslots[b], in.n);
+    lane_x[k] = EvalOp(in.op, Operand(in.a, slots, lane_x), Operand(in.b, slots, lane_x), in.n);
+    lane_y[k] = EvalOp(in.op, Operand(in.a, slots, lane_y), Operand(in.b, slots, lane_y), in.n);
+    const bool x_empty = lane_x[k].IsEmpty(), y_empty = lane_y[k].IsEmpty();
+    if (x_empty || y_empty) {
+      *fx = x_empty ? Interval::Empty() : SweepUnivariate(code, k + 1, x, slots, lane_x);
+      *fy = y_empty ? Interval::Empty() : SweepUnivariate(code, k + 1, y, slots, lane_y);
+      return;
+    }
   }
-  return dslots[size() - 1];
+  *fx = lane_x[code.size() - 1];
+  *fy = lane_y[code.size() - 1];
+}
+
+Interval Tape::DerivativeUnivariate(std::span<const UnivariateInstr> code,
+                                    const std::vector<Interval>& slots, const Interval* lane,
+                                    Interval* dlane) {
+  // The slots that do not depend on var have derivative 0.
+  static const Interval kZero(0.0);
+  auto derivative = [dlane](int ref) -> const Interval& { return ref >= 0 ? kZero : dlane[~ref]; };
+  for (std::size_t k = 0; k < code.size(); ++k) {
+    const UnivariateInstr& in = code[k];
+    if (in.op == Op::kVar) {
+      dlane[k] = Interval(1.0);
+      continue;
+    }
+    dlane[k] = DerivOp(in.op, Operand(in.a, slots, lane), Operand(in.b, slots, lane), lane[k],
+                       derivative(in.a), derivative(in.b), in.n);
+  }
+  return dlane[code.size() - 1];
 }
 
 template <bool kTrackBounded>

@@ -21,6 +21,16 @@ struct TapeInstr {
   int n = 0;   // variable index (kVar) or exponent (kPow)
 };
 
+// One step of a univariate sweep (Tape::Univariate): an operation whose
+// operands are either slots of the Forward on the box (index >= 0) or earlier
+// values of the sweep's lane (~k, the k-th); or the variable itself (kVar).
+struct UnivariateInstr {
+  Op op;
+  int a = 0;
+  int b = 0;  // a again for unary operations
+  int n = 0;  // kPow's exponent
+};
+
 // A constraint's forward values kept from one revision to the next (see
 // Tape::ReviseIncremental), with the variable domains they were computed on.
 class ForwardMemory {
@@ -60,22 +70,35 @@ class Tape {
                                  std::vector<Interval>& dslots, Interval* derivative) const;
   // Incremental evaluation for a univariate search over variable var (BC3's
   // bound search), where only var's value changes between evaluations: after
-  // a Forward on the box, ForwardUnivariate and DerivativeUnivariate sweep
-  // only DependentSlots(var); the other slots keep their values, and their
-  // derivatives with respect to var are 0 (the caller's dslots must hold 0
-  // there). The results are those of Forward and ForwardWithDerivative on
-  // the box with var set to x, bit for bit.
+  // a Forward on the box, the univariate sweeps evaluate only the slots that
+  // depend on var, into a lane of their own (lane[k]: the k-th of them), and
+  // read the other slots from the Forward, which they leave untouched. The
+  // results are those of Forward and ForwardWithDerivative on the box with
+  // var set to x, bit for bit.
   // The slots that depend on var (its own and every operation above them),
-  // ascending; empty if var does not occur.
-  std::span<const int> DependentSlots(int var) const;
-  // The root's enclosure with var = x; dependent = DependentSlots(var), and
-  // slots as left by Forward (and any ForwardUnivariate on var since).
-  Interval ForwardUnivariate(std::span<const int> dependent, const Interval& x,
-                             std::vector<Interval>& slots) const;
-  // The derivative's enclosure at the last ForwardUnivariate, which must have
-  // returned a non-empty enclosure.
-  Interval DerivativeUnivariate(std::span<const int> dependent, const std::vector<Interval>& slots,
-                                std::vector<Interval>& dslots) const;
+  // ascending, and their instructions in the same order with operands
+  // renamed for the sweeps (see UnivariateInstr); empty if var does not
+  // occur. The last slot is the root.
+  struct UnivariateCode {
+    std::span<const int> slots;
+    std::span<const UnivariateInstr> code;
+  };
+  UnivariateCode Univariate(int var) const;
+  // The root's enclosure with var = x; slots hold a Forward on the box, and
+  // lane receives code.size() values (not all of them if the result is empty).
+  static Interval ForwardUnivariate(std::span<const UnivariateInstr> code, const Interval& x,
+                                    const std::vector<Interval>& slots, Interval* lane);
+  // Two of those sweeps in one pass (var = x into lane_x, var = y into
+  // lane_y), for the two edge tests of a bound search.
+  static void ForwardUnivariatePair(std::span<const UnivariateInstr> code, const Interval& x,
+                                    const Interval& y, const std::vector<Interval>& slots,
+                                    Interval* lane_x, Interval* lane_y, Interval* fx, Interval* fy);
+  // The derivative's enclosure with respect to var at the lane of a
+  // ForwardUnivariate that returned a non-empty enclosure; dlane receives
+  // code.size() values.
+  static Interval DerivativeUnivariate(std::span<const UnivariateInstr> code,
+                                       const std::vector<Interval>& slots, const Interval* lane,
+                                       Interval* dlane);
   // HC4Revise = Forward + Backward. Returns false when box has no solution.
   // If idempotent is given, it is set to whether a second Revise right after
   // this one could narrow nothing more (see idempotent_when_bounded()): the
@@ -138,6 +161,7 @@ class Tape {
   // at dependent_slots_[dependent_begin_[i] .. dependent_begin_[i + 1]).
   std::vector<int> dependent_slots_;
   std::vector<int> dependent_begin_;
+  std::vector<UnivariateInstr> univariate_code_;  // parallel to dependent_slots_
   Interval range_;
   bool idempotent_when_bounded_ = false;
   bool has_partial_ops_ = false;  // sqrt or log: Backward sweeps every slot

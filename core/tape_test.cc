@@ -170,7 +170,8 @@ TEST(TapeTest, ReviseClaimsIdempotenceOnlyWhenItHolds) {
 // The incremental sweeps of a univariate search, after one Forward on the
 // box, give what the full sweeps give on the box with the variable set,
 // including empty results (sqrt and division undefined on part of the
-// domain) and derivatives.
+// domain) and derivatives; paired sweeps give what two single ones give, and
+// none of them writes to the Forward's slots.
 TEST(TapeTest, UnivariateSweepsMatchTheFullSweeps) {
   ConstraintSystem csp;
   Expr x = csp.AddVariable("x", {-2, 3});
@@ -178,25 +179,41 @@ TEST(TapeTest, UnivariateSweepsMatchTheFullSweeps) {
   Expr z = csp.AddVariable("z", {-1, 4});
   csp.AddConstraint(Sqrt(x) * Cos(y + z) + x / (z - 1.0) + Sqr(y), Interval(0.0));
   Tape tape(csp.graph(), csp.constraints()[0]);
-  std::vector<Interval> full, dfull, slots, dslots;
+  std::vector<Interval> full, dfull, slots;
   const Interval values[] = {{-2, 3}, {-2, -1}, {0, 0}, {1, 1}, {0.25, 2.5}, {2, 3}, {-1, 4}};
+  auto same = [](const Interval& a, const Interval& b) {
+    return a.IsEmpty() ? b.IsEmpty() : !b.IsEmpty() && a.lo() == b.lo() && a.hi() == b.hi();
+  };
   for (int var : tape.variables()) {
     ASSERT_FALSE(tape.Forward(csp.domains(), slots).IsEmpty());
-    dslots.assign(tape.size(), Interval(0.0));
-    const std::span<const int> dependent = tape.DependentSlots(var);
-    EXPECT_FALSE(dependent.empty());
+    const std::vector<Interval> forward = slots;
+    const Tape::UnivariateCode univariate = tape.Univariate(var);
+    const std::span<const UnivariateInstr> code = univariate.code;
+    ASSERT_EQ(code.size(), univariate.slots.size());
+    ASSERT_FALSE(code.empty());
+    EXPECT_EQ(univariate.slots.back(), tape.size() - 1);
+    std::vector<Interval> lane(code.size()), other(code.size()), dlane(code.size());
     for (const Interval& v : values) {
       Box box = csp.domains();
       box[var] = v;
       Interval d_full;
       const Interval f_full = tape.ForwardWithDerivative(box, var, full, dfull, &d_full);
-      const Interval f = tape.ForwardUnivariate(dependent, v, slots);
-      ASSERT_EQ(f.IsEmpty(), f_full.IsEmpty()) << "var " << var << " at " << v;
+      const Interval f = Tape::ForwardUnivariate(code, v, slots, lane.data());
+      ASSERT_TRUE(same(f, f_full)) << "var " << var << " at " << v;
+      for (const Interval& w : values) {
+        Interval fv, fw;
+        Tape::ForwardUnivariatePair(code, v, w, slots, other.data(), dlane.data(), &fv, &fw);
+        EXPECT_TRUE(same(fv, f_full)) << "var " << var << " at " << v << " paired with " << w;
+        EXPECT_TRUE(same(fw, Tape::ForwardUnivariate(code, w, slots, dlane.data())))
+            << "var " << var << " at " << w << " paired with " << v;
+      }
       if (f.IsEmpty()) continue;
-      EXPECT_TRUE(f.lo() == f_full.lo() && f.hi() == f_full.hi()) << "var " << var << " at " << v;
-      const Interval d = tape.DerivativeUnivariate(dependent, slots, dslots);
+      Tape::ForwardUnivariate(code, v, slots, lane.data());
+      const Interval d = Tape::DerivativeUnivariate(code, slots, lane.data(), dlane.data());
       EXPECT_TRUE(d == d_full) << "var " << var << " at " << v;
     }
+    for (std::size_t s = 0; s < slots.size(); ++s)
+      EXPECT_TRUE(SameBits(slots[s], forward[s])) << "slot " << s << " written";
   }
 }
 

@@ -23,35 +23,35 @@ bool BoxNarrower::Small(const Interval& j) const {
   return j.IsBounded() && j.Width() <= epsilon_ * std::max(1.0, j.Mag());
 }
 
-void BoxNarrower::RestoreEntry() {
-  for (std::size_t i = 0; i < dependent_.size(); ++i) (*slots_)[dependent_[i]] = saved_[i];
-}
-
-bool BoxNarrower::Consistent(const Tape& tape, int var, const Interval& j) {
+bool BoxNarrower::Consistent(const Tape& tape, const Interval& j) {
   // On the whole domain (Newton's first step after a failed edge test) the
-  // caller's Forward, saved on entry, is the evaluation: restore it.
+  // caller's Forward is the evaluation: the lane takes its dependent slots.
   if (SameBits(j, entry_)) {
-    RestoreEntry();
-    return !Intersect((*slots_)[tape.size() - 1], tape.range()).IsEmpty();
+    for (std::size_t k = 0; k < dependent_.size(); ++k) lane_[k] = (*slots_)[dependent_[k]];
+    return !Intersect(lane_[code_.size() - 1], tape.range()).IsEmpty();
   }
-  return !Intersect(tape.ForwardUnivariate(dependent_, j, *slots_), tape.range()).IsEmpty();
+  return !Intersect(Tape::ForwardUnivariate(code_, j, *slots_, lane_.data()), tape.range())
+              .IsEmpty();
 }
 
-Interval BoxNarrower::Newton(const Tape& tape, int var, Interval j, WorkCounters& work) {
+inline Interval BoxNarrower::EdgeSlice(const Interval& j, bool leftward) const {
+  const double b = leftward ? j.lo() : j.hi();
+  const double slice = epsilon_ * std::max(1.0, std::fabs(b));
+  return leftward ? Interval(b, std::min(j.hi(), b + slice)) : Interval(std::max(j.lo(), b - slice), b);
+}
+
+Interval BoxNarrower::Newton(const Tape& tape, Interval j, WorkCounters& work) {
   for (int step = 0; step < 8 && !j.IsEmpty(); ++step) {
     ++work.newton_steps;
-    if (!Consistent(tape, var, j)) return Interval::Empty();
+    if (!Consistent(tape, j)) return Interval::Empty();
     if (Small(j)) return j;
     // Mean value form: f(t) - f(m) = f'(xi) (t - m), with f(t) in range. The
-    // derivative comes from the slots of the evaluation on j, before the
-    // evaluation at m overwrites them.
-    if (!dslots_zeroed_) {  // the derivatives of the slots that do not depend on var
-      dslots_.assign(tape.size(), Interval(0.0));
-      dslots_zeroed_ = true;
-    }
-    const Interval derivative = tape.DerivativeUnivariate(dependent_, *slots_, dslots_);
+    // derivative comes from the lane of the evaluation on j, before the
+    // evaluation at m overwrites it.
+    const Interval derivative =
+        Tape::DerivativeUnivariate(code_, *slots_, lane_.data(), dlane_.data());
     const double m = j.Mid();
-    Interval fm = tape.ForwardUnivariate(dependent_, Interval(m), *slots_);
+    Interval fm = Tape::ForwardUnivariate(code_, Interval(m), *slots_, lane_.data());
     if (fm.IsEmpty()) return j;  // f undefined at m: no Newton step
     Interval next = Interval(m) + DivideRelational(j - Interval(m), tape.range() - fm, derivative);
     next = Intersect(j, next);
@@ -65,28 +65,24 @@ Interval BoxNarrower::Newton(const Tape& tape, int var, Interval j, WorkCounters
   return j;
 }
 
-std::optional<double> BoxNarrower::OuterBound(const Tape& tape, int var, const Interval& x,
-                                              bool leftward, WorkCounters& work) {
+std::optional<double> BoxNarrower::OuterBound(const Tape& tape, const Interval& x, bool leftward,
+                                              const std::optional<EdgeTest>& known,
+                                              WorkCounters& work) {
   auto outer = [leftward](const Interval& j) { return leftward ? j.lo() : j.hi(); };
   // The edge slice of a piece: if the constraint can hold there, the piece's
   // outer bound is a quasi-zero.
   auto edge_consistent = [&](const Interval& j) {
-    if (!j.IsBounded()) return false;
-    const double b = outer(j);
-    const double slice = epsilon_ * std::max(1.0, std::fabs(b));
-    Interval edge = leftward ? Interval(b, std::min(j.hi(), b + slice))
-                             : Interval(std::max(j.lo(), b - slice), b);
-    return Consistent(tape, var, edge);
+    return j.IsBounded() && Consistent(tape, EdgeSlice(j, leftward));
   };
   // The bound is already a quasi-zero: the usual case at a fixpoint.
-  if (edge_consistent(x)) return outer(x);
+  if (known ? known->consistent : edge_consistent(x)) return outer(x);
   stack_.clear();
   stack_.push_back(x);
   int bisections = 0;
   while (!stack_.empty()) {
     Interval j = stack_.back();
     stack_.pop_back();
-    j = Newton(tape, var, j, work);
+    j = Newton(tape, j, work);
     if (j.IsEmpty()) continue;
     // The first piece whose edge can hold a solution gives the bound: refining
     // inside it would move the bound by less than a slice.
@@ -117,25 +113,46 @@ std::optional<double> BoxNarrower::OuterBound(const Tape& tape, int var, const I
 bool BoxNarrower::Narrow(const Tape& tape, int var, Box& box, std::vector<Interval>& slots,
                          WorkCounters& work) {
   // Only var changes during the search: the other slots keep their values
-  // from the caller's Forward, and only the dependent ones are swept.
+  // from the caller's Forward, and only the dependent ones are swept, into
+  // the lanes; the caller's slots change only if var is narrowed.
   slots_ = &slots;
-  dependent_ = tape.DependentSlots(var);
-  dslots_zeroed_ = false;
-  saved_.resize(dependent_.size());
-  for (std::size_t i = 0; i < dependent_.size(); ++i) saved_[i] = slots[dependent_[i]];
+  const Tape::UnivariateCode univariate = tape.Univariate(var);
+  code_ = univariate.code;
+  dependent_ = univariate.slots;
+  if (lane_.size() < code_.size()) {
+    lane_.resize(code_.size());
+    other_lane_.resize(code_.size());
+    dlane_.resize(code_.size());
+  }
   const Interval x = box[var];
   entry_ = x;
-  std::optional<double> lo = OuterBound(tape, var, x, true, work);
+  // Both edges of x in one sweep: the right one is x's own edge again unless
+  // the left bound moves by nearly the whole domain.
+  std::optional<EdgeTest> left_edge, right_edge;
+  if (x.IsBounded()) {
+    left_edge = EdgeTest{EdgeSlice(x, true)};
+    right_edge = EdgeTest{EdgeSlice(x, false)};
+    Interval f_left, f_right;
+    Tape::ForwardUnivariatePair(code_, left_edge->edge, right_edge->edge, slots, lane_.data(),
+                                other_lane_.data(), &f_left, &f_right);
+    left_edge->consistent = !Intersect(f_left, tape.range()).IsEmpty();
+    right_edge->consistent = !Intersect(f_right, tape.range()).IsEmpty();
+  }
+  std::optional<double> lo = OuterBound(tape, x, true, left_edge, work);
   if (!lo) return false;
-  std::optional<double> hi = OuterBound(tape, var, Interval(*lo, x.hi()), false, work);
+  // The right edge test stands if the left bound stayed or moved less than
+  // the slice's distance from the right one.
+  const Interval rest(*lo, x.hi());
+  if (right_edge && !SameBits(rest, x) && !SameBits(EdgeSlice(rest, false), right_edge->edge))
+    right_edge.reset();
+  std::optional<double> hi = OuterBound(tape, rest, false, right_edge, work);
   if (!hi) return false;
   box[var] = Interval(*lo, *hi);
+  if (box[var] == x) return true;  // slots are still a Forward on the box
   // Leave slots as a Forward on the narrowed box.
-  if (box[var] == x) {
-    RestoreEntry();
-    return true;
-  }
-  return !tape.ForwardUnivariate(dependent_, box[var], slots).IsEmpty();
+  if (Tape::ForwardUnivariate(code_, box[var], slots, lane_.data()).IsEmpty()) return false;
+  for (std::size_t k = 0; k < dependent_.size(); ++k) slots[dependent_[k]] = lane_[k];
+  return true;
 }
 
 BC3Contractor::BC3Contractor(std::shared_ptr<const CompiledSystem> system, const BC3Params& params)

@@ -55,32 +55,40 @@ class BoxNarrower {
   // tape.Forward(box): the slots that do not depend on var are read from it,
   // and it is left as a Forward on the narrowed box, so that the variables of
   // one constraint are narrowed in turn after one evaluation. Returns false
-  // if there is no quasi-zero (no solution in box).
+  // if there is no quasi-zero (no solution in box). The two edge tests of an
+  // unchanged bound, the usual case at a fixpoint, are one paired sweep.
   bool Narrow(const Tape& tape, int var, Box& box, std::vector<Interval>& slots,
               WorkCounters& work);
 
  private:
-  // Where the constraint can hold on x = j (interval extension test).
-  bool Consistent(const Tape& tape, int var, const Interval& j);
+  // An edge slice of a bound search and whether the constraint can hold there.
+  struct EdgeTest {
+    Interval edge;
+    bool consistent = false;
+  };
+  // Where the constraint can hold on x = j (interval extension test); the
+  // lane is left with the evaluation on j.
+  bool Consistent(const Tape& tape, const Interval& j);
+  // The slice at the outer bound of j, on the left (leftward) or the right.
+  Interval EdgeSlice(const Interval& j, bool leftward) const;
   // Shrinks j with interval Newton steps; empty if j holds no solution.
-  Interval Newton(const Tape& tape, int var, Interval j, WorkCounters& work);
+  Interval Newton(const Tape& tape, Interval j, WorkCounters& work);
   // The outermost quasi-zero's bound on the left (leftward = true) or the
-  // right of x; nullopt if there is none.
-  std::optional<double> OuterBound(const Tape& tape, int var, const Interval& x, bool leftward,
-                                   WorkCounters& work);
+  // right of x; nullopt if there is none. known: the test of x's own edge
+  // slice, if it was already made.
+  std::optional<double> OuterBound(const Tape& tape, const Interval& x, bool leftward,
+                                   const std::optional<EdgeTest>& known, WorkCounters& work);
   bool Small(const Interval& j) const;
-  // Puts back the dependent slots saved on entry to Narrow (a Forward on
-  // the variable's entry domain).
-  void RestoreEntry();
 
   double epsilon_;
   int max_bisections_;
-  std::vector<Interval>* slots_ = nullptr;  // the caller's, during Narrow
-  std::vector<Interval> dslots_;
-  bool dslots_zeroed_ = false;      // the independent slots' derivatives set to 0
-  std::span<const int> dependent_;  // the tape's slots that depend on the narrowed variable
-  Interval entry_;                  // the variable's domain on entry to Narrow
-  std::vector<Interval> saved_;     // the dependent slots on entry to Narrow
+  const std::vector<Interval>* slots_ = nullptr;  // the caller's Forward, during Narrow
+  std::span<const UnivariateInstr> code_;         // the sweep of the narrowed variable
+  std::span<const int> dependent_;                // the slots it evaluates
+  Interval entry_;                                // the variable's domain on entry to Narrow
+  // The dependent slots' values of the last evaluation, of a second one (the
+  // paired edge tests) and the derivatives (Newton).
+  std::vector<Interval> lane_, other_lane_, dlane_;
   std::vector<Interval> stack_;
 };
 
