@@ -161,14 +161,12 @@ Interval Tape::ForwardUnivariate(std::span<const UnivariateInstr> code, const In
   return SweepUnivariate(code, 0, x, slots, lane);
 }
 
-void Tape::ForwardUnivariatePair(std::span<const UnivariateInstr> code, const Interval& x,
-                                 const Interval& y, const std::vector<Interval>& slots,
-                                 Interval* lane_x, Interval* lane_y, Interval* fx, Interval* fy) {
-  if (x.IsEmpty() || y.IsEmpty()) {
-    *fx = ForwardUnivariate(code, x, slots, lane_x);
-    *fy = ForwardUnivariate(code, y, slots, lane_y);
-    return;
-  }
+std::pair<Interval, Interval> Tape::ForwardUnivariatePair(std::span<const UnivariateInstr> code,
+                                                         const Interval& x, const Interval& y,
+                                                         const std::vector<Interval>& slots,
+                                                         Interval* lane_x, Interval* lane_y) {
+  if (x.IsEmpty() || y.IsEmpty())
+    return {ForwardUnivariate(code, x, slots, lane_x), ForwardUnivariate(code, y, slots, lane_y)};
   // Both lanes step together until one of them is empty; the other then
   // finishes alone.
   for (std::size_t k = 0; k < code.size(); ++k) {
@@ -182,13 +180,11 @@ void Tape::ForwardUnivariatePair(std::span<const UnivariateInstr> code, const In
     lane_y[k] = EvalOp(in.op, Operand(in.a, slots, lane_y), Operand(in.b, slots, lane_y), in.n);
     const bool x_empty = lane_x[k].IsEmpty(), y_empty = lane_y[k].IsEmpty();
     if (x_empty || y_empty) {
-      *fx = x_empty ? Interval::Empty() : SweepUnivariate(code, k + 1, x, slots, lane_x);
-      *fy = y_empty ? Interval::Empty() : SweepUnivariate(code, k + 1, y, slots, lane_y);
-      return;
+      return {x_empty ? Interval::Empty() : SweepUnivariate(code, k + 1, x, slots, lane_x),
+              y_empty ? Interval::Empty() : SweepUnivariate(code, k + 1, y, slots, lane_y)};
     }
   }
-  *fx = lane_x[code.size() - 1];
-  *fy = lane_y[code.size() - 1];
+  return {lane_x[code.size() - 1], lane_y[code.size() - 1]};
 }
 
 Interval Tape::DerivativeUnivariate(std::span<const UnivariateInstr> code,

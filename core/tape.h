@@ -7,6 +7,7 @@
 #define ICPBENCH_CORE_TAPE_H_
 
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "core/box.h"
@@ -88,11 +89,11 @@ class Tape {
   // lane receives code.size() values (not all of them if the result is empty).
   static Interval ForwardUnivariate(std::span<const UnivariateInstr> code, const Interval& x,
                                     const std::vector<Interval>& slots, Interval* lane);
-  // Two of those sweeps in one pass (var = x into lane_x, var = y into
-  // lane_y), for the two edge tests of a bound search.
-  static void ForwardUnivariatePair(std::span<const UnivariateInstr> code, const Interval& x,
-                                    const Interval& y, const std::vector<Interval>& slots,
-                                    Interval* lane_x, Interval* lane_y, Interval* fx, Interval* fy);
+  // Two of those sweeps in one pass, for the two edge tests of a bound
+  // search: the roots' enclosures with var = x (lane_x) and var = y (lane_y).
+  static std::pair<Interval, Interval> ForwardUnivariatePair(
+      std::span<const UnivariateInstr> code, const Interval& x, const Interval& y,
+      const std::vector<Interval>& slots, Interval* lane_x, Interval* lane_y);
   // The derivative's enclosure with respect to var at the lane of a
   // ForwardUnivariate that returned a non-empty enclosure; dlane receives
   // code.size() values.

@@ -132,9 +132,8 @@ bool BoxNarrower::Narrow(const Tape& tape, int var, Box& box, std::vector<Interv
   if (x.IsBounded()) {
     left_edge = EdgeTest{EdgeSlice(x, true)};
     right_edge = EdgeTest{EdgeSlice(x, false)};
-    Interval f_left, f_right;
-    Tape::ForwardUnivariatePair(code_, left_edge->edge, right_edge->edge, slots, lane_.data(),
-                                other_lane_.data(), &f_left, &f_right);
+    const auto [f_left, f_right] = Tape::ForwardUnivariatePair(
+        code_, left_edge->edge, right_edge->edge, slots, lane_.data(), other_lane_.data());
     left_edge->consistent = !Intersect(f_left, tape.range()).IsEmpty();
     right_edge->consistent = !Intersect(f_right, tape.range()).IsEmpty();
   }
