@@ -37,7 +37,9 @@ bool BoxNarrower::Consistent(const Tape& tape, const Interval& j) {
 inline Interval BoxNarrower::EdgeSlice(const Interval& j, bool leftward) const {
   const double b = leftward ? j.lo() : j.hi();
   const double slice = epsilon_ * std::max(1.0, std::fabs(b));
-  return leftward ? Interval(b, std::min(j.hi(), b + slice)) : Interval(std::max(j.lo(), b - slice), b);
+  // Ordered and finite: j is bounded, and b +- slice only overflows past j's other bound.
+  return leftward ? Interval(b, std::min(j.hi(), b + slice), Interval::kOrdered)
+                  : Interval(std::max(j.lo(), b - slice), b, Interval::kOrdered);
 }
 
 Interval BoxNarrower::Newton(const Tape& tape, Interval j, WorkCounters& work) {
