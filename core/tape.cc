@@ -122,16 +122,6 @@ int Tape::Occurrences(int var) const {
   return occurrences_[it - variables_.begin()];
 }
 
-Tape::UnivariateCode Tape::Univariate(int var) const {
-  // A constraint has few variables: a linear search is the quickest.
-  const auto it = std::find(variables_.begin(), variables_.end(), var);
-  if (it == variables_.end()) return {};
-  const int i = static_cast<int>(it - variables_.begin());
-  const int begin = dependent_begin_[i], count = dependent_begin_[i + 1] - begin;
-  return {std::span<const int>(dependent_slots_.data() + begin, count),
-          std::span<const UnivariateInstr>(univariate_code_.data() + begin, count)};
-}
-
 namespace {
 // An operand of a univariate sweep: a slot of the Forward or a lane value.
 inline const Interval& Operand(int ref, const std::vector<Interval>& slots, const Interval* lane) {

@@ -6,6 +6,7 @@
 #ifndef ICPBENCH_CORE_TAPE_H_
 #define ICPBENCH_CORE_TAPE_H_
 
+#include <algorithm>
 #include <span>
 #include <utility>
 #include <vector>
@@ -84,7 +85,17 @@ class Tape {
     std::span<const int> slots;
     std::span<const UnivariateInstr> code;
   };
-  UnivariateCode Univariate(int var) const;
+  UnivariateCode Univariate(int var) const {
+    // Inline, and a linear search over a constraint's few variables: BC3
+    // asks once per narrowing, and a call returning the struct through
+    // memory stalled on the reload.
+    const auto it = std::find(variables_.begin(), variables_.end(), var);
+    if (it == variables_.end()) return {};
+    const std::size_t i = it - variables_.begin();
+    const int begin = dependent_begin_[i], count = dependent_begin_[i + 1] - begin;
+    return {std::span<const int>(dependent_slots_.data() + begin, count),
+            std::span<const UnivariateInstr>(univariate_code_.data() + begin, count)};
+  }
   // The root's enclosure with var = x; slots hold a Forward on the box, and
   // lane receives code.size() values (not all of them if the result is empty).
   static Interval ForwardUnivariate(std::span<const UnivariateInstr> code, const Interval& x,

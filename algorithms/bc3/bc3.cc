@@ -27,10 +27,10 @@ bool BoxNarrower::Consistent(const Tape& tape, const Interval& j) {
   // On the whole domain (Newton's first step after a failed edge test) the
   // caller's Forward is the evaluation: the lane takes its dependent slots.
   if (SameBits(j, entry_)) {
-    for (std::size_t k = 0; k < dependent_.size(); ++k) lane_[k] = (*slots_)[dependent_[k]];
-    return !Intersect(lane_[code_.size() - 1], tape.range()).IsEmpty();
+    for (std::size_t k = 0; k < univariate_.slots.size(); ++k) lane_[k] = (*slots_)[univariate_.slots[k]];
+    return !Intersect(lane_[univariate_.code.size() - 1], tape.range()).IsEmpty();
   }
-  return !Intersect(Tape::ForwardUnivariate(code_, j, *slots_, lane_.data()), tape.range())
+  return !Intersect(Tape::ForwardUnivariate(univariate_.code, j, *slots_, lane_.data()), tape.range())
               .IsEmpty();
 }
 
@@ -51,9 +51,9 @@ Interval BoxNarrower::Newton(const Tape& tape, Interval j, WorkCounters& work) {
     // derivative comes from the lane of the evaluation on j, before the
     // evaluation at m overwrites it.
     const Interval derivative =
-        Tape::DerivativeUnivariate(code_, *slots_, lane_.data(), dlane_.data());
+        Tape::DerivativeUnivariate(univariate_.code, *slots_, lane_.data(), dlane_.data());
     const double m = j.Mid();
-    Interval fm = Tape::ForwardUnivariate(code_, Interval(m), *slots_, lane_.data());
+    Interval fm = Tape::ForwardUnivariate(univariate_.code, Interval(m), *slots_, lane_.data());
     if (fm.IsEmpty()) return j;  // f undefined at m: no Newton step
     Interval next = Interval(m) + DivideRelational(j - Interval(m), tape.range() - fm, derivative);
     next = Intersect(j, next);
@@ -67,9 +67,8 @@ Interval BoxNarrower::Newton(const Tape& tape, Interval j, WorkCounters& work) {
   return j;
 }
 
-std::optional<double> BoxNarrower::OuterBound(const Tape& tape, const Interval& x, bool leftward,
-                                              const std::optional<EdgeTest>& known,
-                                              WorkCounters& work) {
+bool BoxNarrower::OuterBound(const Tape& tape, const Interval& x, bool leftward,
+                             const EdgeTest* known, double* bound, WorkCounters& work) {
   auto outer = [leftward](const Interval& j) { return leftward ? j.lo() : j.hi(); };
   // The edge slice of a piece: if the constraint can hold there, the piece's
   // outer bound is a quasi-zero.
@@ -77,7 +76,10 @@ std::optional<double> BoxNarrower::OuterBound(const Tape& tape, const Interval& 
     return j.IsBounded() && Consistent(tape, EdgeSlice(j, leftward));
   };
   // The bound is already a quasi-zero: the usual case at a fixpoint.
-  if (known ? known->consistent : edge_consistent(x)) return outer(x);
+  if (known ? known->consistent : edge_consistent(x)) {
+    *bound = outer(x);
+    return true;
+  }
   stack_.clear();
   stack_.push_back(x);
   int bisections = 0;
@@ -88,13 +90,16 @@ std::optional<double> BoxNarrower::OuterBound(const Tape& tape, const Interval& 
     if (j.IsEmpty()) continue;
     // The first piece whose edge can hold a solution gives the bound: refining
     // inside it would move the bound by less than a slice.
-    if (Small(j) || edge_consistent(j)) return outer(j);
+    if (Small(j) || edge_consistent(j)) {
+      *bound = outer(j);
+      return true;
+    }
     if (bisections >= max_bisections_) {
       // Out of budget: every remaining piece may hold a solution.
-      double bound = outer(j);
+      *bound = outer(j);
       for (const Interval& rest : stack_)
-        bound = leftward ? std::min(bound, rest.lo()) : std::max(bound, rest.hi());
-      return bound;
+        *bound = leftward ? std::min(*bound, rest.lo()) : std::max(*bound, rest.hi());
+      return true;
     }
     ++bisections;
     ++work.bisections;
@@ -109,7 +114,7 @@ std::optional<double> BoxNarrower::OuterBound(const Tape& tape, const Interval& 
       stack_.push_back(high);
     }
   }
-  return std::nullopt;
+  return false;
 }
 
 bool BoxNarrower::Narrow(const Tape& tape, int var, Box& box, std::vector<Interval>& slots,
@@ -118,41 +123,42 @@ bool BoxNarrower::Narrow(const Tape& tape, int var, Box& box, std::vector<Interv
   // from the caller's Forward, and only the dependent ones are swept, into
   // the lanes; the caller's slots change only if var is narrowed.
   slots_ = &slots;
-  const Tape::UnivariateCode univariate = tape.Univariate(var);
-  code_ = univariate.code;
-  dependent_ = univariate.slots;
-  if (lane_.size() < code_.size()) {
-    lane_.resize(code_.size());
-    other_lane_.resize(code_.size());
-    dlane_.resize(code_.size());
+  univariate_ = tape.Univariate(var);
+  if (lane_.size() < univariate_.code.size()) {
+    lane_.resize(univariate_.code.size());
+    other_lane_.resize(univariate_.code.size());
+    dlane_.resize(univariate_.code.size());
   }
   const Interval x = box[var];
   entry_ = x;
   // Both edges of x in one sweep: the right one is x's own edge again unless
   // the left bound moves by nearly the whole domain.
-  std::optional<EdgeTest> left_edge, right_edge;
+  EdgeTest left_edge, right_edge;
+  const EdgeTest* left_known = nullptr;
+  const EdgeTest* right_known = nullptr;
   if (x.IsBounded()) {
-    left_edge = EdgeTest{EdgeSlice(x, true)};
-    right_edge = EdgeTest{EdgeSlice(x, false)};
+    left_edge.edge = EdgeSlice(x, true);
+    right_edge.edge = EdgeSlice(x, false);
     const auto [f_left, f_right] = Tape::ForwardUnivariatePair(
-        code_, left_edge->edge, right_edge->edge, slots, lane_.data(), other_lane_.data());
-    left_edge->consistent = !Intersect(f_left, tape.range()).IsEmpty();
-    right_edge->consistent = !Intersect(f_right, tape.range()).IsEmpty();
+        univariate_.code, left_edge.edge, right_edge.edge, slots, lane_.data(), other_lane_.data());
+    left_edge.consistent = !Intersect(f_left, tape.range()).IsEmpty();
+    right_edge.consistent = !Intersect(f_right, tape.range()).IsEmpty();
+    left_known = &left_edge;
+    right_known = &right_edge;
   }
-  std::optional<double> lo = OuterBound(tape, x, true, left_edge, work);
-  if (!lo) return false;
+  double lo, hi;
+  if (!OuterBound(tape, x, true, left_known, &lo, work)) return false;
   // The right edge test stands if the left bound stayed or moved less than
   // the slice's distance from the right one.
-  const Interval rest(*lo, x.hi());
-  if (right_edge && !SameBits(rest, x) && !SameBits(EdgeSlice(rest, false), right_edge->edge))
-    right_edge.reset();
-  std::optional<double> hi = OuterBound(tape, rest, false, right_edge, work);
-  if (!hi) return false;
-  box[var] = Interval(*lo, *hi);
+  const Interval rest(lo, x.hi());
+  if (right_known && !SameBits(rest, x) && !SameBits(EdgeSlice(rest, false), right_edge.edge))
+    right_known = nullptr;
+  if (!OuterBound(tape, rest, false, right_known, &hi, work)) return false;
+  box[var] = Interval(lo, hi);
   if (box[var] == x) return true;  // slots are still a Forward on the box
   // Leave slots as a Forward on the narrowed box.
-  if (Tape::ForwardUnivariate(code_, box[var], slots, lane_.data()).IsEmpty()) return false;
-  for (std::size_t k = 0; k < dependent_.size(); ++k) slots[dependent_[k]] = lane_[k];
+  if (Tape::ForwardUnivariate(univariate_.code, box[var], slots, lane_.data()).IsEmpty()) return false;
+  for (std::size_t k = 0; k < univariate_.slots.size(); ++k) slots[univariate_.slots[k]] = lane_[k];
   return true;
 }
 

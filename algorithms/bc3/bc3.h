@@ -20,7 +20,6 @@
 #define ICPBENCH_ALGORITHMS_BC3_BC3_H_
 
 #include <memory>
-#include <optional>
 #include <span>
 #include <vector>
 
@@ -73,18 +72,18 @@ class BoxNarrower {
   Interval EdgeSlice(const Interval& j, bool leftward) const;
   // Shrinks j with interval Newton steps; empty if j holds no solution.
   Interval Newton(const Tape& tape, Interval j, WorkCounters& work);
-  // The outermost quasi-zero's bound on the left (leftward = true) or the
-  // right of x; nullopt if there is none. known: the test of x's own edge
-  // slice, if it was already made.
-  std::optional<double> OuterBound(const Tape& tape, const Interval& x, bool leftward,
-                                   const std::optional<EdgeTest>& known, WorkCounters& work);
+  // Sets *bound to the outermost quasi-zero's bound on the left (leftward =
+  // true) or the right of x; false if there is none. known: the test of x's
+  // own edge slice, if it was already made. (Not an std::optional return:
+  // GCC returns it through a partial store and a wider load that stall.)
+  bool OuterBound(const Tape& tape, const Interval& x, bool leftward, const EdgeTest* known,
+                  double* bound, WorkCounters& work);
   bool Small(const Interval& j) const;
 
   double epsilon_;
   int max_bisections_;
   const std::vector<Interval>* slots_ = nullptr;  // the caller's Forward, during Narrow
-  std::span<const UnivariateInstr> code_;         // the sweep of the narrowed variable
-  std::span<const int> dependent_;                // the slots it evaluates
+  Tape::UnivariateCode univariate_;               // the narrowed variable's sweep
   Interval entry_;                                // the variable's domain on entry to Narrow
   // The dependent slots' values of the last evaluation, of a second one (the
   // paired edge tests) and the derivatives (Newton).
