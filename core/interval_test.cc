@@ -134,7 +134,8 @@ double AnyBound(RandomEngine& g) {
   if (pick < 6) return sign * std::ldexp(1 + UniformReal(g, 0, 1), UniformInt(g, 1015, 1023));
   if (pick < 7) return sign * std::bit_cast<double>(UniformInt(g, 1, (std::int64_t{1} << 53)));
   if (pick < 8) return sign * 0.0;
-  if (pick < 9) return sign * StepUp(StepDown(0x1p1020, 2), UniformInt(g, 0, 4));  // 2^1020 +- 2 ulps
+  // 2^1020 +- 2 ulps
+  if (pick < 9) return sign * StepUp(StepDown(0x1p1020, 2), UniformInt(g, 0, 4));
   return sign * UniformInt(g, 0, 8);
 }
 
@@ -159,9 +160,11 @@ TEST(IntervalArithmetic, PairedPathsMatchTheScalarRoundingBitForBit) {
     const Interval x = AnyInterval(g), y = AnyInterval(g);
     const bool empty = x.IsEmpty() || y.IsEmpty();
     ExpectSameBits(x + y, empty ? Interval::Empty()
-                                : Interval(rnd.add_down(x.lo(), y.lo()), rnd.add_up(x.hi(), y.hi())));
+                                : Interval(rnd.add_down(x.lo(), y.lo()),
+                                           rnd.add_up(x.hi(), y.hi())));
     ExpectSameBits(x - y, empty ? Interval::Empty()
-                                : Interval(rnd.sub_down(x.lo(), y.hi()), rnd.sub_up(x.hi(), y.lo())));
+                                : Interval(rnd.sub_down(x.lo(), y.hi()),
+                                           rnd.sub_up(x.hi(), y.lo())));
     const auto [wx, wy] = Widths(x, y);
     EXPECT_EQ(std::bit_cast<std::uint64_t>(wx), std::bit_cast<std::uint64_t>(x.Width())) << x;
     EXPECT_EQ(std::bit_cast<std::uint64_t>(wy), std::bit_cast<std::uint64_t>(y.Width())) << y;

@@ -82,11 +82,11 @@ Tape::Tape(const ExprGraph& graph, const Constraint& constraint) : range_(constr
   }
   // The sweeps' code: an operand that depends on the variable is read from
   // the lane, at its place among the dependent slots.
+  std::vector<int> lane_of(code_.size(), -1);  // -1 outside the variable's dependent slots
+  auto operand = [&lane_of](int slot) { return lane_of[slot] >= 0 ? ~lane_of[slot] : slot; };
   for (std::size_t i = 0; i < variables_.size(); ++i) {
-    std::vector<int> lane_of(code_.size(), -1);
     for (int k = dependent_begin_[i]; k < dependent_begin_[i + 1]; ++k)
       lane_of[dependent_slots_[k]] = k - dependent_begin_[i];
-    auto operand = [&lane_of](int slot) { return lane_of[slot] >= 0 ? ~lane_of[slot] : slot; };
     for (int k = dependent_begin_[i]; k < dependent_begin_[i + 1]; ++k) {
       const TapeInstr& in = code_[dependent_slots_[k]];
       if (in.op == Op::kVar) {
@@ -96,6 +96,8 @@ Tape::Tape(const ExprGraph& graph, const Constraint& constraint) : range_(constr
       const int a = operand(in.a);
       univariate_code_.push_back({in.op, a, in.b >= 0 ? operand(in.b) : a, in.n});
     }
+    for (int k = dependent_begin_[i]; k < dependent_begin_[i + 1]; ++k)
+      lane_of[dependent_slots_[k]] = -1;
   }
   if (variables_.size() <= kMaskVariables) {
     for (int m = 0; m < (1 << variables_.size()); ++m) {
@@ -158,7 +160,8 @@ std::pair<Interval, Interval> Tape::ForwardUnivariatePair(std::span<const Univar
   if (x.IsEmpty() || y.IsEmpty())
     return {ForwardUnivariate(code, x, slots, lane_x), ForwardUnivariate(code, y, slots, lane_y)};
   // Both lanes step together until one of them is empty; the other then
-  // finishes alone.
+  // finishes alone. (The step is SweepUnivariate's, written out: shared
+  // through an inline helper, BC3 executed 1.3 % more instructions.)
   for (std::size_t k = 0; k < code.size(); ++k) {
     const UnivariateInstr& in = code[k];
     if (in.op == Op::kVar) {

@@ -87,8 +87,8 @@ class Tape {
   };
   UnivariateCode Univariate(int var) const {
     // Inline, and a linear search over a constraint's few variables: BC3
-    // asks once per narrowing, and a call returning the struct through
-    // memory stalled on the reload.
+    // asks once per narrowing, and copying an out-of-line call's result
+    // into the narrower stalled on a store-forwarding reload.
     const auto it = std::find(variables_.begin(), variables_.end(), var);
     if (it == variables_.end()) return {};
     const std::size_t i = it - variables_.begin();

@@ -27,11 +27,12 @@ bool BoxNarrower::Consistent(const Tape& tape, const Interval& j) {
   // On the whole domain (Newton's first step after a failed edge test) the
   // caller's Forward is the evaluation: the lane takes its dependent slots.
   if (SameBits(j, entry_)) {
-    for (std::size_t k = 0; k < univariate_.slots.size(); ++k) lane_[k] = (*slots_)[univariate_.slots[k]];
+    for (std::size_t k = 0; k < univariate_.slots.size(); ++k)
+      lane_[k] = (*slots_)[univariate_.slots[k]];
     return !Intersect(lane_[univariate_.code.size() - 1], tape.range()).IsEmpty();
   }
-  return !Intersect(Tape::ForwardUnivariate(univariate_.code, j, *slots_, lane_.data()), tape.range())
-              .IsEmpty();
+  const Interval f = Tape::ForwardUnivariate(univariate_.code, j, *slots_, lane_.data());
+  return !Intersect(f, tape.range()).IsEmpty();
 }
 
 inline Interval BoxNarrower::EdgeSlice(const Interval& j, bool leftward) const {
@@ -157,7 +158,8 @@ bool BoxNarrower::Narrow(const Tape& tape, int var, Box& box, std::vector<Interv
   box[var] = Interval(lo, hi);
   if (box[var] == x) return true;  // slots are still a Forward on the box
   // Leave slots as a Forward on the narrowed box.
-  if (Tape::ForwardUnivariate(univariate_.code, box[var], slots, lane_.data()).IsEmpty()) return false;
+  if (Tape::ForwardUnivariate(univariate_.code, box[var], slots, lane_.data()).IsEmpty())
+    return false;
   for (std::size_t k = 0; k < univariate_.slots.size(); ++k) slots[univariate_.slots[k]] = lane_[k];
   return true;
 }
