@@ -1,6 +1,6 @@
 // Experiment specs (YAML): which algorithms, with which parameter grids, run
 // on which problems, with which seeds. specs/default.yaml is the default
-// suite; the README shows the format. A list value is a grid axis:
+// suite; docs/specs.md shows the format. A list value is a grid axis:
 //
 //   timeout_s: 300            # per run (default 600)
 //   memory_limit_mb: 4096     # per worker process (default 4096; 0: none)

@@ -1,7 +1,7 @@
 // Published vs measured, row by row: what a seed paper reports, what the
 // store measures, the rule (with its tolerance) that decides whether they
 // match, and, when they differ, the reason — measured (a number from the
-// store, or a measurement the README records, cited), known by construction
+// store, or a measurement docs/ records, cited), known by construction
 // (another implementation, machine or data set), or "not yet measured".
 // The rules are code, so the verdicts follow the stored numbers.
 #ifndef ICPBENCH_PAPER_COMPARISON_H_

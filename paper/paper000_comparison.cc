@@ -83,7 +83,7 @@ std::string BC3Reason(const GroupSummary& bc3, const GroupSummary& hc4, double b
          " bisections, where HC4 sweeps each constraint once forward and once backward. HC4 "
          "runs " + FormatNumber(hc4_published_ms / MeanMs(&hc4)) + "x faster than published, "
          "BC3 " + FormatNumber(bc3_published_ms / MeanMs(&bc3)) +
-         "x: the published ratio also reflects a slower HC4 (README, BC3).";
+         "x: the published ratio also reflects a slower HC4 (docs/reproduction/paper000.md).";
 }
 
 // Why 3B-BC4's ratio to HC4 differs: its shaving work against HC4's, from the
@@ -101,7 +101,7 @@ std::string ThreeBReason(const GroupSummary& three_b, const GroupSummary& hc4) {
          FormatNumber(MeanMs(&three_b) / MeanMs(&hc4) / work) +
          "x one of HC4's: trials propagate from the shaved variable only, later rounds start "
          "from the same bound's previous trial, and revisions inside them re-evaluate only "
-         "the slots of changed variables (README, 3B-BC4).";
+         "the slots of changed variables (docs/reproduction/paper000.md).";
 }
 
 void Table1Rows(const std::vector<const GroupSummary*>& groups, std::vector<ComparisonRow>* rows) {
@@ -126,7 +126,7 @@ void Table1Rows(const std::vector<const GroupSummary*>& groups, std::vector<Comp
             "not comparable by construction: the paper ran RealPaver's C code on an Intel Core "
             "i7 960 (3.2 GHz) over a recorded lap; these are icpbench's own algorithms on " +
             MachineOf(*hc4) +
-            " over a simulated lap (README, Paper 000 Table 1). The ratios "
+            " over a simulated lap (docs/reproduction/paper000.md). The ratios "
             "to HC4 below are the comparable columns.";
     }
     rows->push_back(r);
@@ -270,8 +270,9 @@ void Fig2Rows(const std::vector<RunRecord>& runs, std::vector<ComparisonRow>* ro
         r.reason = "measured: the same algorithm with memoryless windows (carry=none, row " +
                    std::to_string(m->second) +
                    ") reproduces the paper's fall; with carried windows each window starts from "
-                   "the previous fixpoint, which already holds what older fixes say (README, "
-                   "Fig. 2), so the paper's windows behave as memoryless ones";
+                   "the previous fixpoint, which already holds what older fixes say "
+                   "(docs/reproduction/paper000.md, Fig. 2), so the paper's windows behave as "
+                   "memoryless ones";
       else
         r.reason = kNotMeasured;
     }

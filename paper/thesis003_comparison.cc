@@ -171,7 +171,7 @@ void MarinaRows(const std::vector<RunRecord>& runs, std::vector<ComparisonRow>* 
             "not comparable by construction: the thesis ran the real Girona data set "
             "(600 m) on a 2 GHz Centrino (set membership) and in Matlab on a 2.2 GHz "
             "Core2 (the filter); here a simulated drive on " +
-            MachineOf(*g) + " (README, Marina)";
+            MachineOf(*g) + " (docs/benchmarks.md, Marina)";
     }
     rows->push_back(r);
   }
@@ -237,8 +237,9 @@ void MarinaRows(const std::vector<RunRecord>& runs, std::vector<ComparisonRow>* 
           r.reason = "measured: on all " + std::to_string(lost) +
                      " steps whose set misses the truth, auto_q took fewer outliers (step "
                      "property q) than there were (true_outliers): a wrong return agreed with "
-                     "the others, so the assumption of at most q outliers did not hold (README, "
-                     "Marina: with q at least the true outliers the truth is always kept)";
+                     "the others, so the assumption of at most q outliers did not hold "
+                     "(docs/reproduction/thesis003.md, Chapter 6: with q at least the true "
+                     "outliers the truth is always kept)";
         else if (below > 0)
           r.reason = "measured on " + std::to_string(below) + " of the " + std::to_string(lost) +
                      " steps whose set misses the truth: auto_q took fewer outliers (step "

@@ -27,7 +27,7 @@ export ASAN_OPTIONS="handle_segv=0:handle_abort=0:exitcode=86:strict_string_chec
 # report). ICPBENCH_ASAN_EXCLUDE="" runs them too.
 exclude="${ICPBENCH_ASAN_EXCLUDE-Oracle|FirstRowsForSeed1AreFixed|ShippedLogIsTheSimulatorsDrive|FirstDomainsForSeed1AreFixed}"
 if [ "${1:-}" = "--ci" ]; then
-  # CI's part (README "Sanitizers and fuzzing"): the test programs of the
+  # CI's part (docs/testing.md): the test programs of the
   # code that parses, indexes into buffers, allocates or forks (parsers,
   # tape, pavings, grids and images, store, runner, problems, the window
   # adapter, the particle filter, the accumulator), within CI's 30 minutes;

@@ -1,4 +1,4 @@
-// The command-line contract (README "Command line"): JSON fields, bounds that
+// The command-line contract (docs/cli.md): JSON fields, bounds that
 // round-trip and enclose, null for infinite bounds, exit code 2 on bad input.
 #include <gtest/gtest.h>
 
@@ -349,8 +349,7 @@ TEST(CliTest, ReportAndPlotSayWhatARunsOnlyStoreLacks) {
   std::filesystem::remove_all(dir);
 }
 
-// Resume, merge and report over stores (README "icpbench run", "The results
-// store"): a rerun retries the failed run unless --no-retry; merge and
+// Resume, merge and report over stores (docs/cli.md, docs/store.md): a rerun retries the failed run unless --no-retry; merge and
 // report refuse a missing or zero-byte store with exit 2 and write nothing.
 TEST(CliTest, RetryMergeAndReportOverStores) {
   const std::string dir = ::testing::TempDir() + "cli_stores";

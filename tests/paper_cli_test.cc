@@ -1,4 +1,4 @@
-// `icpbench paper DIR` (README "icpbench paper"): from a small store made
+// `icpbench paper DIR` (docs/figures-and-paper.md): from a small store made
 // here, the PDF exists and its text holds the numbers of the generated
 // tables (read from `icpbench report`, not typed in) and the store's
 // revision; no store exits 2, LaTeX missing exits 3, writing nothing.
