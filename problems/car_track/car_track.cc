@@ -2,6 +2,7 @@
 
 #include "problems/car_track/window.h"
 #include "problems/csv_fields.h"
+#include "problems/log_file.h"
 
 #include <algorithm>
 #include <array>
@@ -12,7 +13,6 @@
 #include <limits>
 #include <numbers>
 #include <ostream>
-#include <sstream>
 #include <stdexcept>
 #include <string_view>
 
@@ -543,15 +543,13 @@ std::vector<CarTrackRecord> ReadCarTrackLog(const std::string& path) {
   // A device or a pipe (/dev/zero, /dev/stdin) could be read without end.
   if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
     throw std::invalid_argument(path + ": is not a regular file, not a log file");
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument(path + ": cannot open the car-track log");
+  std::ifstream in = OpenLogFile(path, "car-track log");
   return ReadCarTrackLog(in, path);
 }
 
 void WriteCarTrackLog(const std::vector<CarTrackRecord>& records, std::ostream& out,
                       const std::string& comment) {
-  std::istringstream lines(comment);
-  for (std::string line; std::getline(lines, line);) out << "# " << line << "\n";
+  WriteLogComment(out, comment);
   for (int c = 0; c < kNumColumns; ++c) out << (c ? "," : "") << kColumnNames[c];
   out << "\n";
   for (const CarTrackRecord& r : records) {

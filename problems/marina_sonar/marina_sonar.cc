@@ -10,7 +10,6 @@
 #include <numbers>
 #include <optional>
 #include <ostream>
-#include <sstream>
 #include <stdexcept>
 #include <string_view>
 #include <utility>
@@ -18,6 +17,7 @@
 #include "core/constraint_system.h"
 #include "core/random.h"
 #include "problems/csv_fields.h"
+#include "problems/log_file.h"
 #include "problems/marina_sonar/sonar_contractor.h"
 #include "problems/planar.h"
 
@@ -346,11 +346,15 @@ class LogReader {
     return v;
   }
 
-  // Both fields given or both empty.
-  bool Pair(int i) const {
+  // Fields i and i + 1, both given (read within limit into *a and *b:
+  // true) or both empty (false): a position of a step or a return.
+  bool Pair(int i, double limit, double* a, double* b) const {
     if (Empty(i) != Empty(i + 1))
       Fail(std::string(names_[i]) + " and " + names_[i + 1] + " must be both given or both empty");
-    return !Empty(i);
+    if (Empty(i)) return false;
+    *a = Number(i, limit);
+    *b = Number(i + 1, limit);
+    return true;
   }
 
   MarinaRecord ReadStep() {
@@ -362,11 +366,7 @@ class LogReader {
     r.dvl_error = NonNegative(3, kMaxVelocity);
     r.heading = Number(4, kMaxAngle);
     r.heading_error = NonNegative(5, kPi);
-    r.has_truth = Pair(6);
-    if (r.has_truth) {
-      r.truth_x = Number(6, kMaxPosition);
-      r.truth_y = Number(7, kMaxPosition);
-    }
+    r.has_truth = Pair(6, kMaxPosition, &r.truth_x, &r.truth_y);
     return r;
   }
 
@@ -383,11 +383,7 @@ class LogReader {
       r.has_outlier_flag = true;
       r.outlier = fields_[5] == "1";
     }
-    r.has_hit = Pair(5);
-    if (r.has_hit) {
-      r.hit_x = Number(5, kMaxPosition);
-      r.hit_y = Number(6, kMaxPosition);
-    }
+    r.has_hit = Pair(5, kMaxPosition, &r.hit_x, &r.hit_y);
     return r;
   }
 
@@ -407,15 +403,13 @@ std::vector<MarinaRecord> ReadMarinaLog(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw std::invalid_argument(path + ": no such log file (a regular file)");
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument(path + ": cannot open the marina-sonar log");
+  std::ifstream in = OpenLogFile(path, "marina-sonar log");
   return ReadMarinaLog(in, path);
 }
 
 void WriteMarinaLog(const std::vector<MarinaRecord>& records, std::ostream& out,
                     const std::string& comment) {
-  std::istringstream lines(comment);
-  for (std::string line; std::getline(lines, line);) out << "# " << line << "\n";
+  WriteLogComment(out, comment);
   out << "# step";
   for (const char* f : kStepFields) out << "," << f;
   out << "\n# return";
