@@ -1,57 +1,37 @@
+// The car-track simulator, its measurements, the steps' CSP and
+// probabilistic views and the registry's parameters; the CSV log's tests
+// are in car_track_log_test.cc (the same test executable).
 #include "problems/car_track/car_track.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <fstream>
-#include <functional>
 #include <limits>
 #include <numbers>
 #include <sstream>
+#include <string>
+#include <vector>
 
-#include "algorithms/registry.h"
+#include "core/estimate.h"
 #include "core/tape.h"
+#include "problems/car_track/car_track_testing.h"
 #include "problems/registry.h"
 
 namespace icp {
 namespace {
 
+using testing::Csp;
+using testing::ErrorOf;
+using testing::ExpectSameSteps;
+using testing::Make;
+using testing::RunHC4;
+
 constexpr double kPi = std::numbers::pi;
-
-std::unique_ptr<Problem> Make(const ParamMap& params, std::uint64_t seed) {
-  return FindProblem("car-track").make(params, seed);
-}
-
-// Runs HC4 (carry=first) on every step; calls visit(step, the newest
-// state's box) after each.
-void RunHC4(Problem& problem, const std::function<void(const Step&, const Box&)>& visit) {
-  auto hc4 = FindAlgorithm("hc4").make({}, 1);
-  Step step;
-  while (problem.Next(&step)) visit(step, hc4->Step(step.views, StopCondition()).estimate->Hull());
-}
-
-const ConstraintSystem& Csp(const Step& step) { return step.views.csp->csp; }
 
 double NewestArea(const Step&, const Box& box) { return box[0].Width() * box[1].Width(); }
 
 double NewestHeadingWidth(const Step&, const Box& box) { return box[2].Width(); }
-
-// Message of the std::invalid_argument thrown by f, or "" if none.
-std::string ErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
-
-std::vector<CarTrackRecord> ReadLogText(const std::string& text) {
-  std::istringstream in(text);
-  return ReadCarTrackLog(in, "log.csv");
-}
 
 TEST(CarTrackTest, TruthInsideEveryMeasurementIntervalOverALap) {
   for (std::uint64_t seed : {1, 2, 3, 4}) {
@@ -123,7 +103,8 @@ TEST(CarTrackTest, TruthInsideEveryInitialBoxAndSatisfiesEveryConstraint) {
       for (int c = 0; c < sys.num_constraints(); ++c) {
         const Interval value = sys.tape(c).Forward(point, slots);
         ASSERT_FALSE(Intersect(value, sys.tape(c).range()).IsEmpty())
-            << "seed " << seed << " step " << step.views.step << ": " << Csp(step).ConstraintToString(c);
+            << "seed " << seed << " step " << step.views.step << ": "
+            << Csp(step).ConstraintToString(c);
       }
       // The newest state's truth is the drive's: the CSP's frame may be 2 pi apart.
       const std::size_t last = step.csp_truth.size() - 3;
@@ -184,8 +165,6 @@ TEST(CarTrackTest, HC4KeepsTheTruthOverALapWithTheResultFedBack) {
   // The window narrows the position below the 25 m^2 GPS box.
   EXPECT_LT(area_sum / steps, 20);
 }
-
-void ExpectSameSteps(Problem& a, Problem& b);
 
 TEST(CarTrackTest, StepsDependOnTheMeasurementsAlone) {
   // Problems never see an estimator's result: two passes give the same CSPs.
@@ -312,205 +291,6 @@ TEST(CarTrackTest, FirstRowsForSeed1AreFixed) {
     EXPECT_EQ(r[k].truth_y, expected[k].truth_y);
     EXPECT_EQ(r[k].truth_theta, expected[k].truth_theta);
   }
-}
-
-void ExpectSameSteps(Problem& a, Problem& b) {
-  Step sa, sb;
-  while (a.Next(&sa)) {
-    ASSERT_TRUE(b.Next(&sb));
-    ASSERT_EQ(Csp(sa).domains(), Csp(sb).domains()) << "step " << sa.views.step;
-    ASSERT_EQ(Csp(sa).constraints().size(), Csp(sb).constraints().size());
-    for (std::size_t c = 0; c < Csp(sa).constraints().size(); ++c)
-      ASSERT_EQ(Csp(sa).ConstraintToString(c), Csp(sb).ConstraintToString(c));
-    ASSERT_EQ(sa.truth, sb.truth);
-    ASSERT_EQ(sa.csp_truth, sb.csp_truth);
-  }
-  EXPECT_FALSE(b.Next(&sb));
-}
-
-TEST(CarTrackTest, CsvRoundTripGivesTheSameCsps) {
-  CarTrackParams p;
-  p.steps = 120;
-  p.w = 6;
-  p.gps_period = 2;
-  const std::vector<CarTrackRecord> simulated = SimulateCarTrack(p, 9);
-  std::stringstream csv;
-  WriteCarTrackLog(simulated, csv, "seed 9\nsecond comment line");
-  EXPECT_EQ(csv.str().rfind("# seed 9\n# second comment line\nt,odo_left_ticks,", 0), 0u);
-  const std::vector<CarTrackRecord> read = ReadCarTrackLog(csv, "memory");
-  ASSERT_EQ(read.size(), simulated.size());
-  CarTrackProblem from_sim(p, simulated), from_log(p, read);
-  ExpectSameSteps(from_sim, from_log);
-}
-
-// The shipped example: 50 rows of SimulateCarTrack with the default
-// parameters, steps = 50 and seed 1. Regenerate with
-//   ICPBENCH_UPDATE_GOLDEN=1 car_track_test --gtest_filter=*ShippedLog*
-TEST(CarTrackTest, ShippedLogIsTheSimulatorsDriveAndKeepsTheTruth) {
-  const std::string path = std::string(ICPBENCH_CAR_TRACK_DATA) + "/example_log.csv";
-  CarTrackParams p;
-  p.steps = 50;
-  if (std::getenv("ICPBENCH_UPDATE_GOLDEN") != nullptr) {
-    std::ofstream out(path);
-    WriteCarTrackLog(SimulateCarTrack(p, 1), out,
-                     "car-track example log: SimulateCarTrack, default parameters, steps=50, "
-                     "seed 1\n(problems/car_track/README.md describes the format)");
-  }
-  CarTrackProblem from_sim(p, SimulateCarTrack(p, 1));
-  auto from_log = Make({{"log", path}}, 12345);  // the seed plays no part
-  EXPECT_EQ(from_log->NumSteps(), 50);
-  ExpectSameSteps(from_sim, *from_log);
-  RunHC4(*Make({{"log", path}, {"w", "10"}}, 0), [&](const Step& step, const Box& box) {
-    ASSERT_EQ(step.truth.size(), box.size());
-    ASSERT_TRUE(box.Contains(step.truth)) << "step " << step.views.step;
-  });
-  // steps caps the rows used.
-  EXPECT_EQ(Make({{"log", path}, {"steps", "20"}}, 0)->NumSteps(), 20);
-}
-
-TEST(CarTrackTest, LogWithoutTruthOrFixesAndWithWrappedHeading) {
-  const std::vector<CarTrackRecord> r = ReadLogText(
-      "# a comment\n"
-      "\n"
-      "gyro_dtheta, t, odo_left_ticks, odo_right_ticks, gps_x, gps_y, gps_ex, gps_ey,"
-      " truth_x, truth_y, truth_theta\r\n"
-      "0, 0, 10, 12, 1, 2, 3, 3, 0, 0, 3.1\r\n"
-      "0.1, 0.2, 150, 160, , , , , 2.7, 0.3, -3.1\n"
-      "0.1, 0.4, 290, 305, 6, 0.5, 3, 4, , , \n"
-      "0.1, 0.6, 430, 450, 6, 0.5, 3, 4, 8, 1, 9.6\n");
-  ASSERT_EQ(r.size(), 4u);
-  EXPECT_EQ(r[1].t, 0.2);
-  EXPECT_EQ(r[1].gyro_dtheta, 0.1);
-  EXPECT_EQ(r[1].odo_right_ticks, 160);
-  EXPECT_FALSE(r[1].has_gps);
-  EXPECT_TRUE(r[2].has_gps);
-  EXPECT_EQ(r[2].gps_ey, 4);
-  EXPECT_FALSE(r[2].has_truth);
-  EXPECT_EQ(r[0].truth_theta, 3.1);
-  EXPECT_NEAR(r[1].truth_theta, 2 * kPi - 3.1, 1e-12);  // unwrapped
-  EXPECT_NEAR(r[3].truth_theta, 9.6 - 2 * kPi, 1e-12);  // within pi of the last known
-  // Steps whose window holds a row without truth carry no truth.
-  CarTrackParams p;
-  p.w = 1;
-  CarTrackProblem problem(p, r);
-  Step step;
-  std::vector<std::size_t> truth_sizes, csp_truth_sizes;
-  while (problem.Next(&step)) {
-    truth_sizes.push_back(step.truth.size());
-    csp_truth_sizes.push_back(step.csp_truth.size());
-  }
-  EXPECT_EQ(truth_sizes, (std::vector<std::size_t>{3, 3, 0, 3}));
-  EXPECT_EQ(csp_truth_sizes, (std::vector<std::size_t>{3, 6, 0, 0}));
-  // Truth columns are optional.
-  EXPECT_FALSE(ReadLogText("t,odo_left_ticks,odo_right_ticks,gyro_dtheta,gps_x,gps_y,gps_ex,"
-                           "gps_ey\n0,0,0,0,,,,\n")[0]
-                   .has_truth);
-}
-
-TEST(CarTrackTest, BadLogsFailWithLineAndColumn) {
-  const std::string header =
-      "t,odo_left_ticks,odo_right_ticks,gyro_dtheta,gps_x,gps_y,gps_ex,gps_ey\n";
-  struct Case {
-    std::string text;
-    std::string message;
-  };
-  const Case cases[] = {
-      {"", "log.csv: no header line"},
-      {header, "log.csv: no data rows"},
-      {"t,odo_left_ticks,odo_right_ticks,gps_x,gps_y,gps_ex,gps_ey\n",
-       "log.csv:1: header lacks column 'gyro_dtheta'"},
-      {header.substr(0, header.size() - 1) + ",speed\n", "log.csv:1: header column 9: unknown"},
-      {"t,t\n", "log.csv:1: header: column 't' repeated"},
-      {header + "0,0,0,0,,,,\n0.2,1.5,2,0,,,,\n",
-       "log.csv:3: column 2 (odo_left_ticks): '1.5' is not an integer"},
-      {header + "0,0,0,abc,,,,\n", "log.csv:2: column 4 (gyro_dtheta): 'abc' is not a finite"},
-      {header + "0,0,0,nan,,,,\n", "column 4 (gyro_dtheta): 'nan' is not a finite"},
-      {header + "0,0,0,0,1,2,,\n", "log.csv:2: gps_x, gps_y, gps_ex, gps_ey columns must be"},
-      {header + "0,0,0,0,1,2,0,1\n", "log.csv:2: column 7 (gps_ex): 0 must be > 0"},
-      {header + "0,0,0,0,,,\n", "log.csv:2: 7 fields, the header has 8"},
-      {header + "0,0,0,0,,,,\n0,1,1,0,,,,\n", "log.csv:3: column 't': 0 is not after"},
-      {header + ",0,0,0,,,,\n", "log.csv:2: column 1 (t): '' is not a finite"},
-      // A wrapped counter: the int64 difference would overflow.
-      {header + "0,9223372036854775807,0,0,,,,\n0.2,-9223372036854775808,0,0,,,,\n",
-       "log.csv:3: column 2 (odo_left_ticks): -9223372036854775808 ticks after "
-       "9223372036854775807 on the previous row: a step of more than 2^31 ticks"},
-      {header + "0,0,0,0,,,,\n0.2,0,2147483649,0,,,,\n",
-       "log.csv:3: column 3 (odo_right_ticks): 2147483649 ticks after 0"},
-      {header + "0,0,-5,0,,,,\n0.2,0,-2147483654,0,,,,\n",
-       "log.csv:3: column 3 (odo_right_ticks): -2147483654 ticks after -5"},
-  };
-  for (const Case& c : cases) {
-    const std::string error = ErrorOf([&] { ReadLogText(c.text); });
-    EXPECT_NE(error.find(c.message), std::string::npos)
-        << "log:\n"
-        << c.text << "error: " << error << "\nexpected: " << c.message;
-  }
-}
-
-TEST(CarTrackTest, NonPhysicalValuesFailWithLineAndColumn) {
-  const std::string header =
-      "t,odo_left_ticks,odo_right_ticks,gyro_dtheta,gps_x,gps_y,gps_ex,gps_ey,truth_x,truth_y,"
-      "truth_theta\n";
-  const std::pair<std::string, std::string> cases[] = {
-      {"1e13,0,0,0,,,,,,,\n", "log.csv:2: column 1 (t): 1e+13 is beyond +-1e+12 s"},
-      {"0,0,0,-2e6,,,,,,,\n", "log.csv:2: column 4 (gyro_dtheta): -2e+06 is beyond +-1e+06 rad"},
-      {"0,0,0,0,2e9,0,1,1,,,\n", "log.csv:2: column 5 (gps_x): 2e+09 is beyond +-1e+09 m"},
-      {"0,0,0,0,0,-2e9,1,1,,,\n", "log.csv:2: column 6 (gps_y): "},
-      {"0,0,0,0,0,0,1e10,1,,,\n", "log.csv:2: column 7 (gps_ex): 1e+10 is beyond"},
-      {"0,0,0,0,0,0,1,1e10,,,\n", "log.csv:2: column 8 (gps_ey): "},
-      {"0,0,0,0,,,,,1e300,0,0\n", "log.csv:2: column 9 (truth_x): 1e+300 is beyond"},
-      {"0,0,0,0,,,,,0,1e300,0\n", "log.csv:2: column 10 (truth_y): "},
-      {"0,0,0,0,,,,,0,0,0\n0.2,0,0,0,,,,,0,0,1e300\n",
-       "log.csv:3: column 11 (truth_theta): 1e+300 is beyond +-1e+06 rad"},
-      // Within the bound but 3 rad off the gyro's 0.
-      {"0,0,0,0,,,,,0,0,0\n0.2,0,0,0,,,,,0,0,3\n",
-       "log.csv:3: column 11 (truth_theta): 3 turns the heading by 3 rad since the previous row "
-       "(unwrapped) but the gyro by 0: more than pi/2 apart"},
-  };
-  for (const auto& [rows, message] : cases) {
-    const std::string text = header + rows;  // (clang 14 cannot capture a structured binding)
-    const std::string error = ErrorOf([&] { ReadLogText(text); });
-    EXPECT_NE(error.find(message), std::string::npos)
-        << "rows:\n" << rows << "error: " << error << "\nexpected: " << message;
-  }
-  // The bounds themselves are accepted.
-  EXPECT_EQ(ReadLogText(header + "1e12,0,0,-1e6,-1e9,1e9,1e9,1e9,1e9,-1e9,1e6\n").size(), 1u);
-  // One glitch in a simulated drive is caught on its own line, whether it is
-  // far out (it would corrupt every later unwrapped heading) or just wrong.
-  CarTrackParams p;
-  p.steps = 20;
-  for (const double glitch : {1e300, 2000 * kPi + 2, 2.0}) {
-    std::vector<CarTrackRecord> records = SimulateCarTrack(p, 1);
-    records[10].truth_theta += glitch;
-    std::ostringstream csv;
-    WriteCarTrackLog(records, csv);
-    const std::string error = ErrorOf([&] { ReadLogText(csv.str()); });
-    EXPECT_NE(error.find("log.csv:12: column 11 (truth_theta): "), std::string::npos)
-        << glitch << ": " << error;
-  }
-}
-
-TEST(CarTrackTest, TickCountsNeverOverflow) {
-  const std::string header =
-      "t,odo_left_ticks,odo_right_ticks,gyro_dtheta,gps_x,gps_y,gps_ex,gps_ey\n";
-  // 2^31 ticks in one step is the documented limit, near the int64 ends too.
-  EXPECT_EQ(ReadLogText(header + "0,9223372036854775807,-9223372036854775808,0,,,,\n"
-                                 "0.2,9223372034707292159,-9223372034707292160,0,,,,\n")
-                .size(),
-            2u);
-  // Records not read from a log: the difference is checked, not wrapped.
-  CarTrackParams p;
-  std::vector<CarTrackRecord> records(2);
-  records[1].t = 0.2;
-  records[0].odo_left_ticks = std::numeric_limits<std::int64_t>::max();
-  records[1].odo_left_ticks = std::numeric_limits<std::int64_t>::min();
-  const std::string error = ErrorOf([&] { MeasureCarTrack(p, records); });
-  EXPECT_NE(error.find("overflows a 64-bit difference"), std::string::npos) << error;
-  // A simulated count beyond int64 (a tiny wheel) is a parameter error.
-  EXPECT_THROW(Make({{"wheel_radius", "1e-12"}, {"radius_error", "0"}, {"ticks_per_rev", "1e9"},
-                     {"steps", "3"}},
-                    1),
-               ParamError);
 }
 
 TEST(CarTrackTest, RegistryRejectsBadParameters) {
