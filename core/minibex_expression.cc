@@ -57,29 +57,19 @@ Value Parser::ParseUnary() {
 }
 
 // '^' binds tighter than unary minus (-x^2 is -(x^2)) and takes an integer
-// constant exponent, which may itself be signed (x^-1).
+// constant exponent, which may itself be signed (x^-1): the exponent is a
+// unary, so x^-2^3 is x^(-(2^3)).
 Value Parser::ParsePower() {
   Value base = ParsePrimary();
   if (!IsPunct("^")) return base;
   DepthGuard guard(this);
   Next();
   const Token& start = Peek();
-  const Value e = ParseExponent();
+  const Value e = ParseUnary();
   if (!e.is_constant()) Fail(start, "the exponent must be an integer constant");
   const int n = static_cast<int>(ToInteger(e.constant, start, {"the exponent"}, kMaxExponent));
   if (base.is_constant()) return Const(Pow(base.constant, n));
   return Node(Pow(*base.expr, n));
-}
-
-Value Parser::ParseExponent() {
-  if (IsPunct("-") || IsPunct("+")) {
-    DepthGuard guard(this);
-    const bool minus = Next().text == "-";
-    Value v = ParseExponent();
-    if (!minus) return v;
-    return v.is_constant() ? Const(-v.constant) : Node(-*v.expr);
-  }
-  return ParsePower();
 }
 
 Value Parser::ParsePrimary() {

@@ -14,8 +14,7 @@
 //   expr       := term {('+' | '-') term}
 //   term       := unary {('*' | '/') unary}
 //   unary      := ('-' | '+') unary | power
-//   power      := primary ['^' exponent]                  (right-associative)
-//   exponent   := ('-' | '+') exponent | power
+//   power      := primary ['^' unary]                     (right-associative)
 //   primary    := NUMBER | '(' expr ')' | '[' bound ',' bound ']' | pi
 //               | FUNC '(' expr [',' expr] ')' | NAME | NAME '(' expr ')'
 //               | NAME '[' expr ']'

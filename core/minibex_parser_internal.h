@@ -249,7 +249,6 @@ class Parser {
   Value ParseExpr();
   Value ParseUnary();
   Value ParsePower();
-  Value ParseExponent();
   [[gnu::noinline]] Value ParseName();
   [[gnu::noinline]] Value ParseSymbol(const Symbol& s);
   [[gnu::noinline]] Interval ParseIntervalLiteral();
