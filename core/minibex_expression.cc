@@ -1,0 +1,220 @@
+// Minibex expressions: arithmetic, powers, functions, names and interval
+// literals, with sub-expressions without variables folded to enclosures
+// (the grammar is at the top of minibex_parser.cc).
+#include <cmath>
+#include <string>
+
+#include "core/minibex_parser_internal.h"
+
+namespace icp::detail::minibex {
+
+Value Parser::Arithmetic(char op, const Value& a, const Value& b) {
+  if (a.is_constant() && b.is_constant()) {
+    switch (op) {
+      case '+': return Const(a.constant + b.constant);
+      case '-': return Const(a.constant - b.constant);
+      case '*': return Const(a.constant * b.constant);
+      default: return Const(a.constant / b.constant);
+    }
+  }
+  const Expr x = ToExpr(a), y = ToExpr(b);
+  switch (op) {
+    case '+': return Node(x + y);
+    case '-': return Node(x - y);
+    case '*': return Node(x * y);
+    default: return Node(x / y);
+  }
+}
+
+Value Parser::ParseExpr() {
+  DepthGuard guard(this);
+  Value v = ParseTerm();
+  while (IsPunct("+") || IsPunct("-")) {
+    const char op = Next().text[0];
+    v = Arithmetic(op, v, ParseTerm());
+  }
+  return v;
+}
+
+Value Parser::ParseTerm() {
+  Value v = ParseUnary();
+  while (IsPunct("*") || IsPunct("/")) {
+    const char op = Next().text[0];
+    v = Arithmetic(op, v, ParseUnary());
+  }
+  return v;
+}
+
+Value Parser::ParseUnary() {
+  if (IsPunct("-") || IsPunct("+")) {
+    DepthGuard guard(this);
+    const bool minus = Next().text == "-";
+    Value v = ParseUnary();
+    if (!minus) return v;
+    return v.is_constant() ? Const(-v.constant) : Node(-*v.expr);
+  }
+  return ParsePower();
+}
+
+// '^' binds tighter than unary minus (-x^2 is -(x^2)) and takes an integer
+// constant exponent, which may itself be signed (x^-1): the exponent is a
+// unary, so x^-2^3 is x^(-(2^3)).
+Value Parser::ParsePower() {
+  Value base = ParsePrimary();
+  if (!IsPunct("^")) return base;
+  DepthGuard guard(this);
+  Next();
+  const Token& start = Peek();
+  const Value e = ParseUnary();
+  if (!e.is_constant()) Fail(start, "the exponent must be an integer constant");
+  const int n = static_cast<int>(ToInteger(e.constant, start, {"the exponent"}, kMaxExponent));
+  if (base.is_constant()) return Const(Pow(base.constant, n));
+  return Node(Pow(*base.expr, n));
+}
+
+Value Parser::ParsePrimary() {
+  const Token& t = Peek();
+  switch (t.kind) {
+    case TokKind::kNumber: {
+      Interval x;
+      if (!ParseDecimal(t.text, &x)) Fail(t, "bad number ", t);
+      Next();
+      return Const(x);
+    }
+    case TokKind::kPunct:
+      if (IsPunct("(")) {
+        Next();
+        Value v = ParseExpr();
+        if (!IsPunct(")"))
+          Fail(Peek(), "expected ')' to close the '(' at line ", t.line, ", column ",
+               t.column, ", found ", Peek());
+        Next();
+        return v;
+      }
+      if (IsPunct("[")) return Const(ParseIntervalLiteral());
+      Fail(t, "expected an expression, found ", t);
+    case TokKind::kEnd:
+      Fail(t, "expected an expression, found end of input");
+    case TokKind::kIdent:
+      return ParseName();
+  }
+  Fail(t, "expected an expression");
+}
+
+Value Parser::ParseName() {
+  const Token& t = Peek();
+  const std::string& name = t.text;
+  // Declared names first: they are the common case and are never reserved.
+  auto it = symbols_.find(name);
+  if (it != symbols_.end()) return ParseSymbol(it->second);
+  if (name == "pi") {
+    Next();
+    return Const(Pi());
+  }
+  if (name == "oo") Fail(t, "'oo' is only allowed as an interval bound, as in [0, +oo]");
+  if (const UnaryFunction* f = FindUnary(name)) {
+    Next();
+    Expect("(", {"after", name});
+    Value a = ParseExpr();
+    if (IsPunct(",")) Fail(Peek(), "'", name, "' takes one argument");
+    Expect(")", {"to close the argument of", name});
+    return a.is_constant() ? Const(f->on_interval(a.constant)) : Node(f->on_expr(*a.expr));
+  }
+  if (const BinaryFunction* f = FindBinary(name)) {
+    Next();
+    Expect("(", {"after", name});
+    Value a = ParseExpr();
+    Expect(",", {"between the two arguments of", name});
+    Value b = ParseExpr();
+    Expect(")", {"after the second argument of", name});
+    if (a.is_constant() && b.is_constant()) return Const(f->on_interval(a.constant, b.constant));
+    return Node(f->on_expr(ToExpr(a), ToExpr(b)));
+  }
+  if (IsUnsupportedFunction(name)) Fail(t, "function '", name, "' is not supported");
+  if (IsReserved(name)) Fail(t, What{"expected an expression, found keyword", name});
+  if (IsPunct("(", 1)) Fail(t, What{"unknown function", name});
+  Fail(t, What{"unknown identifier", name});
+}
+
+// A constant, loop index, variable or indexed vector component.
+Value Parser::ParseSymbol(const Symbol& s) {
+  const Token& name_token = Next();
+  const std::string& name = name_token.text;
+  switch (s.kind) {
+    case Symbol::kConstant:
+    case Symbol::kLoopIndex:
+      return Const(s.value);
+    case Symbol::kScalarVariable:
+      if (IsPunct("(") || IsPunct("["))
+        Fail(Peek(), "'", name, "' is a scalar variable and cannot be indexed");
+      return Node(csp_.Var(s.first));
+    case Symbol::kVectorVariable:
+      break;
+  }
+  // x(i) counts from 1 as in IBEX, x[i] from 0.
+  const bool one_based = IsPunct("(");
+  if (!one_based && !IsPunct("["))
+    Fail(name_token, "vector '", name, "' must be indexed, as in ", name, "(1) or ", name,
+         "[0]");
+  Next();
+  const Token& start = Peek();
+  const long long i = ParseInteger({"the index of", name});
+  const long long base = one_based ? 1 : 0;
+  if (i < base || i >= s.size + base)
+    Fail(start, "index ", i, " out of range for '", name, "' (", name,
+         one_based ? "(i) takes 1.." : "[i] takes 0..", one_based ? s.size : s.size - 1, ")");
+  Expect(one_based ? ")" : "]", {"after the index of", name});
+  return Node(csp_.Var(s.first + static_cast<int>(i - base)));
+}
+
+// [a, b] with a lower bound from a's enclosure and an upper one from b's,
+// so decimals widen outward; a bound may be -oo, +oo or oo.
+Interval Parser::ParseIntervalLiteral() {
+  const Token& open = Next();
+  const double lo = ParseBound(true);
+  Expect(",", "between the bounds of the interval");
+  const double hi = ParseBound(false);
+  Expect("]", "to close the interval");
+  const Interval x(lo, hi);
+  if (x.IsEmpty())
+    Fail(open, "empty interval [", lo, ", ", hi, "]");
+  return x;
+}
+
+double Parser::ParseBound(bool lower) {
+  const int sign_tokens = (IsPunct("-") || IsPunct("+")) ? 1 : 0;
+  const Token& oo = Peek(sign_tokens);
+  if (oo.kind == TokKind::kIdent && oo.text == "oo") {
+    const bool negative = sign_tokens == 1 && IsPunct("-");
+    Next();
+    if (sign_tokens) Next();
+    return negative ? -kInf : kInf;
+  }
+  const Token& start = Peek();
+  const Interval b = ParseConstant({lower ? "the lower bound" : "the upper bound"});
+  if (b.IsEmpty()) Fail(start, "the interval bound is the empty set");
+  return lower ? b.lo() : b.hi();
+}
+
+Interval Parser::ParseConstant(const What& what) {
+  const Token& start = Peek();
+  const Value v = ParseExpr();
+  if (!v.is_constant()) Fail(start, what, " must be a constant expression");
+  return v.constant;
+}
+
+long long Parser::ParseInteger(const What& what) {
+  const Token& start = Peek();
+  return ToInteger(ParseConstant(what), start, what, kMaxInteger);
+}
+
+long long Parser::ToInteger(const Interval& x, const Token& at, const What& what, double limit) {
+  if (!x.IsPoint() || std::floor(x.lo()) != x.lo()) {
+    Fail(at, what, " must be an integer, got ", x);
+  }
+  if (std::fabs(x.lo()) > limit)
+    Fail(at, what, " is too large (", x.lo(), ")");
+  return static_cast<long long>(x.lo());
+}
+
+}  // namespace icp::detail::minibex
