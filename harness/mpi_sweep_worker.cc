@@ -1,0 +1,144 @@
+// A worker rank of the MPI sweep: tells rank 0 how many runs it takes, runs
+// what it is sent in forked workers and sends each result back.
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <system_error>
+
+#include "harness/mpi_sweep_internal.h"
+#include "harness/provenance.h"
+#include "harness/worker_output.h"
+
+namespace icp::detail {
+
+WorkerRank::WorkerRank(int rank, const Spec* spec, const RunnerOptions& options,
+                       const MpiSweepOptions& mpi)
+    : rank_(rank),
+      spec_(spec),
+      mpi_(mpi),
+      jobs_(std::max(1, options.jobs)),
+      step_dir_(std::filesystem::temp_directory_path() /
+                ("icpbench-rank" + std::to_string(rank) + "-" + std::to_string(getpid()))),
+      pool_(step_dir_.string(), options.jobs, options.kill_grace_s),
+      machine_(CurrentProvenance().machine) {}
+
+WorkerRank::~WorkerRank() {
+  pool_.Stop();
+  std::error_code ec;
+  std::filesystem::remove_all(step_dir_, ec);
+}
+
+int WorkerRank::Run(std::string error, bool* peer_lost) {
+  std::error_code ec;
+  std::filesystem::create_directories(step_dir_, ec);
+  if (error.empty() && ec)
+    error = RankName(rank_) + " cannot create its step directory " + step_dir_.string() + ": " +
+            ec.message();
+  Send(0, kReady,
+       nlohmann::json{{"jobs", error.empty() ? jobs_ : 0}, {"error", error}, {"machine", machine_}}
+           .dump());
+  if (const int cpus = UsableCpus(); error.empty() && jobs_ > cpus)
+    std::fprintf(stderr,
+                 "icpbench: %s runs --jobs %d on %d CPU%s: mpirun bound it (mpirun --bind-to none "
+                 "lets its runs use the whole node)\n",
+                 RankName(rank_).c_str(), jobs_, cpus, cpus == 1 ? "" : "s");
+  const StopSignals signals;
+  Clock::time_point heard = Clock::now(), sent = heard;
+  IdleBackoff backoff(std::chrono::milliseconds(10));
+  while (true) {
+    if (StopSignals::Caught() != 0) return 128 + StopSignals::Caught();
+    bool idle = true;
+    // Waits on the workers (a finished one ends the wait), or sleeps.
+    if (pool_.Running() > 0) {
+      pool_.Poll(backoff.NextMs(), [&](FinishedRun& f) {
+        SendResult(f);
+        sent = Clock::now();
+        idle = false;
+      });
+    } else {
+      backoff.Sleep();
+    }
+    Message m;
+    while (TryReceive(0, &m)) {
+      idle = false;
+      heard = Clock::now();
+      if (m.tag == kStop) {
+        *peer_lost = m.bytes == kNoFinalize;
+        return 0;
+      }
+      if (m.tag == kRun) StartRun(m.bytes);
+    }
+    const auto now = Clock::now();
+    if (Seconds(now - sent) >= mpi_.heartbeat_s) {
+      Send(0, kHeartbeat, "");
+      sent = now;
+    }
+    if (Seconds(now - heard) > mpi_.rank_timeout_s) {
+      std::fprintf(stderr, "icpbench: %s: nothing from rank 0 for %g s: stopping\n",
+                   RankName(rank_).c_str(), mpi_.rank_timeout_s);
+      *peer_lost = true;
+      return 3;
+    }
+    if (!idle) backoff.Reset();
+  }
+}
+
+void WorkerRank::StartRun(const std::string& bytes) {
+  std::size_t index = 0;
+  std::string key;
+  if (!SplitIndex(bytes, &index, &key)) return;
+  FinishedRun f;
+  f.record.status = RunStatus::kFailed;
+  if (spec_ == nullptr || index >= spec_->runs.size() || spec_->runs[index].spec.Key() != key) {
+    f.record.reason = RankName(rank_) +
+                      " expands the spec differently from rank 0 (another icpbench "
+                      "version or other plugins?)";
+  } else if (pool_.Start(spec_->runs[index])) {
+    in_flight_[key] = index;
+    return;
+  } else {  // recorded as failed: the next sweep retries it
+    f.record.reason = RankName(rank_) + ": " + pool_.start_error() + ": " +
+                      std::strerror(pool_.start_errno());
+  }
+  SendDone(index, f.record, false);
+}
+
+void WorkerRank::SendResult(FinishedRun& f) {
+  const std::size_t index = IndexOf(f);
+  bool steps = !f.step_file.empty();
+  if (steps) {
+    std::ifstream in(f.step_file, std::ios::binary);
+    if (!in) {
+      f.record.status = RunStatus::kFailed;
+      f.record.reason = UnreadableWorkerOutput("cannot open the step file " + f.step_file);
+      f.record.metrics = RunMetrics{};
+      steps = false;
+    }
+    std::string chunk(kChunkBytes, '\0');
+    while (steps && in) {
+      in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+      const auto n = static_cast<std::size_t>(in.gcount());
+      if (n > 0) Send(0, kSteps, WithIndex(index, chunk.substr(0, n)));
+    }
+  }
+  SendDone(index, f.record, steps);
+}
+
+void WorkerRank::SendDone(std::size_t index, const RunRecord& r, bool steps) {
+  Send(0, kDone, WithIndex(index, nlohmann::json{{"summary", SerializeSummary(r)},
+                                                 {"steps", steps},
+                                                 {"machine", machine_}}.dump()));
+}
+
+std::size_t WorkerRank::IndexOf(const FinishedRun& f) {
+  const auto it = in_flight_.find(f.run.spec.Key());
+  const std::size_t index = it->second;  // every started run is there
+  in_flight_.erase(it);
+  return index;
+}
+
+}  // namespace icp::detail
