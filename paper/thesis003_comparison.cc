@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
+#include <utility>
 
 #include "experiments/thesis003/marina.h"
 #include "experiments/thesis003/thesis003.h"
@@ -139,6 +141,16 @@ constexpr char kMarinaSpec[] =
     "no ok run of experiment marina or marina-short: icpbench run specs/marina.yaml (or "
     "specs/default.yaml, experiment marina-short) produces them";
 
+// A marina row, "no data" with the spec that makes its runs until g, the
+// configuration it judges, has them.
+ComparisonRow MarinaRow(std::string item, std::string published, std::string rule,
+                        const GroupSummary* g) {
+  ComparisonRow r{std::move(item), std::move(published), "—", std::move(rule),
+                  Verdict::kNoData, ""};
+  if (!g) r.reason = kMarinaSpec;
+  return r;
+}
+
 void MarinaRows(const std::vector<RunRecord>& runs, std::vector<ComparisonRow>* rows) {
   std::vector<GroupSummary> groups;
   for (GroupSummary& g : SummariseGroups(runs)) {
@@ -152,15 +164,11 @@ void MarinaRows(const std::vector<RunRecord>& runs, std::vector<ComparisonRow>* 
   for (int pf = 0; pf < 2; ++pf) {
     const GroupSummary* g = Best(groups, pf, "known", false);
     const double published = pf ? kThesis003ParticleFilterRunS : kThesis003SetMembershipRunS;
-    ComparisonRow r{std::string("§6.7: time per run, ") + kMethod[pf],
-                    FormatNumber(published) + " s (600 m, " + (pf ? "Matlab" : "C/C++") + ")",
-                    "—",
-                    "within a factor 2",
-                    Verdict::kNoData,
-                    ""};
-    if (!g) {
-      r.reason = kMarinaSpec;
-    } else {
+    ComparisonRow r = MarinaRow(
+        std::string("§6.7: time per run, ") + kMethod[pf],
+        FormatNumber(published) + " s (600 m, " + (pf ? "Matlab" : "C/C++") + ")",
+        "within a factor 2", g);
+    if (g) {
       const StepStats s = StatsOf(*g);
       r.measured = FormatNumber(s.mean_run_time_s) + " s (" +
                    std::to_string(s.steps / std::max(1, g->ok)) + " steps)";
@@ -179,19 +187,14 @@ void MarinaRows(const std::vector<RunRecord>& runs, std::vector<ComparisonRow>* 
   for (const char* start : {"known", "unknown"}) {
     for (int pf = 0; pf < 2; ++pf) {
       const GroupSummary* g = Best(groups, pf, start, false);
-      ComparisonRow r{
+      ComparisonRow r = MarinaRow(
           std::string("§6.7.2: ") +
               (std::string(start) == "known" ? "tracking (start known), "
                                              : "global localization (start unknown), ") +
               kMethod[pf],
           "localizes",
-          "—",
-          "median centre error ≤ " + FormatNumber(kLocalizedM) + " m (best configuration)",
-          Verdict::kNoData,
-          ""};
-      if (!g) {
-        r.reason = kMarinaSpec;
-      } else {
+          "median centre error ≤ " + FormatNumber(kLocalizedM) + " m (best configuration)", g);
+      if (g) {
         const double median = StatsOf(*g).median_centre_error;
         r.measured = FormatNumber(median) + " m (" + Config(*g) + ")";
         r.verdict = median <= kLocalizedM ? Verdict::kMatch : Verdict::kDiffers;
@@ -209,15 +212,9 @@ void MarinaRows(const std::vector<RunRecord>& runs, std::vector<ComparisonRow>* 
   // §6.7.2: the set is right when the assumptions are: the truth in every set.
   {
     const GroupSummary* g = Best(groups, false, "known", false);
-    ComparisonRow r{"§6.7.2: set membership holds the truth (start known)",
-                    "every step, when the assumptions hold",
-                    "—",
-                    "consistency = 1",
-                    Verdict::kNoData,
-                    ""};
-    if (!g) {
-      r.reason = kMarinaSpec;
-    } else {
+    ComparisonRow r = MarinaRow("§6.7.2: set membership holds the truth (start known)",
+                                "every step, when the assumptions hold", "consistency = 1", g);
+    if (g) {
       const StepStats s = StatsOf(*g);
       r.measured = FormatNumber(s.consistency()) + " (" + Config(*g) + ")";
       r.verdict = s.consistency() == 1 ? Verdict::kMatch : Verdict::kDiffers;
