@@ -1,0 +1,177 @@
+// The gnuplot machinery the figures share: quoting, drawing a figure's
+// panels to PNG and PDF in one session, and the skip messages.
+#include <gnuplot-iostream.h>
+#include <signal.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <utility>
+
+#include "plots/figures_internal.h"
+#include "report/report.h"
+
+namespace icp::detail::plots {
+
+namespace {
+
+constexpr double kPixelsPerInch = 110;  // PNG size from the PDF size in inches
+
+enum class Terminal { kPng, kPdf };
+
+bool GnuplotAvailable() {
+  static const bool available = std::system("gnuplot --version >/dev/null 2>&1") == 0;
+  return available;
+}
+
+// The shared terminal setup: cairo PNG or PDF of the figure's size, UTF-8,
+// output to path.
+void SetTerminal(Gnuplot& gp, Terminal terminal, const Figure& f, const std::string& path) {
+  gp << "set encoding utf8\n";
+  if (terminal == Terminal::kPng) {
+    gp << "set terminal pngcairo enhanced size " << static_cast<int>(f.width_in * kPixelsPerInch)
+       << "," << static_cast<int>(f.height_in * kPixelsPerInch) << " font 'Sans,10'\n";
+  } else {
+    gp << "set terminal pdfcairo enhanced size " << f.width_in << "in," << f.height_in
+       << "in font 'Sans,8'\n";
+  }
+  gp << "set output " << Quote(path) << "\n";
+}
+
+void DrawPanel(Gnuplot& gp, const Panel& panel) {
+  gp << "reset\nset encoding utf8\nset grid\n" << panel.setup << "\n";
+  std::vector<const Series*> drawn;
+  for (const Series& s : panel.series) {
+    if (HasPoint(s)) drawn.push_back(&s);
+  }
+  if (drawn.empty()) {  // keep the multiplot's place
+    gp << "unset key\nset xrange [0:1]\nset yrange [0:1]\n"
+          "set label 99 'no data' at graph 0.5, graph 0.5 center\nplot 2 notitle\n";
+    return;
+  }
+  gp << "plot ";
+  for (std::size_t i = 0; i < drawn.size(); ++i) {
+    gp << (i ? ", " : "") << (drawn[i]->function.empty() ? "'-'" : drawn[i]->function) << " "
+       << drawn[i]->spec;
+  }
+  gp << "\n";
+  for (const Series* s : drawn) {
+    if (s->function.empty()) gp.send1d(s->rows);
+  }
+}
+
+}  // namespace
+
+std::string Colour(const std::string& algorithm) { return DisplayOf(algorithm).colour; }
+
+std::string Quote(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) {
+    if (c == '\'') out += '\'';
+    if (c != '\n') out += c;
+  }
+  return out + "'";
+}
+
+std::string MultiLine(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '\n') {
+      out += "\\n";
+      continue;
+    }
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+double Finite(double v) { return std::isfinite(v) ? v : kNaN; }
+double Positive(double v) { return std::isfinite(v) && v > 0 ? v : kNaN; }
+
+bool HasPoint(const Series& s) {
+  if (!s.function.empty()) return true;
+  for (const auto& row : s.rows) {
+    if (!row.empty() &&
+        std::all_of(row.begin(), row.end(), [](double v) { return !std::isnan(v); }))
+      return true;
+  }
+  return false;
+}
+
+void Render(const Figure& f, const std::string& out_dir, PlotOutput* out) {
+  if (!GnuplotAvailable()) {
+    out->messages.push_back(f.name + ": skipped: gnuplot not found");
+    return;
+  }
+  const std::vector<std::pair<Terminal, std::string>> outputs = {
+      {Terminal::kPng, (std::filesystem::path(out_dir) / (f.name + ".png")).string()},
+      {Terminal::kPdf, (std::filesystem::path(out_dir) / (f.name + ".pdf")).string()}};
+  for (const auto& [terminal, path] : outputs) std::filesystem::remove(path);
+  // gnuplot reads on after an error, but should it die, a write must fail
+  // rather than kill the process.
+  struct sigaction ignore = {}, previous = {};
+  ignore.sa_handler = SIG_IGN;
+  sigaction(SIGPIPE, &ignore, &previous);
+  {
+    Gnuplot gp("gnuplot");
+    for (const auto& [terminal, path] : outputs) {
+      SetTerminal(gp, terminal, f, path);
+      const bool multiplot = f.panels.size() > 1;
+      if (multiplot) {
+        gp << "set multiplot layout " << f.rows << "," << f.cols;
+        if (!f.title.empty()) gp << " title " << Quote(f.title) << " noenhanced";
+        gp << "\n";
+      }
+      for (const Panel& p : f.panels) DrawPanel(gp, p);
+      if (multiplot) gp << "unset multiplot\n";
+      gp << "unset output\n";
+    }
+  }  // closing the pipe waits for gnuplot to finish
+  sigaction(SIGPIPE, &previous, nullptr);
+  for (const auto& [terminal, path] : outputs) {
+    std::error_code ec;
+    if (std::filesystem::file_size(path, ec) > 0 && !ec) {
+      out->files.push_back(path);
+    } else {
+      out->messages.push_back(path + ": gnuplot wrote nothing (see its messages above)");
+    }
+  }
+}
+
+void RenderPanel(const std::string& name, double width_in, double height_in, const Panel& panel,
+                 const std::string& out_dir, PlotOutput* out) {
+  Figure f;
+  f.name = name;
+  f.width_in = width_in;
+  f.height_in = height_in;
+  f.panels = {panel};
+  Render(f, out_dir, out);
+}
+
+int CountRunsOnly(const std::vector<const RunRecord*>& runs) {
+  return static_cast<int>(std::count_if(runs.begin(), runs.end(),
+                                        [](const RunRecord* r) { return RecordedRunsOnly(*r); }));
+}
+
+std::string RunsOnlyText(int n) {
+  return std::to_string(n) + (n == 1 ? " run was" : " runs were") +
+         " recorded with `record: runs` (run metrics only, no step rows; rerun with record: steps "
+         "to draw them)";
+}
+
+void Skip(const FigureText& text, PlotOutput* out, const std::vector<const RunRecord*>& runs) {
+  const int runs_only = CountRunsOnly(runs);
+  out->messages.push_back(
+      text.name + ": skipped: " +
+      (runs_only > 0 ? "it needs step rows, and " + RunsOnlyText(runs_only) : text.skip_reason));
+}
+
+void NoteRunsOnly(const FigureText& text, const std::vector<const RunRecord*>& runs,
+                  PlotOutput* out) {
+  if (const int n = CountRunsOnly(runs); n > 0)
+    out->messages.push_back(text.name + ": left out " + RunsOnlyText(n));
+}
+
+}  // namespace icp::detail::plots

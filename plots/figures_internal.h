@@ -1,0 +1,103 @@
+// What the figure kinds of plots/ share and callers do not see: a figure as
+// panels of series, gnuplot quoting, rendering, and the skip messages.
+#ifndef ICPBENCH_PLOTS_FIGURES_INTERNAL_H_
+#define ICPBENCH_PLOTS_FIGURES_INTERNAL_H_
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "harness/run_record.h"
+#include "plots/figures.h"
+
+namespace icp::detail::plots {
+
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// One plotted item: inline data sent after the plot command ('-'), or a
+// function when rows is empty and function is set (e.g. the zero line).
+struct Series {
+  std::string spec;  // what follows '-' (or the function): "using 1:2 with lines ..."
+  std::vector<std::vector<double>> rows;
+  std::string function;
+};
+
+struct Panel {
+  std::string setup;  // gnuplot commands before the plot command
+  std::vector<Series> series;
+};
+
+// A figure: panels in a rows x cols multiplot (one panel: no multiplot).
+struct Figure {
+  std::string name;  // file name without extension
+  std::string title;
+  double width_in = 8;
+  double height_in = 5;
+  int rows = 1;
+  int cols = 1;
+  std::vector<Panel> panels;
+};
+
+// Colours by algorithm, the same in every figure.
+std::string Colour(const std::string& algorithm);
+
+// A gnuplot single-quoted string.
+std::string Quote(const std::string& text);
+
+// A gnuplot double-quoted string, so that a '\n' in text breaks the line.
+std::string MultiLine(const std::string& text);
+
+// v when finite, else NaN (gnuplot leaves a gap); Positive also for v <= 0
+// (a log scale cannot draw it).
+double Finite(double v);
+double Positive(double v);
+
+// True when the series draws something: a function, or a row without NaN.
+bool HasPoint(const Series& s);
+
+// Writes f as out_dir/NAME.png and .pdf in one gnuplot session and records
+// the files that came out non-empty.
+void Render(const Figure& f, const std::string& out_dir, PlotOutput* out);
+
+// Render of an untitled figure of one panel.
+void RenderPanel(const std::string& name, double width_in, double height_in, const Panel& panel,
+                 const std::string& out_dir, PlotOutput* out);
+
+// How many of the runs were stored with `record: runs` (no step rows), and
+// the sentence that says so.
+int CountRunsOnly(const std::vector<const RunRecord*>& runs);
+std::string RunsOnlyText(int n);
+
+// A figure over steps whose runs were stored without them says so, not
+// the generic reason.
+void Skip(const FigureText& text, PlotOutput* out, const std::vector<const RunRecord*>& runs = {});
+
+// Drawn, but without the runs that have no step rows.
+void NoteRunsOnly(const FigureText& text, const std::vector<const RunRecord*>& runs,
+                  PlotOutput* out);
+
+}  // namespace icp::detail::plots
+
+// The files of plots/, the only includers, use these names as they are.
+// They are declared in detail::plots so that their symbols cannot clash with
+// another library's.
+namespace icp {
+using detail::plots::Colour;
+using detail::plots::CountRunsOnly;
+using detail::plots::Figure;
+using detail::plots::Finite;
+using detail::plots::HasPoint;
+using detail::plots::kNaN;
+using detail::plots::MultiLine;
+using detail::plots::NoteRunsOnly;
+using detail::plots::Panel;
+using detail::plots::Positive;
+using detail::plots::Quote;
+using detail::plots::Render;
+using detail::plots::RenderPanel;
+using detail::plots::RunsOnlyText;
+using detail::plots::Series;
+using detail::plots::Skip;
+}  // namespace icp
+
+#endif  // ICPBENCH_PLOTS_FIGURES_INTERNAL_H_

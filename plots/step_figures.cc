@@ -1,0 +1,192 @@
+// The figures over the steps of runs: the error corridors of x and y (with
+// the GPS box behind them), the x-y area and the centre error.
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "harness/metrics.h"
+#include "plots/figures.h"
+#include "plots/figures_internal.h"
+#include "report/report.h"
+
+namespace icp {
+
+namespace {
+
+// The corridor [lo - truth, hi - truth] of variable var over the steps:
+// rows {step, lower, upper}; NaN where the box is empty or the truth unknown.
+std::vector<std::vector<double>> CorridorRows(const RunRecord& run, const std::string& var) {
+  std::vector<std::vector<double>> rows;
+  for (const StepRecord& s : run.steps) {
+    double lower = kNaN, upper = kNaN;
+    for (const VariableRecord& v : s.vars) {
+      if (v.name != var || !(v.lo <= v.hi) || std::isnan(v.truth)) continue;
+      lower = Finite(v.lo - v.truth);
+      upper = Finite(v.hi - v.truth);
+    }
+    rows.push_back({static_cast<double>(s.step), lower, upper});
+  }
+  return rows;
+}
+
+// A y range holding 98 % of the corridor's bounds and zero, so a few wide
+// boxes at the start (unknown heading) do not flatten the rest.
+std::string CorridorRange(const std::vector<std::vector<double>>& rows) {
+  std::vector<double> lower, upper;
+  for (const auto& row : rows) {
+    lower.push_back(row[1]);
+    upper.push_back(row[2]);
+  }
+  const double lo = std::min(0.0, Quantile(lower, 0.01));
+  const double hi = std::max(0.0, Quantile(upper, 0.99));
+  if (std::isnan(lo) || std::isnan(hi) || !(hi > lo)) return "";
+  const double margin = 0.1 * (hi - lo);
+  return "set yrange [" + std::to_string(lo - margin) + ":" + std::to_string(hi + margin) + "]\n";
+}
+
+}  // namespace
+
+// The GPS corridor of variable var (paper 000 Fig. 3): rows {step, gps lo -
+// truth, gps hi - truth} from the step properties gps_<var>_lo/hi that
+// car-track records; NaN where a step has none or the truth is unknown.
+std::vector<std::vector<double>> GpsCorridorRows(const RunRecord& run, const std::string& var) {
+  std::vector<std::vector<double>> rows;
+  for (const StepRecord& s : run.steps) {
+    double lower = kNaN, upper = kNaN;
+    const std::optional<double> lo = NumberProperty(s.properties, "gps_" + var + "_lo");
+    const std::optional<double> hi = NumberProperty(s.properties, "gps_" + var + "_hi");
+    for (const VariableRecord& v : s.vars) {
+      if (v.name != var || std::isnan(v.truth) || !lo || !hi) continue;
+      lower = Finite(*lo - v.truth);
+      upper = Finite(*hi - v.truth);
+    }
+    rows.push_back({static_cast<double>(s.step), lower, upper});
+  }
+  return rows;
+}
+
+void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
+                        const std::string& out_dir, PlotOutput* out) {
+  std::vector<std::string> labels;
+  for (const RunRecord* r : runs) labels.push_back(RunLabel(*r));
+  PlotCorridorFigure(text, runs, labels, out_dir, out);
+}
+
+void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
+                        const std::vector<std::string>& labels, const std::string& out_dir,
+                        PlotOutput* out) {
+  const char* const kVars[2] = {"x", "y"};
+  // Corridors of every shown run first: each column shares its y range so
+  // the runs compare at a glance.
+  std::vector<const RunRecord*> shown;
+  std::vector<std::string> shown_labels;
+  std::vector<std::vector<std::vector<double>>> corridors[2];
+  std::vector<std::vector<double>> all[2];
+  for (std::size_t n = 0; n < runs.size(); ++n) {
+    const RunRecord* r = runs[n];
+    std::vector<std::vector<double>> rows[2] = {CorridorRows(*r, kVars[0]),
+                                                CorridorRows(*r, kVars[1])};
+    const Series probe[2] = {{"", rows[0], ""}, {"", rows[1], ""}};
+    if (!HasPoint(probe[0]) && !HasPoint(probe[1])) continue;
+    shown.push_back(r);
+    shown_labels.push_back(labels.at(n));
+    for (int k = 0; k < 2; ++k) {
+      all[k].insert(all[k].end(), rows[k].begin(), rows[k].end());
+      corridors[k].push_back(std::move(rows[k]));
+    }
+  }
+  if (shown.empty()) return Skip(text, out, runs);
+  NoteRunsOnly(text, runs, out);
+  // One step axis for all, so a shorter run shows as shorter.
+  double last_step = 0;
+  for (const RunRecord* r : shown) {
+    for (const StepRecord& st : r->steps)
+      last_step = std::max(last_step, static_cast<double>(st.step));
+  }
+  const std::string x_range = "set xrange [0:" + std::to_string(std::max(1.0, last_step)) + "]\n";
+  Figure f;
+  f.name = text.name;
+  bool gps = false;
+  for (const RunRecord* r : shown)
+    for (const char* var : kVars) gps = gps || HasPoint({"", GpsCorridorRows(*r, var), ""});
+  f.title = text.title + ": solid lo - truth, dashed hi - truth" +
+            (gps ? "; grey: the GPS box" : "");
+  f.width_in = 10;
+  f.cols = 2;
+  f.rows = static_cast<int>(shown.size());
+  f.height_in = 0.6 + 2.2 * f.rows;
+  for (std::size_t i = 0; i < shown.size(); ++i) {
+    const RunRecord& r = *shown[i];
+    const std::string colour = Quote(Colour(r.spec.algorithm));
+    for (int k = 0; k < 2; ++k) {
+      Panel p;
+      p.setup = "set title " + Quote(shown_labels[i] + ": " + kVars[k]) + " noenhanced\n" +
+                "set ylabel 'error in " + kVars[k] + " (m)'\n" + CorridorRange(all[k]) +
+                (i + 1 == shown.size() ? "set xlabel 'step'\n" : "") +
+                "unset key\n" + x_range;
+      const auto& rows = corridors[k][i];
+      p.series = {
+          {"using 1:2:3 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.35 notitle",
+           GpsCorridorRows(r, kVars[k]), ""},
+          {"using 1:2:3 with filledcurves fc rgb " + colour + " fs transparent solid 0.25 notitle",
+           rows, ""},
+          {"using 1:2 with lines lw 1.2 lc rgb " + colour + " notitle", rows, ""},
+          {"using 1:3 with lines lw 1.2 dt 2 lc rgb " + colour + " notitle", rows, ""},
+          {"with lines lw 1 lc rgb 'black' notitle", {}, "0"}};
+      f.panels.push_back(std::move(p));
+    }
+  }
+  Render(f, out_dir, out);
+}
+
+namespace {
+// One line per run of a per-step value against the step, log scale, each
+// line titled by its run and what title_extra says of it.
+void PlotStepValueFigure(const FigureText& text, const std::string& y_label,
+                         const std::vector<const RunRecord*>& runs,
+                         const std::function<double(const StepRecord&)>& value,
+                         const std::function<std::string(const RunRecord&)>& title_extra,
+                         const std::string& out_dir, PlotOutput* out) {
+  Panel panel;
+  panel.setup = "set title " + Quote(text.title) + " noenhanced\nset xlabel 'step'\nset ylabel " +
+                Quote(y_label) + "\nset logscale y\nset key top right noenhanced\n";
+  for (const RunRecord* r : runs) {
+    Series s{"using 1:2 with lines lw 1.5 lc rgb " + Quote(Colour(r->spec.algorithm)) +
+                 " title " + Quote(RunLabel(*r) + title_extra(*r)),
+             {}, ""};
+    for (const StepRecord& step : r->steps)
+      s.rows.push_back({static_cast<double>(step.step), Positive(value(step))});
+    if (HasPoint(s)) panel.series.push_back(std::move(s));
+  }
+  if (panel.series.empty()) return Skip(text, out, runs);
+  NoteRunsOnly(text, runs, out);
+  RenderPanel(text.name, 9, 4.5, panel, out_dir, out);
+}
+}  // namespace
+
+void PlotAreaFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
+                    const std::string& out_dir, PlotOutput* out) {
+  PlotStepValueFigure(
+      text, "x-y area (m^2)", runs, [](const StepRecord& s) { return s.area; },
+      [](const RunRecord&) { return std::string(); }, out_dir, out);
+}
+
+void PlotCentreErrorFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
+                           const std::string& out_dir, PlotOutput* out) {
+  auto consistency = [](const RunRecord& r) {
+    int known = 0, contained = 0;
+    for (const StepRecord& s : r.steps)
+      if (s.contained >= 0) ++known, contained += s.contained;
+    return known ? ", truth held on " + FormatNumber(100.0 * contained / known) + "% of steps"
+                 : std::string();
+  };
+  PlotStepValueFigure(
+      text, "centre error (m)", runs, [](const StepRecord& s) { return s.centre_error; },
+      consistency, out_dir, out);
+}
+
+}  // namespace icp

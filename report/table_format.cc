@@ -1,0 +1,137 @@
+// How a TextTable is written: Markdown and LaTeX (cells escaped for each),
+// and the CSV fields and numbers.
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "report/report.h"
+#include "report/report_internal.h"
+
+namespace icp {
+
+namespace detail::report {
+
+namespace {
+
+std::string MarkdownCell(const std::string& cell) {
+  std::string out;
+  for (char c : OneLine(cell)) {
+    if (c == '|') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string OneLine(std::string text) {
+  for (char& c : text) {
+    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+  }
+  return text;
+}
+
+void WriteMarkdown(const TextTable& t, std::ostream& out) {
+  out << "## " << t.title << "\n\n";
+  if (!t.rows.empty() || !t.omit_if_empty) {
+    out << "|";
+    for (const std::string& h : t.headers) out << " " << MarkdownCell(h) << " |";
+    out << "\n|";
+    for (bool n : t.numeric) out << (n ? " ---: |" : " :--- |");
+    out << "\n";
+    for (const auto& row : t.rows) {
+      out << "|";
+      for (const std::string& c : row) out << " " << MarkdownCell(c) << " |";
+      out << "\n";
+    }
+    out << "\n";
+  }
+  for (const std::string& n : t.notes) out << n << "\n\n";
+  for (const std::string& i : t.items) out << "- " << OneLine(i) << "\n";
+  if (!t.items.empty()) out << "\n";
+}
+
+std::string FormatCsvNumber(double v) {
+  if (std::isnan(v)) return "";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+std::string CsvField(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + "\"";
+}
+
+}  // namespace detail::report
+
+using detail::report::OneLine;
+
+std::string TexEscape(const std::string& text) {
+  static const std::vector<std::pair<std::string, std::string>> kMap = {
+      {"\\", "\\textbackslash{}"}, {"_", "\\_"}, {"&", "\\&"}, {"%", "\\%"}, {"#", "\\#"},
+      {"{", "\\{"}, {"}", "\\}"}, {"$", "\\$"}, {"~", "\\textasciitilde{}"},
+      {"^", "\\textasciicircum{}"}, {"—", "---"}, {"µ", "$\\mu$"}, {"²", "$^2$"},
+      {"×", "$\\times$"}, {"∞", "$\\infty$"}, {"…", "\\ldots{}"}, {"≤", "$\\leq$"},
+      {"≥", "$\\geq$"}, {"§", "\\S{}"}, {"−", "$-$"}, {"±", "$\\pm$"}, {"≈", "$\\approx$"},
+      {"π", "$\\pi$"}, {"Ξ", "$\\Xi$"}, {"ψ", "$\\psi$"}, {"θ", "$\\theta$"},
+      {"ε", "$\\varepsilon$"}, {"·", "$\\cdot$"}, {"–", "--"},
+      {"<", "$<$"}, {">", "$>$"}, {"|", "\\textbar{}"}};
+  std::string out;
+  const std::string line = OneLine(text);
+  for (std::size_t i = 0; i < line.size();) {
+    bool matched = false;
+    for (const auto& [from, to] : kMap) {
+      if (line.compare(i, from.size(), from) == 0) {
+        out += to;
+        i += from.size();
+        matched = true;
+        break;
+      }
+    }
+    if (!matched) out += line[i++];
+  }
+  return out;
+}
+
+std::string TexTable(const TextTable& t) {
+  std::ostringstream out;
+  out << "% " << OneLine(t.title) << "\n";
+  if (!t.rows.empty() || !t.omit_if_empty) {
+    out << "\\begin{table}[htbp]\n\\centering\n\\small\n\\caption{" << TexEscape(t.title)
+        << "}\n"
+        // Shrunk to the line width when wider, never enlarged.
+        << "\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}{%\n"
+        << "\\begin{tabular}{";
+    for (bool n : t.numeric) out << (n ? 'r' : 'l');
+    out << "}\n\\toprule\n";
+    for (std::size_t i = 0; i < t.headers.size(); ++i) {
+      out << (i ? " & " : "") << TexEscape(t.headers[i]);
+    }
+    out << " \\\\\n\\midrule\n";
+    for (const auto& row : t.rows) {
+      for (std::size_t i = 0; i < row.size(); ++i) out << (i ? " & " : "") << TexEscape(row[i]);
+      out << " \\\\\n";
+    }
+    out << "\\bottomrule\n\\end{tabular}}\n\\end{table}\n\n";
+  }
+  for (const std::string& n : t.notes) out << TexEscape(n) << "\n\n";
+  if (!t.items.empty()) {
+    out << "\\begin{itemize}\n";
+    for (const std::string& i : t.items) out << "\\item " << TexEscape(i) << "\n";
+    out << "\\end{itemize}\n\n";
+  }
+  return out.str();
+}
+
+}  // namespace icp
