@@ -18,7 +18,7 @@ void Describe(CarTrackParams& p, ParamSet& set) {
   set.Add("steps", &p.steps, "number of steps (CSPs); with a log, at most this many rows",
           Range::Closed(1, 1e6));
   set.Add("speed", &p.speed, "mean speed, m/s (simulator)", Range::Positive(100));
-  set.Add("rate", &p.rate, "sensor sampling rate, Hz (simulator)", Range::Positive(1000));
+  set.Add("rate", &p.rate, "sensor sampling rate, Hz (simulator)", Range::Closed(0.01, 1000));
   set.Add("track_width", &p.track_width, "distance between the rear wheels, m (simulator)",
           Range::Positive(10));
   set.Add("wheel_radius", &p.wheel_radius, "nominal rear wheel radius, m", Range::Positive(5));
