@@ -118,11 +118,13 @@ struct MarkerSet {
 // y.lo() up, column c the c-th cell of x) over the rectangle x by y, cells
 // of equal size, with a colour bar "count" from 0 to the maximum and the
 // markers on top (the truth's big cross open at its centre, so that it
-// does not hide the maximum); equal scales on both axes; a '\n' in the
-// title breaks it. A matrix of more than
-// kAccumulatorPlotCells cells a side is drawn at BlockMax resolution so the
-// data stays small and the maximum stays visible. Skipped when counts is
-// empty.
+// does not hide the maximum); equal scales on both axes (unless one side is
+// more than 20 times the other); a '\n' in the title breaks it. A matrix of
+// more than kAccumulatorPlotCells cells a side is drawn at BlockMax
+// resolution so the data stays small and the maximum stays visible.
+// Degenerate ones draw too: a single row or column of cells (even one
+// cell), and a side of zero width, drawn as wide as the other side (or 1)
+// about its point. Skipped when counts is empty or a side is unbounded.
 void PlotAccumulatorFigure(const FigureText& text, const cv::Mat& counts, const Interval& x,
                            const Interval& y, const std::vector<MarkerSet>& markers,
                            const std::string& out_dir, PlotOutput* out);

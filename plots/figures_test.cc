@@ -18,6 +18,8 @@ namespace {
 namespace fs = std::filesystem;
 using testing::FigureFiles;
 using testing::GnuplotMissing;
+using testing::PixelsOfColour;
+using testing::StderrOf;
 using testing::TempDir;
 
 // A synthetic car-track run: a box around a circular track whose width
@@ -185,6 +187,45 @@ TEST(FiguresTest, TimingShowsTheConfigurationWithTheMostAlgorithms) {
   TimingGroups(SummariseGroups(runs), &setting);
   EXPECT_EQ(setting, "car-track, steps=900");
   EXPECT_TRUE(TimingGroups({}, &setting).empty());
+}
+
+// A degenerate accumulator (one cell, one row or column of cells, a
+// zero-width side) draws its cells without a gnuplot warning: gnuplot's
+// image needs 2 x 2 points and a range of non-zero width.
+TEST(FiguresTest, DegenerateAccumulatorsDrawWithoutWarnings) {
+  if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
+  const fs::path dir = TempDir("figures_degenerate_accumulator");
+  fs::create_directories(dir);
+  const cv::Mat one(1, 1, CV_32S, cv::Scalar(5));
+  cv::Mat row(1, 3, CV_32S, cv::Scalar(1)), column(3, 1, CV_32S, cv::Scalar(2));
+  row.at<int>(0, 1) = 5;
+  column.at<int>(2, 0) = 5;
+  const struct {
+    const char* name;
+    cv::Mat counts;
+    Interval x, y;
+    int min_top_pixels;  // of the cell with the maximum count
+  } kCases[] = {
+      {"one", one, Interval(-10, 10), Interval(-10, 10), 40000},
+      {"row", row, Interval(-10, 10), Interval(0, 5), 3000},
+      {"column", column, Interval(-3, 3), Interval(-10, 10), 3000},
+      {"point_x", one, Interval(2, 2), Interval(-10, 10), 40000},
+      {"point", one, Interval(2, 2), Interval(-1, -1), 40000},
+  };
+  for (const auto& c : kCases) {
+    PlotOutput out;
+    const std::string err = StderrOf([&] {
+      const std::vector<MarkerSet> truth = {{"truth", {{c.x.Mid(), c.y.Mid()}}, true}};
+      PlotAccumulatorFigure({c.name, "Degenerate", "none"}, c.counts, c.x, c.y, truth,
+                            dir.string(), &out);
+    });
+    EXPECT_EQ(err, "") << c.name;
+    EXPECT_TRUE(out.messages.empty()) << c.name << ": " << out.messages.front();
+    ASSERT_EQ(out.files, FigureFiles(dir, {c.name}));
+    // The maximum's colour (the top of the palette, #fde725) fills its cell.
+    EXPECT_GT(PixelsOfColour(out.files[0], 0xfd, 0xe7, 0x25), c.min_top_pixels) << c.name;
+  }
+  fs::remove_all(dir);
 }
 
 TEST(FiguresTest, PlotDirectoryNeedsAStore) {
