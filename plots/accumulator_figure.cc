@@ -16,11 +16,44 @@ namespace icp {
 namespace {
 constexpr char kBigMarker[] = "#ff1a1a";
 constexpr char kSmallMarker[] = "#ff9f1c";
+// Sides that differ more than this many times are drawn not to scale: equal
+// scales would draw the longer one as a line (and gnuplot warns of an
+// extreme aspect ratio).
+constexpr double kMaxEqualScales = 20;
 
 // The side of BlockMax's blocks.
 int BlockSide(const cv::Mat& counts, int max_side) {
   return std::max(
       {1, (counts.rows + max_side - 1) / max_side, (counts.cols + max_side - 1) / max_side});
+}
+
+// Whether an axis of this range draws as a point: gnuplot widens (and warns
+// of) an empty range, and one of a few ulps has no tics to draw.
+bool Degenerate(const Interval& range) {
+  return !(range.Width() > 1e-9 * std::max({1.0, std::fabs(range.lo()), std::fabs(range.hi())}));
+}
+
+// The range an axis draws: range itself, or for a degenerate one a range
+// about it as wide as the other axis (else 1), over which its cells are
+// stretched: a zero-width cell has nothing to draw.
+Interval DrawnRange(const Interval& range, const Interval& other) {
+  if (!Degenerate(range)) return range;
+  const double half = Degenerate(other) ? 0.5 : other.Width() / 2;
+  const double mid = range.Mid();
+  return Interval(mid - half, mid + half);
+}
+
+// gnuplot draws no image of fewer than 2 x 2 points ("Image grid must be at
+// least 4 points"): a single row or column is drawn as two of half the size.
+cv::Mat AtLeastTwoBySide(const cv::Mat& drawn, int* rows_per_cell, int* cols_per_cell) {
+  *rows_per_cell = drawn.rows < 2 ? 2 : 1;
+  *cols_per_cell = drawn.cols < 2 ? 2 : 1;
+  if (*rows_per_cell == 1 && *cols_per_cell == 1) return drawn;
+  cv::Mat out(drawn.rows * *rows_per_cell, drawn.cols * *cols_per_cell, CV_32S);
+  for (int r = 0; r < out.rows; ++r)
+    for (int c = 0; c < out.cols; ++c)
+      out.at<int>(r, c) = drawn.at<int>(r / *rows_per_cell, c / *cols_per_cell);
+  return out;
 }
 }  // namespace
 
@@ -43,12 +76,23 @@ void PlotAccumulatorFigure(const FigureText& text, const cv::Mat& counts, const 
                            const Interval& y, const std::vector<MarkerSet>& markers,
                            const std::string& out_dir, PlotOutput* out) {
   if (counts.empty() || x.IsEmpty() || y.IsEmpty()) return Skip(text, out);
+  if (!std::isfinite(x.Width()) || !std::isfinite(y.Width())) {
+    std::ostringstream range;
+    range << x << " x " << y;
+    out->messages.push_back(text.name + ": skipped: the accumulator's range " + range.str() +
+                            " is not bounded");
+    return;
+  }
+  const Interval range_x = DrawnRange(x, y), range_y = DrawnRange(y, x);
   // Each pixel of the drawn matrix stands for a block of block x block
   // cells (the last of a row or column may hold fewer and overhang the
-  // range, which clips it).
-  const cv::Mat drawn = BlockMax(counts, kAccumulatorPlotCells);
+  // range, which clips it), or for half a cell of a single row or column.
   const int block = BlockSide(counts, kAccumulatorPlotCells);
-  const double cell_x = x.Width() / counts.cols * block, cell_y = y.Width() / counts.rows * block;
+  int rows_per_cell = 1, cols_per_cell = 1;
+  const cv::Mat drawn =
+      AtLeastTwoBySide(BlockMax(counts, kAccumulatorPlotCells), &rows_per_cell, &cols_per_cell);
+  const double cell_x = range_x.Width() / counts.cols * block / cols_per_cell,
+               cell_y = range_y.Width() / counts.rows * block / rows_per_cell;
   double max_count = 0;
   cv::minMaxLoc(counts, nullptr, &max_count);
   std::ostringstream data;
@@ -67,8 +111,8 @@ void PlotAccumulatorFigure(const FigureText& text, const cv::Mat& counts, const 
   };
   // The truth's cross is drawn as four arms around an open centre, so it
   // does not hide the maximum it marks; small crosses are plain points.
-  const double arm_out = 0.045 * std::max(x.Width(), y.Width()),
-               arm_in = 0.012 * std::max(x.Width(), y.Width());
+  const double side = std::max(range_x.Width(), range_y.Width());
+  const double arm_out = 0.045 * side, arm_in = 0.012 * side;
   std::string arrows;
   int arrow = 0;
   for (const MarkerSet& m : markers) {
@@ -85,9 +129,12 @@ void PlotAccumulatorFigure(const FigureText& text, const cv::Mat& counts, const 
   }
   Panel panel;
   panel.setup = data.str() + "set title " + MultiLine(text.title) + " noenhanced\nunset grid\n" +
-                "set xlabel 'x'\nset ylabel 'y'\nset size ratio -1\n" +
-                "set xrange [" + num(x.lo()) + ":" + num(x.hi()) + "]\nset yrange [" +
-                num(y.lo()) + ":" + num(y.hi()) + "]\n" +
+                "set xlabel 'x'\nset ylabel 'y'\n" +
+                (side <= kMaxEqualScales * std::min(range_x.Width(), range_y.Width())
+                     ? "set size ratio -1\n"
+                     : "set size square\n") +
+                "set xrange [" + num(range_x.lo()) + ":" + num(range_x.hi()) +
+                "]\nset yrange [" + num(range_y.lo()) + ":" + num(range_y.hi()) + "]\n" +
                 "set cbrange [0:" + num(std::max(1.0, max_count)) + "]\nset cblabel 'count'\n" +
                 "set cbtics " + num(std::max(1.0, std::ceil(max_count / 10))) + "\n" +
                 // viridis: light enough at low counts that single bands show
@@ -97,8 +144,8 @@ void PlotAccumulatorFigure(const FigureText& text, const cv::Mat& counts, const 
                 "set key at screen 0.45, screen 0.015 center bottom horizontal noenhanced\n" +
                 arrows;
   panel.series.push_back({"", {},
-                          "$counts matrix using (" + num(x.lo()) + " + ($1 + 0.5) * " +
-                              num(cell_x) + "):(" + num(y.lo()) + " + ($2 + 0.5) * " +
+                          "$counts matrix using (" + num(range_x.lo()) + " + ($1 + 0.5) * " +
+                              num(cell_x) + "):(" + num(range_y.lo()) + " + ($2 + 0.5) * " +
                               num(cell_y) + "):3 with image notitle"});
   for (const MarkerSet& m : markers) {
     const std::string title = m.title.empty() ? " notitle" : " title " + Quote(m.title);

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <iterator>
+#include <set>
 #include <utility>
 
 #include "plots/figures_internal.h"
@@ -151,27 +153,60 @@ void RenderPanel(const std::string& name, double width_in, double height_in, con
 }
 
 int CountRunsOnly(const std::vector<const RunRecord*>& runs) {
-  return static_cast<int>(std::count_if(runs.begin(), runs.end(),
-                                        [](const RunRecord* r) { return RecordedRunsOnly(*r); }));
+  return static_cast<int>(RunsOnlyOf(runs).size());
+}
+
+std::vector<const RunRecord*> RunsOnlyOf(const std::vector<const RunRecord*>& runs) {
+  std::vector<const RunRecord*> out;
+  std::copy_if(runs.begin(), runs.end(), std::back_inserter(out),
+               [](const RunRecord* r) { return RecordedRunsOnly(*r); });
+  return out;
+}
+
+std::string RunCount(std::size_t n) { return std::to_string(n) + (n == 1 ? " run" : " runs"); }
+
+std::string RecordedWithRunsOnly(const std::vector<const RunRecord*>& runs) {
+  std::set<std::string> experiments;
+  for (const RunRecord* r : runs)
+    if (!ExperimentOf(*r).empty()) experiments.insert(ExperimentOf(*r));
+  std::string which;
+  for (const std::string& e : experiments) which += (which.empty() ? "" : ", ") + e;
+  if (!which.empty())
+    which = (experiments.size() == 1 ? "experiment " : "experiments ") + which + "; ";
+  return "recorded with `record: runs` (" + which +
+         "run metrics only, no step rows; rerun with record: steps to draw them)";
 }
 
 std::string RunsOnlyText(int n) {
-  return std::to_string(n) + (n == 1 ? " run was" : " runs were") +
-         " recorded with `record: runs` (run metrics only, no step rows; rerun with record: steps "
-         "to draw them)";
+  return RunCount(n) + (n == 1 ? " was " : " were ") + RecordedWithRunsOnly({});
 }
 
 void Skip(const FigureText& text, PlotOutput* out, const std::vector<const RunRecord*>& runs) {
-  const int runs_only = CountRunsOnly(runs);
-  out->messages.push_back(
-      text.name + ": skipped: " +
-      (runs_only > 0 ? "it needs step rows, and " + RunsOnlyText(runs_only) : text.skip_reason));
+  const std::vector<const RunRecord*> runs_only = RunsOnlyOf(runs);
+  if (runs_only.empty()) {
+    out->messages.push_back(text.name + ": skipped: " + text.skip_reason);
+    return;
+  }
+  const std::size_t n = runs_only.size();
+  out->messages.push_back(text.name + ": skipped: it needs step rows, and " + RunCount(n) +
+                          (n == 1 ? " was " : " were ") + RecordedWithRunsOnly(runs_only));
 }
 
 void NoteRunsOnly(const FigureText& text, const std::vector<const RunRecord*>& runs,
                   PlotOutput* out) {
-  if (const int n = CountRunsOnly(runs); n > 0)
-    out->messages.push_back(text.name + ": left out " + RunsOnlyText(n));
+  const std::vector<const RunRecord*> runs_only = RunsOnlyOf(runs);
+  if (!runs_only.empty())
+    out->messages.push_back(text.name + ": drawn without " + RunCount(runs_only.size()) + " " +
+                            RecordedWithRunsOnly(runs_only));
 }
 
 }  // namespace icp::detail::plots
+
+namespace icp {
+
+void SkipFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
+                PlotOutput* out) {
+  detail::plots::Skip(text, out, runs);
+}
+
+}  // namespace icp

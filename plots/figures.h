@@ -63,6 +63,13 @@ struct FigureText {
 // A run's title in figures: "hc4 (seed 1)", "hc4 {ratio=0.1} (seed 2, steps=60)".
 std::string RunLabel(const RunRecord& r);
 
+// The skip message of a figure over steps that has nothing to draw: when
+// some of runs (the ok runs it would draw) were stored with `record: runs`,
+// that it needs their step rows, naming their experiments; else
+// text.skip_reason. The figure kinds below skip the same way.
+void SkipFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
+                PlotOutput* out);
+
 // The figure kinds; each draws what it is given, in that order, and appends
 // to out.
 // Mean x-y area (of the newest state; and over the window's states when the
@@ -95,10 +102,10 @@ void PlotCentreErrorFigure(const FigureText& text, const std::vector<const RunRe
                            const std::string& out_dir, PlotOutput* out);
 // A run drawn on its map (equal scales): the map's set pixels as grey dots
 // (wall_points, the pixels' centres), the true x-y trajectory of the first
-// run in black, and for each run the centre of its estimate at every step
-// (the step property mean_<var> when the estimator reports one, a particle
-// filter's weighted mean; else the middle of the hull), in its algorithm's
-// colour; with boxes_every > 0, the x-y hull of every boxes_every-th step of
+// run with steps in black, and for each run the centre of its estimate at
+// every step (the step property mean_<var> when the estimator reports one, a
+// particle filter's weighted mean; else the middle of the hull), in its
+// algorithm's colour; with boxes_every > 0, the x-y hull of every boxes_every-th step of
 // the runs whose estimates are sets (not particles) as rectangles.
 void PlotTrackFigure(const FigureText& text, const std::vector<std::pair<double, double>>& wall_points,
                      const std::vector<const RunRecord*>& runs, int boxes_every,
@@ -118,11 +125,13 @@ struct MarkerSet {
 // y.lo() up, column c the c-th cell of x) over the rectangle x by y, cells
 // of equal size, with a colour bar "count" from 0 to the maximum and the
 // markers on top (the truth's big cross open at its centre, so that it
-// does not hide the maximum); equal scales on both axes; a '\n' in the
-// title breaks it. A matrix of more than
-// kAccumulatorPlotCells cells a side is drawn at BlockMax resolution so the
-// data stays small and the maximum stays visible. Skipped when counts is
-// empty.
+// does not hide the maximum); equal scales on both axes (unless one side is
+// more than 20 times the other); a '\n' in the title breaks it. A matrix of
+// more than kAccumulatorPlotCells cells a side is drawn at BlockMax
+// resolution so the data stays small and the maximum stays visible.
+// Degenerate ones draw too: a single row or column of cells (even one
+// cell), and a side of zero width, drawn as wide as the other side (or 1)
+// about its point. Skipped when counts is empty or a side is unbounded.
 void PlotAccumulatorFigure(const FigureText& text, const cv::Mat& counts, const Interval& x,
                            const Interval& y, const std::vector<MarkerSet>& markers,
                            const std::string& out_dir, PlotOutput* out);

@@ -63,16 +63,27 @@ void Render(const Figure& f, const std::string& out_dir, PlotOutput* out);
 void RenderPanel(const std::string& name, double width_in, double height_in, const Panel& panel,
                  const std::string& out_dir, PlotOutput* out);
 
-// How many of the runs were stored with `record: runs` (no step rows), and
-// the sentence that says so.
+// The runs stored with `record: runs` (no step rows), and how many.
+std::vector<const RunRecord*> RunsOnlyOf(const std::vector<const RunRecord*>& runs);
 int CountRunsOnly(const std::vector<const RunRecord*>& runs);
+
+// "1 run", "2 runs".
+std::string RunCount(std::size_t n);
+
+// "recorded with `record: runs` (experiment marina; run metrics only, no step
+// rows; rerun with record: steps to draw them)": how the runs were stored,
+// the spec experiments that planned them, and how to get their steps.
+std::string RecordedWithRunsOnly(const std::vector<const RunRecord*>& runs);
+
+// "2 runs were recorded with `record: runs` (...)".
 std::string RunsOnlyText(int n);
 
-// A figure over steps whose runs were stored without them says so, not
-// the generic reason.
+// The skip message of a figure: text.skip_reason, unless some of runs (what
+// it would draw) were stored with `record: runs`: then that it needs their
+// step rows, so the user knows the runs exist and how to draw them.
 void Skip(const FigureText& text, PlotOutput* out, const std::vector<const RunRecord*>& runs = {});
 
-// Drawn, but without the runs that have no step rows.
+// Drawn, but without the runs that have no step rows: a note naming them.
 void NoteRunsOnly(const FigureText& text, const std::vector<const RunRecord*>& runs,
                   PlotOutput* out);
 
@@ -95,6 +106,9 @@ using detail::plots::Positive;
 using detail::plots::Quote;
 using detail::plots::Render;
 using detail::plots::RenderPanel;
+using detail::plots::RunsOnlyOf;
+using detail::plots::RecordedWithRunsOnly;
+using detail::plots::RunCount;
 using detail::plots::RunsOnlyText;
 using detail::plots::Series;
 using detail::plots::Skip;

@@ -18,6 +18,9 @@ namespace {
 namespace fs = std::filesystem;
 using testing::FigureFiles;
 using testing::GnuplotMissing;
+using testing::PixelsOfColour;
+using testing::RunsOnly;
+using testing::StderrOf;
 using testing::TempDir;
 
 // A synthetic car-track run: a box around a circular track whose width
@@ -185,6 +188,115 @@ TEST(FiguresTest, TimingShowsTheConfigurationWithTheMostAlgorithms) {
   TimingGroups(SummariseGroups(runs), &setting);
   EXPECT_EQ(setting, "car-track, steps=900");
   EXPECT_TRUE(TimingGroups({}, &setting).empty());
+}
+
+// A figure over steps given only runs stored with `record: runs` says so,
+// naming their experiment, instead of its generic reason; one given some
+// runs with steps draws those and says which it left out.
+TEST(FiguresTest, RunsRecordedWithoutStepsAreNamedInEveryStepFigure) {
+  const fs::path dir = TempDir("figures_runs_only");
+  RunRecord with_steps = MakeRun("hc4", "car-track", {}, 1, 20, 1e-4, 1);
+  with_steps.spec_file = "specs/t.yaml#lap";
+  const RunRecord runs_only = RunsOnly(with_steps);
+  const std::vector<const RunRecord*> only = {&runs_only};
+  PlotOutput out;
+  PlotCorridorFigure({"corridors", "", "none"}, only, dir.string(), &out);
+  PlotAreaFigure({"area", "", "none"}, only, dir.string(), &out);
+  PlotCentreErrorFigure({"error", "", "none"}, only, dir.string(), &out);
+  PlotTrackFigure({"track", "", "none"}, {}, only, 5, dir.string(), &out);
+  const GroupSummary group = Summarise(only);
+  PlotTimingFigure({"timing", "", "none"}, {&group}, dir.string(), &out);
+  const std::string why =
+      ": skipped: it needs step rows, and 1 run was recorded with `record: runs` (experiment "
+      "lap; run metrics only, no step rows; rerun with record: steps to draw them)";
+  EXPECT_EQ(out.messages,
+            (std::vector<std::string>{"corridors" + why, "area" + why, "error" + why,
+                                      "track" + why, "timing" + why}));
+  EXPECT_TRUE(out.files.empty());
+  // Two runs of two experiments.
+  RunRecord other = runs_only;
+  other.spec_file = "specs/t.yaml#other";
+  other.spec.seed = 2;
+  out = {};
+  PlotAreaFigure({"area", "", "none"}, {&runs_only, &other}, dir.string(), &out);
+  EXPECT_EQ(out.messages,
+            (std::vector<std::string>{
+                "area: skipped: it needs step rows, and 2 runs were recorded with `record: runs` "
+                "(experiments lap, other; run metrics only, no step rows; rerun with record: "
+                "steps to draw them)"}));
+  // A runs-only run beside one with steps: drawn, with a note.
+  if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
+  fs::create_directories(dir);
+  out = {};
+  PlotAreaFigure({"area", "", "none"}, {&with_steps, &runs_only}, dir.string(), &out);
+  EXPECT_EQ(out.files, FigureFiles(dir, {"area"}));
+  EXPECT_EQ(out.messages,
+            (std::vector<std::string>{
+                "area: drawn without 1 run recorded with `record: runs` (experiment lap; run "
+                "metrics only, no step rows; rerun with record: steps to draw them)"}));
+  fs::remove_all(dir);
+}
+
+// The sweep figure draws from the run metrics, but the window states' area is
+// a step property: without steps its panel says whose runs it lacks.
+TEST(FiguresTest, SweepNamesTheRunsItsWindowPanelLacks) {
+  if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
+  const fs::path dir = TempDir("figures_sweep_runs_only");
+  fs::create_directories(dir);
+  std::vector<RunRecord> runs;
+  for (const char* w : {"1", "5"}) {
+    runs.push_back(RunsOnly(MakeRun("hc4", "car-track", {{"w", w}}, 1, 20, 1e-5, 1)));
+    runs.back().spec_file = "specs/t.yaml#window";
+  }
+  PlotOutput out;
+  PlotSweepFigure({"sweep", "", "none"}, "w", ParamSweep(runs, "car-track", "w"), dir.string(),
+                  &out);
+  EXPECT_EQ(out.files, FigureFiles(dir, {"sweep"}));
+  EXPECT_EQ(out.messages,
+            (std::vector<std::string>{
+                "sweep: drawn from the run metrics; the mean area of the window states (a step "
+                "property) lacks 2 runs recorded with `record: runs` (experiment window; run "
+                "metrics only, no step rows; rerun with record: steps to draw them)"}));
+  fs::remove_all(dir);
+}
+
+// A degenerate accumulator (one cell, one row or column of cells, a
+// zero-width side) draws its cells without a gnuplot warning: gnuplot's
+// image needs 2 x 2 points and a range of non-zero width.
+TEST(FiguresTest, DegenerateAccumulatorsDrawWithoutWarnings) {
+  if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
+  const fs::path dir = TempDir("figures_degenerate_accumulator");
+  fs::create_directories(dir);
+  const cv::Mat one(1, 1, CV_32S, cv::Scalar(5));
+  cv::Mat row(1, 3, CV_32S, cv::Scalar(1)), column(3, 1, CV_32S, cv::Scalar(2));
+  row.at<int>(0, 1) = 5;
+  column.at<int>(2, 0) = 5;
+  const struct {
+    const char* name;
+    cv::Mat counts;
+    Interval x, y;
+    int min_top_pixels;  // of the cell with the maximum count
+  } kCases[] = {
+      {"one", one, Interval(-10, 10), Interval(-10, 10), 40000},
+      {"row", row, Interval(-10, 10), Interval(0, 5), 3000},
+      {"column", column, Interval(-3, 3), Interval(-10, 10), 3000},
+      {"point_x", one, Interval(2, 2), Interval(-10, 10), 40000},
+      {"point", one, Interval(2, 2), Interval(-1, -1), 40000},
+  };
+  for (const auto& c : kCases) {
+    PlotOutput out;
+    const std::string err = StderrOf([&] {
+      const std::vector<MarkerSet> truth = {{"truth", {{c.x.Mid(), c.y.Mid()}}, true}};
+      PlotAccumulatorFigure({c.name, "Degenerate", "none"}, c.counts, c.x, c.y, truth,
+                            dir.string(), &out);
+    });
+    EXPECT_EQ(err, "") << c.name;
+    EXPECT_TRUE(out.messages.empty()) << c.name << ": " << out.messages.front();
+    ASSERT_EQ(out.files, FigureFiles(dir, {c.name}));
+    // The maximum's colour (the top of the palette, #fde725) fills its cell.
+    EXPECT_GT(PixelsOfColour(out.files[0], 0xfd, 0xe7, 0x25), c.min_top_pixels) << c.name;
+  }
+  fs::remove_all(dir);
 }
 
 TEST(FiguresTest, PlotDirectoryNeedsAStore) {

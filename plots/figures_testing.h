@@ -3,13 +3,21 @@
 #ifndef ICPBENCH_PLOTS_FIGURES_TESTING_H_
 #define ICPBENCH_PLOTS_FIGURES_TESTING_H_
 
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <initializer_list>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "harness/run_record.h"
 
 namespace icp::testing {
 
@@ -32,6 +40,39 @@ inline std::vector<std::string> FigureFiles(const std::filesystem::path& dir,
     files.push_back((dir / (std::string(name) + ".pdf")).string());
   }
   return files;
+}
+
+// The run as a store recorded with `record: runs` holds it: its run row
+// (status, metrics) without step rows.
+inline RunRecord RunsOnly(RunRecord run) {
+  if (run.metrics.steps == 0) run.metrics.steps = static_cast<int>(run.steps.size());
+  if (run.metrics.steps == 0) run.metrics.steps = 1;
+  run.steps.clear();
+  run.spec.record_steps = false;
+  return run;
+}
+
+// What draw printed on stderr, gnuplot's warnings included (gnuplot is a
+// child process and writes to this process' stderr, which this redirects).
+inline std::string StderrOf(const std::function<void()>& draw) {
+  ::testing::internal::CaptureStderr();
+  draw();
+  return ::testing::internal::GetCapturedStderr();
+}
+
+// How many pixels of the PNG at path have the colour (r, g, b); -1 when it
+// cannot be read.
+inline int PixelsOfColour(const std::string& path, int r, int g, int b) {
+  const cv::Mat image = cv::imread(path, cv::IMREAD_COLOR);
+  if (image.empty()) return -1;
+  int n = 0;
+  for (int y = 0; y < image.rows; ++y) {
+    for (int x = 0; x < image.cols; ++x) {
+      const cv::Vec3b& p = image.at<cv::Vec3b>(y, x);  // BGR
+      n += p[0] == b && p[1] == g && p[2] == r;
+    }
+  }
+  return n;
 }
 
 }  // namespace icp::testing

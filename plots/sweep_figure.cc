@@ -17,6 +17,16 @@ void PlotSweepFigure(const FigureText& text, const std::string& x_label,
                      const std::vector<SweepPoint>& points, const std::string& out_dir,
                      PlotOutput* out) {
   if (points.empty()) return Skip(text, out);
+  // The areas and times come from the run metrics, which every ok run has;
+  // the window states' area is a step property, which runs stored with
+  // `record: runs` lack.
+  std::vector<const RunRecord*> runs;
+  for (const SweepPoint& p : points) runs.insert(runs.end(), p.ok_runs.begin(), p.ok_runs.end());
+  if (const std::vector<const RunRecord*> runs_only = RunsOnlyOf(runs); !runs_only.empty())
+    out->messages.push_back(text.name +
+                            ": drawn from the run metrics; the mean area of the window states (a "
+                            "step property) lacks " +
+                            RunCount(runs_only.size()) + " " + RecordedWithRunsOnly(runs_only));
   const bool window_area = std::any_of(points.begin(), points.end(), [](const SweepPoint& p) {
     return std::isfinite(p.mean_window_area);
   });

@@ -1,5 +1,6 @@
 // A run drawn on its map: the map's pixels, the true trajectory, each run's
 // estimate centres and, every few steps, its x-y boxes (the marina tracks).
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <utility>
@@ -30,7 +31,11 @@ void PlotTrackFigure(const FigureText& text,
                      const std::vector<std::pair<double, double>>& wall_points,
                      const std::vector<const RunRecord*>& runs, int boxes_every,
                      const std::string& out_dir, PlotOutput* out) {
-  if (runs.empty() || runs[0]->steps.empty()) return Skip(text, out, runs);
+  // The truth is drawn from the first run with steps; runs stored without
+  // them (record: runs) draw nothing and are named.
+  const auto first = std::find_if(runs.begin(), runs.end(),
+                                  [](const RunRecord* r) { return !r->steps.empty(); });
+  if (first == runs.end()) return Skip(text, out, runs);
   NoteRunsOnly(text, runs, out);
   Panel panel;
   panel.setup = "set title " + MultiLine(text.title) +
@@ -40,7 +45,7 @@ void PlotTrackFigure(const FigureText& text,
   for (const auto& [x, y] : wall_points) walls.rows.push_back({x, y});
   if (HasPoint(walls)) panel.series.push_back(std::move(walls));
   Series truth{"using 1:2 with lines lw 2 lc rgb 'black' title 'truth'", {}, ""};
-  for (const StepRecord& s : runs[0]->steps)
+  for (const StepRecord& s : (*first)->steps)
     if (s.vars.size() >= 2) truth.rows.push_back({s.vars[0].truth, s.vars[1].truth});
   if (HasPoint(truth)) panel.series.push_back(std::move(truth));
   for (const RunRecord* r : runs) {

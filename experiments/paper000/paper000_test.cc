@@ -19,6 +19,7 @@ using testing::GnuplotMissing;
 using testing::InExperiment;
 using testing::MakeRun;
 using testing::MarkdownRow;
+using testing::RunsOnly;
 using testing::TempDir;
 
 std::string Md(const std::vector<RunRecord>& runs) { return Report(runs, "md", Paper000Tables); }
@@ -190,6 +191,42 @@ TEST(Paper000Test, WithoutItsExperimentsTheFiguresSaySo) {
                 "runs at two or more w",
                 "fig3_corridors: skipped: no ok run of experiment table1 with steps and truth",
                 "fig4_area: skipped: no ok run of experiment table1 with areas"}));
+  fs::remove_all(dir);
+}
+
+// Runs recorded with `record: runs` have no steps to draw: the lap's figures
+// say so instead of "no ok run"; the window sweep draws from their metrics
+// and says what its window-state panel lacks.
+TEST(Paper000Test, RunsRecordedWithoutStepsAreNamed) {
+  const fs::path dir = TempDir("paper000_runs_only");
+  fs::create_directories(dir);
+  std::vector<RunRecord> runs = {RunsOnly(Table1(MakeRun("hc4", {}, {}, 1, {1e-3, 1e-3}))),
+                                 RunsOnly(Table1(MakeRun("bc4", {}, {}, 1, {1e-3, 1e-3})))};
+  PlotOutput out;
+  Paper000Figures(runs, dir.string(), &out);
+  const std::string why =
+      ": skipped: it needs step rows, and 2 runs were recorded with `record: runs` (experiment "
+      "table1; run metrics only, no step rows; rerun with record: steps to draw them)";
+  ASSERT_EQ(out.messages.size(), 3u);
+  EXPECT_EQ(out.messages[1], "fig3_corridors" + why);
+  EXPECT_EQ(out.messages[2], "fig4_area" + why);
+  if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
+  // HC4 with steps: drawn without BC4, with a note.
+  runs[0] = Table1(MakeRun("hc4", {}, {}, 1, {1e-3, 1e-3}));
+  for (const char* w : {"1", "5"})
+    runs.push_back(RunsOnly(Window(MakeRun("hc4", {}, {{"w", w}}, 1, {1e-5, 1e-5}))));
+  out = {};
+  Paper000Figures(runs, dir.string(), &out);
+  EXPECT_EQ(out.files, FigureFiles(dir, {"fig2_window", "fig3_corridors", "fig4_area"}));
+  const std::string note =
+      ": drawn without 1 run recorded with `record: runs` (experiment table1; run metrics "
+      "only, no step rows; rerun with record: steps to draw them)";
+  EXPECT_EQ(out.messages,
+            (std::vector<std::string>{
+                "fig2_window: drawn from the run metrics; the mean area of the window states (a "
+                "step property) lacks 2 runs recorded with `record: runs` (experiment window; "
+                "run metrics only, no step rows; rerun with record: steps to draw them)",
+                "fig3_corridors" + note, "fig4_area" + note}));
   fs::remove_all(dir);
 }
 

@@ -22,6 +22,7 @@ using testing::GnuplotMissing;
 using testing::InExperiment;
 using testing::MakeRun;
 using testing::MarkdownRow;
+using testing::RunsOnly;
 using testing::TempDir;
 
 constexpr int kSteps = 80;
@@ -78,6 +79,20 @@ TEST(Paper004Test, TheFigureDrawsHc4NearestToThePapersWindow) {
   ASSERT_EQ(none.messages.size(), 1u);
   EXPECT_EQ(none.messages[0].rfind("fig13_post_localization: skipped: ", 0), 0u);
   fs::remove_all(dir);
+}
+
+// Window runs recorded with `record: runs` keep no post-localized states:
+// the figure says so instead of "no ok HC4 run".
+TEST(Paper004Test, RunsRecordedWithoutStepsAreNamed) {
+  const std::vector<RunRecord> runs = {RunsOnly(WindowRun(5)), RunsOnly(WindowRun(10))};
+  PlotOutput out;
+  Paper004Figures(runs, TempDir("paper004_runs_only").string(), &out);
+  EXPECT_EQ(out.messages,
+            (std::vector<std::string>{
+                "fig13_post_localization: skipped: it needs step rows, and 2 runs were recorded "
+                "with `record: runs` (experiment window; run metrics only, no step rows; rerun "
+                "with record: steps to draw them)"}));
+  EXPECT_TRUE(out.files.empty());
 }
 
 TEST(Paper004Test, IsRegistered) {

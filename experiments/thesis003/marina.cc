@@ -110,32 +110,38 @@ TextTable MarinaTable(const std::vector<RunRecord>& runs) {
 }
 
 std::vector<const RunRecord*> MarinaFigureRuns(const std::vector<RunRecord>& runs) {
+  // Runs with steps first; runs stored with `record: runs` only where no
+  // run with steps takes their place, so that the figures can name them.
+  auto drawable = [](const RunRecord& r) {
+    return r.status == RunStatus::kOk && (!r.steps.empty() || RecordedRunsOnly(r));
+  };
   const RunRecord* reference = nullptr;
   auto rank = [](const RunRecord& r) {
     const auto start = r.spec.problem_params.find("start");
     const bool known = start != r.spec.problem_params.end() && start->second == "known";
-    return std::make_tuple(ExperimentOf(r) != kThesis003Marina,
+    return std::make_tuple(r.steps.empty(), ExperimentOf(r) != kThesis003Marina,
                            ExperimentOf(r) != kThesis003MarinaShort, !known, r.spec.seed);
   };
   for (const RunRecord& r : runs) {
-    if (r.status != RunStatus::kOk || !OfMarina(r) || r.steps.empty()) continue;
+    if (!drawable(r) || !OfMarina(r)) continue;
     if (!reference || rank(r) < rank(*reference)) reference = &r;
   }
   std::vector<const RunRecord*> out;
   if (!reference) return out;
   // One run per algorithm: its configuration with the lowest centre RMSE.
   for (const RunRecord& r : runs) {
-    if (r.status != RunStatus::kOk || ExperimentOf(r) != ExperimentOf(*reference) ||
+    if (!drawable(r) || ExperimentOf(r) != ExperimentOf(*reference) ||
         r.spec.problem != reference->spec.problem ||
         r.spec.problem_params != reference->spec.problem_params ||
-        r.spec.seed != reference->spec.seed || r.steps.empty())
+        r.spec.seed != reference->spec.seed)
       continue;
     auto same = std::find_if(out.begin(), out.end(), [&](const RunRecord* o) {
       return o->spec.algorithm == r.spec.algorithm;
     });
     if (same == out.end())
       out.push_back(&r);
-    else if (r.metrics.centre_rmse < (*same)->metrics.centre_rmse)
+    else if (std::make_pair(r.steps.empty(), r.metrics.centre_rmse) <
+             std::make_pair((*same)->steps.empty(), (*same)->metrics.centre_rmse))
       *same = &r;
   }
   std::stable_sort(out.begin(), out.end(), [](const RunRecord* a, const RunRecord* b) {
@@ -148,9 +154,11 @@ void MarinaFigures(const std::vector<RunRecord>& runs, const std::string& out_di
                    PlotOutput* out) {
   const std::string none = "no ok run of experiment marina or marina-*";
   const std::vector<const RunRecord*> drawn = MarinaFigureRuns(runs);
-  if (drawn.empty()) {
-    out->messages.push_back(std::string("fig6_8_marina_tracks: skipped: ") + none);
-    out->messages.push_back(std::string("fig6_errors: skipped: ") + none);
+  const bool steps = std::any_of(drawn.begin(), drawn.end(),
+                                 [](const RunRecord* r) { return !r->steps.empty(); });
+  if (!steps) {  // none, or stored with `record: runs`: the messages say which
+    SkipFigure({"fig6_8_marina_tracks", "", none}, drawn, out);
+    SkipFigure({"fig6_errors", "", none}, drawn, out);
     return;
   }
   const RunRecord& first = *drawn[0];

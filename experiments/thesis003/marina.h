@@ -46,13 +46,17 @@ inline constexpr double kThesis003SetMembershipRunS = 4200;
 inline constexpr double kThesis003ParticleFilterRunS = 1860;
 
 // The runs the figures draw (see the top), in algorithm display order;
-// empty when neither experiment has an ok run.
+// empty when no marina experiment has an ok run. Runs stored with `record:
+// runs` (no steps to draw) count only where no run with steps takes their
+// place: as the reference when no ok run has steps, and as an algorithm's
+// run when it has none with steps; the figures name them.
 std::vector<const RunRecord*> MarinaFigureRuns(const std::vector<RunRecord>& runs);
 
 TextTable MarinaTable(const std::vector<RunRecord>& runs);
 
 // fig6_8_marina_tracks and fig6_errors; skipped with a message when there
-// is no ok run to draw.
+// is no ok run to draw (naming `record: runs` when the runs were stored
+// without steps).
 void MarinaFigures(const std::vector<RunRecord>& runs, const std::string& out_dir,
                    PlotOutput* out);
 

@@ -19,6 +19,7 @@ using testing::FigureFiles;
 using testing::GnuplotMissing;
 using testing::InExperiment;
 using testing::MarkdownRow;
+using testing::RunsOnly;
 using testing::TempDir;
 
 // A marina step: the truth at (t, 0), the estimate's box [t - 1, t + 1] x
@@ -139,6 +140,40 @@ TEST(MarinaFiguresTest, WritesBothFiguresOrSaysWhyNot) {
   MarinaFigures(runs, dir.string(), &out);
   EXPECT_EQ(out.files, FigureFiles(dir, {"fig6_8_marina_tracks", "fig6_errors"}))
       << ::testing::PrintToString(out.messages);
+}
+
+// A store of marina runs recorded with `record: runs` has ok runs but no
+// steps to draw: both figures say so, not that there is no run.
+TEST(MarinaFiguresTest, RunsRecordedWithoutStepsAreNamed) {
+  const std::vector<RunRecord> runs = {
+      RunsOnly(MarinaRun("q-relaxed", "known", 1, {MarinaStep(0, 0, 0.01)}, {})),
+      RunsOnly(MarinaRun("particle-filter", "known", 1, {MarinaStep(0, 0, 0.01, "particles")},
+                         {})),
+  };
+  PlotOutput out;
+  MarinaFigures(runs, TempDir("marina_figures_runs_only").string(), &out);
+  const std::string why =
+      ": skipped: it needs step rows, and 2 runs were recorded with `record: runs` (experiment "
+      "marina; run metrics only, no step rows; rerun with record: steps to draw them)";
+  EXPECT_EQ(out.messages, (std::vector<std::string>{"fig6_8_marina_tracks" + why,
+                                                    "fig6_errors" + why}));
+  EXPECT_TRUE(out.files.empty());
+  // An algorithm whose only run has no steps is left out with a note.
+  if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
+  const std::vector<RunRecord> mixed = {
+      MarinaRun("q-relaxed", "known", 1, {MarinaStep(0, 0, 0.01), MarinaStep(1, 0.5, 0.01)}, {}),
+      runs[1]};
+  const std::filesystem::path dir = TempDir("marina_figures_mixed");
+  std::filesystem::create_directories(dir);
+  out = {};
+  MarinaFigures(mixed, dir.string(), &out);
+  EXPECT_EQ(out.files, FigureFiles(dir, {"fig6_8_marina_tracks", "fig6_errors"}));
+  const std::string note =
+      ": drawn without 1 run recorded with `record: runs` (experiment marina; run metrics "
+      "only, no step rows; rerun with record: steps to draw them)";
+  EXPECT_EQ(out.messages, (std::vector<std::string>{"fig6_8_marina_tracks" + note,
+                                                    "fig6_errors" + note}));
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

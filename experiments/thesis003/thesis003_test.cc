@@ -22,6 +22,9 @@ using testing::FigureFiles;
 using testing::GnuplotMissing;
 using testing::InExperiment;
 using testing::MarkdownRow;
+using testing::PixelsOfColour;
+using testing::RunsOnly;
+using testing::StderrOf;
 using testing::TempDir;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -205,6 +208,25 @@ TEST(Thesis003Test, FiguresAreWritten) {
   EXPECT_EQ(out.files, FigureFiles(dir, {"fig5_2_accumulator", "fig5_5_robot_a", "fig5_6_robot_b",
                                          "fig5_7_sum"}));
   for (const std::string& f : out.files) EXPECT_GT(fs::file_size(f), 0u) << f;
+  fs::remove_all(dir);
+}
+
+// accumulator cells=1 is in range: Fig. 5.2 of its one cell is a readable
+// image (gnuplot draws no image of fewer than 2 x 2 points), without a
+// gnuplot warning. The run needs no steps (the figure recomputes it), so one
+// recorded with `record: runs` draws too.
+TEST(Thesis003Test, OneCellAccumulatorIsDrawnWithoutWarnings) {
+  if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
+  const fs::path dir = TempDir("thesis003_one_cell");
+  fs::create_directories(dir);
+  PlotOutput out;
+  const std::string err =
+      StderrOf([&] { Thesis003Figures({RunsOnly(Fig52Run(1, 1))}, dir.string(), &out); });
+  EXPECT_EQ(err, "");
+  ASSERT_EQ(out.files.size(), 2u) << ::testing::PrintToString(out.messages);
+  EXPECT_EQ(out.files, FigureFiles(dir, {"fig5_2_accumulator"}));
+  // All 20 lines cross the one cell: it is the maximum, the palette's top.
+  EXPECT_GT(PixelsOfColour(out.files[0], 0xfd, 0xe7, 0x25), 40000);
   fs::remove_all(dir);
 }
 
