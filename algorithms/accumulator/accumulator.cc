@@ -24,8 +24,9 @@ Grid AccumulatorGrid(const Box& prior, const Box& search, const StateSpace& spac
   if (!(search[x].Width() < kInf) || !(search[y].Width() < kInf))
     throw std::invalid_argument("accumulator: the search box must be bounded in the gridded components");
   auto count = [&](int c) {
+    // A point search box (x in [1, 1]) has one cell: 0 / 0 is NaN.
     const double n = std::ceil(prior[c].Width() / search[c].Width() * cells);
-    return std::clamp(static_cast<int>(n), 1, cells);
+    return n >= 1 ? static_cast<int>(std::min<double>(n, cells)) : 1;
   };
   return Grid(prior, x, y, count(x), count(y));
 }

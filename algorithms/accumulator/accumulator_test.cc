@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "algorithms/q_relaxed/q_relaxed.h"
 #include "algorithms/relaxed/relaxed_testing.h"
+#include "core/constraint_contractor.h"
 
 namespace icp {
 namespace {
@@ -43,6 +46,43 @@ TEST(AccumulatorTest, TheSumOfTheSourcesIsTheAccumulatorOfAll) {
   EXPECT_EQ(cv::countNonZero(a.counts() != b.counts()), 0);
   EXPECT_GE(IntProperty(split.properties, "max_count_source_0").value(), 1);
   EXPECT_GE(IntProperty(split.properties, "max_count_source_1").value(), 1);
+}
+
+// Three lines x + y = 2, x - y = 0 (both through (1, 1)) and x = 3 over a
+// prior whose x is the given interval and y [0, 2].
+Views ThroughOneOne(const Interval& x_domain) {
+  ConstraintSystem csp;
+  Expr x = csp.AddVariable("x", x_domain), y = csp.AddVariable("y", {0, 2});
+  csp.AddConstraint(x + y, Interval(2));
+  csp.AddConstraint(x - y, Interval(0));
+  csp.AddConstraint(x, Interval(3));
+  Views views;
+  views.space.names = {"x", "y"};
+  views.space.x = 0;
+  views.space.y = 1;
+  MeasurementSetView view;
+  view.prior = csp.domains();
+  view.measurements = ConstraintContractors(csp);
+  views.measurement_set = std::move(view);
+  return views;
+}
+
+TEST(AccumulatorTest, ADegeneratePriorKeepsThePointThatSatisfiesMMinusQ) {
+  // A point prior (x in [1, 1]) and a subnormal width once divided a zero
+  // cell width and indexed the grid with NaN.
+  for (const Interval& x : {Interval(1), Interval(1, 1 + 2.2e-16), Interval(1, std::nextafter(1.0, 2))}) {
+    for (const char* cells : {"1", "7", "1000"}) {
+      const Views views = ThroughOneOne(x);
+      const StepResult r = MakeAccumulator({{"cells", cells}}, 0)->Step(views, StopCondition());
+      EXPECT_TRUE(r.estimate->Contains({1, 1})) << x << " " << cells;
+      EXPECT_EQ(IntProperty(r.properties, "q").value(), 1) << x << " " << cells;
+      const Box hull = r.estimate->Hull();
+      EXPECT_TRUE(hull[0].Contains(1) && hull[1].Contains(1)) << x << " " << cells;
+    }
+  }
+  const Views subnormal = ThroughOneOne(Interval(0, 5e-324));
+  const StepResult r = MakeAccumulator({}, 0)->Step(subnormal, StopCondition());
+  EXPECT_FALSE(r.estimate->Hull().IsEmpty());
 }
 
 TEST(AccumulatorTest, RejectsWhatItCannotGrid) {
