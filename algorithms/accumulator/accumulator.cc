@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
 #include <stdexcept>
 #include <string>
 
 #include "core/accumulate.h"
+#include "core/memory_budget.h"
 
 namespace icp {
 
@@ -36,19 +38,32 @@ std::vector<cv::Mat> SourceAccumulators(const Grid& grid, const MeasurementSetVi
                                         bool* stopped) {
   const int sources =
       view.sources.empty() ? 1 : 1 + *std::max_element(view.sources.begin(), view.sources.end());
+  // Every grid it keeps, before one is allocated (one source: its counts
+  // are the sum); Accumulate fits its threads' own grids in what is left.
+  const std::size_t grids = sources == 1 ? 1 : static_cast<std::size_t>(sources) + 1;
+  CheckMemory(grids * CountGridBytes(grid),
+              "the accumulator's " + (grids > 1 ? std::to_string(grids) + " count grids" : "count grid") +
+                  " of " + CountGridName(grid) + " (the parameter cells)");
   std::vector<SharedContractors> by_source(sources);
   for (std::size_t i = 0; i < view.measurements.size(); ++i)
     by_source[view.sources.empty() ? 0 : view.sources[i]].push_back(view.measurements[i]);
   std::vector<cv::Mat> out;
-  cv::Mat sum(grid.rows(), grid.cols(), CV_32S, cv::Scalar(0));
   *stopped = false;
-  for (const SharedContractors& ms : by_source) {
-    bool s = false;
-    out.push_back(Accumulate(grid, ms, stop, work, &s));
-    *stopped = *stopped || s;
-    sum += out.back();
+  try {
+    cv::Mat sum;
+    if (sources > 1) sum = cv::Mat(grid.rows(), grid.cols(), CV_32S, cv::Scalar(0));
+    for (const SharedContractors& ms : by_source) {
+      bool s = false;
+      out.push_back(Accumulate(grid, ms, stop, work, &s));
+      *stopped = *stopped || s;
+      if (sources > 1) sum += out.back();
+    }
+    out.push_back(sources > 1 ? sum : out.back());
+  } catch (const cv::Exception& e) {
+    // OpenCV's own "Insufficient memory": the harness's out-of-memory reason.
+    if (e.code == cv::Error::StsNoMem) throw std::bad_alloc();
+    throw;
   }
-  out.push_back(sum);
   return out;
 }
 

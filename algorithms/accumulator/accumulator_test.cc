@@ -2,11 +2,17 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+
 #include <cmath>
+#include <fstream>
+#include <optional>
+#include <string>
 
 #include "algorithms/q_relaxed/q_relaxed.h"
 #include "algorithms/relaxed/relaxed_testing.h"
 #include "core/constraint_contractor.h"
+#include "core/memory_budget.h"
 
 namespace icp {
 namespace {
@@ -84,6 +90,61 @@ TEST(AccumulatorTest, ADegeneratePriorKeepsThePointThatSatisfiesMMinusQ) {
   const StepResult r = MakeAccumulator({}, 0)->Step(subnormal, StopCondition());
   EXPECT_FALSE(r.estimate->Hull().IsEmpty());
 }
+
+#if !defined(ICPBENCH_SANITIZED)  // ASan's shadow memory counts as data: no limit there
+// Lowers this process's soft data limit (RLIMIT_DATA, what a worker's
+// memory_limit_mb sets) to what it uses plus `headroom` bytes, for a scope.
+class DataLimit {
+ public:
+  explicit DataLimit(std::size_t headroom) {
+    getrlimit(RLIMIT_DATA, &saved_);
+    rlimit lowered = saved_;
+    std::size_t used = 0;
+    std::ifstream status("/proc/self/status");
+    for (std::string line; std::getline(status, line);)
+      if (line.rfind("VmData:", 0) == 0) used = std::stoull(line.substr(7)) * 1024;
+    lowered.rlim_cur = used + headroom;
+    setrlimit(RLIMIT_DATA, &lowered);
+  }
+  ~DataLimit() { setrlimit(RLIMIT_DATA, &saved_); }
+
+ private:
+  rlimit saved_{};
+};
+
+TEST(AccumulatorTest, AGridOverTheMemoryLimitFailsBeforeItIsAllocated) {
+  // cells = 20000 (in range) needs 1.5 GiB of counts, more than 4 threads'
+  // grids under the default memory_limit_mb: OpenCV failed inside with
+  // "Insufficient memory". Now the size and the limit are in the message,
+  // as a bad_alloc, which the harness records as out of memory.
+  const auto c = Lines(1, 5, 0);
+  DataLimit limit(200 << 20);
+  try {
+    MakeAccumulator({{"cells", "20000"}}, 0)->Step(c.views, StopCondition());
+    ADD_FAILURE() << "no error";
+  } catch (const MemoryBudgetError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("20000 x 20000 cells"), std::string::npos) << what;
+    EXPECT_NE(what.find("needs 1526 MiB"), std::string::npos) << what;
+    EXPECT_NE(what.find("data limit of"), std::string::npos) << what;
+  }
+}
+
+TEST(AccumulatorTest, UnderAMemoryLimitFewerThreadsCountTheSame) {
+  // 1000 x 1000 cells: 4 MB a grid. With room for two grids besides the
+  // result one thread counts into it; the counts are those of all threads.
+  const auto c = Lines(2, 20, 7);
+  const StepResult free = MakeAccumulator({}, 0)->Step(c.views, StopCondition());
+  StepResult tight;
+  {
+    DataLimit limit(10 << 20);
+    tight = MakeAccumulator({}, 0)->Step(c.views, StopCondition());
+  }
+  const auto& a = dynamic_cast<const AccumulatorEstimate&>(*free.estimate);
+  const auto& b = dynamic_cast<const AccumulatorEstimate&>(*tight.estimate);
+  EXPECT_EQ(cv::countNonZero(a.counts() != b.counts()), 0);
+}
+#endif
 
 TEST(AccumulatorTest, RejectsWhatItCannotGrid) {
   auto c = Lines(1, 3, 0);
