@@ -100,8 +100,10 @@ cv::Mat Accumulate(const Grid& grid, const SharedContractors& measurements,
   // Each thread counts into a grid of its own: as many threads as such grids
   // fit in the memory left, and with one, straight into counts (the sums are
   // the same whatever the split).
-  std::size_t threads = static_cast<std::size_t>(std::max(1, tbb::this_task_arena::max_concurrency()));
-  if (budget) threads = std::min(threads, (budget->available - bytes) / std::max<std::size_t>(bytes, 1));
+  std::size_t threads =
+      static_cast<std::size_t>(std::max(1, tbb::this_task_arena::max_concurrency()));
+  if (budget)
+    threads = std::min(threads, (budget->available - bytes) / std::max<std::size_t>(bytes, 1));
   WorkCounters total;
   std::atomic<bool> any_stopped = false;
   if (threads <= 1 || measurements.size() <= 1) {

@@ -30,7 +30,8 @@ TEST(GridTest, CellsCoverTheSearchBoxAndBordersBelongToBoth) {
 TEST(GridTest, ADegenerateExtentIsCoveredAndMet) {
   // A point and a subnormal width: the cells' common width is 0 or
   // underflows, and the index guess must not divide by it.
-  for (const Interval& x : {Interval(1, 1), Interval(0, 5e-324), Interval(1, std::nextafter(1.0, 2))}) {
+  for (const Interval& x :
+       {Interval(1, 1), Interval(0, 5e-324), Interval(1, std::nextafter(1.0, 2))}) {
     const Grid grid(Box{x, {0, 1}}, 0, 1, 7, 2);
     EXPECT_EQ(grid.CellX(0).lo(), x.lo());
     EXPECT_EQ(grid.CellX(6).hi(), x.hi());

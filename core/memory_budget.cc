@@ -38,7 +38,8 @@ void CheckMemory(std::size_t bytes, const std::string& what,
   // What is left rounds down, so that it never reads as enough.
   throw MemoryBudgetError(what + " needs " + MiB(bytes) + " MiB, more than the " +
                           std::to_string(budget->available >> 20) +
-                          " MiB left of this process's data limit of " + MiB(budget->limit) + " MiB");
+                          " MiB left of this process's data limit of " + MiB(budget->limit) +
+                          " MiB");
 }
 
 }  // namespace icp

@@ -42,8 +42,9 @@ std::vector<cv::Mat> SourceAccumulators(const Grid& grid, const MeasurementSetVi
   // are the sum); Accumulate fits its threads' own grids in what is left.
   const std::size_t grids = sources == 1 ? 1 : static_cast<std::size_t>(sources) + 1;
   CheckMemory(grids * CountGridBytes(grid),
-              "the accumulator's " + (grids > 1 ? std::to_string(grids) + " count grids" : "count grid") +
-                  " of " + CountGridName(grid) + " (the parameter cells)");
+              "the accumulator's " +
+                  (grids > 1 ? std::to_string(grids) + " count grids" : "count grid") + " of " +
+                  CountGridName(grid) + " (the parameter cells)");
   std::vector<SharedContractors> by_source(sources);
   for (std::size_t i = 0; i < view.measurements.size(); ++i)
     by_source[view.sources.empty() ? 0 : view.sources[i]].push_back(view.measurements[i]);

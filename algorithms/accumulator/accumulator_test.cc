@@ -76,7 +76,8 @@ Views ThroughOneOne(const Interval& x_domain) {
 TEST(AccumulatorTest, ADegeneratePriorKeepsThePointThatSatisfiesMMinusQ) {
   // A point prior (x in [1, 1]) and a subnormal width once divided a zero
   // cell width and indexed the grid with NaN.
-  for (const Interval& x : {Interval(1), Interval(1, 1 + 2.2e-16), Interval(1, std::nextafter(1.0, 2))}) {
+  for (const Interval& x :
+       {Interval(1), Interval(1, 1 + 2.2e-16), Interval(1, std::nextafter(1.0, 2))}) {
     for (const char* cells : {"1", "7", "1000"}) {
       const Views views = ThroughOneOne(x);
       const StepResult r = MakeAccumulator({{"cells", cells}}, 0)->Step(views, StopCondition());
