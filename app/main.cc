@@ -59,6 +59,10 @@ int main(int argc, char** argv) {
   solve_cmd->add_option("--repeat,-r", solve.repeat,
                         "contract a fresh copy N times; time_s is the median")
       ->capture_default_str();
+  solve_cmd->add_option("--timeout", solve.timeout_s,
+                        "seconds each contraction may take, then it stops with a sound box "
+                        "(default inf: no limit)")
+      ->type_name("S");
 
   std::string what;
   std::string list_format = "text";

@@ -25,8 +25,7 @@ namespace {
 // Why a stopped solve stopped: the stop condition (the run's time limit),
 // or a measurement's own contraction that stopped short.
 std::string StopMessage(const StopCondition& stop, const std::string& what) {
-  return (stop.ShouldStop() ? "stopped (time limit): " : "stopped (a contraction stopped short): ") +
-         what;
+  return (stop.ShouldStop() ? "time limit reached: " : "a contraction stopped short: ") + what;
 }
 
 class QRelaxedEstimator : public RelaxedEstimator {

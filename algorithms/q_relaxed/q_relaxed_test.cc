@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "algorithms/relaxed/relaxed_testing.h"
+#include "core/contractor_testing.h"
 
 namespace icp {
 namespace {
@@ -123,31 +124,14 @@ TEST(QRelaxedTest, WithAutoQATrackedSearchNeedingTooManyOutliersRestarts) {
   EXPECT_TRUE(r.estimate->Contains(second.truth));
 }
 
-// A measurement that raises the run's cancel flag at its n-th contraction:
-// the stop condition fires in the middle of a paving.
-class CancelAfter : public Contractor {
- public:
-  CancelAfter(std::shared_ptr<Contractor> inner, int n, std::atomic<bool>* flag)
-      : inner_(std::move(inner)), n_(n), flag_(flag) {}
-  std::string_view Name() const override { return "cancel-after"; }
-  ContractSummary Contract(Box& box, ContractContext& context) override {
-    if (--n_ <= 0) *flag_ = true;
-    return inner_->Contract(box, context);
-  }
-
- private:
-  std::shared_ptr<Contractor> inner_;
-  int n_;
-  std::atomic<bool>* flag_;
-};
-
 TEST(QRelaxedTest, APavingStoppedByTheTimeLimitSaysSo) {
   // It was reported as truncated at max_boxes, with a status the harness
   // stores as ok instead of the run's timeout.
   auto c = Lines(3, 8, 2);
   std::atomic<bool> cancel = false;
   auto& measurements = c.views.measurement_set->measurements;
-  measurements[0] = std::make_shared<CancelAfter>(measurements[0], 40, &cancel);
+  const SharedContractors wrapped = testing::CancelAfterCalls({measurements[0]}, 40, &cancel);
+  measurements[0] = wrapped[0];
   const StopCondition stop = StopCondition().WithCancelFlag(&cancel);
   const StepResult r = MakeQRelaxed({{"mode", "pave"}, {"epsilon", "0.001"}, {"q", "2"}}, 0)
                            ->Step(c.views, stop);
@@ -158,8 +142,9 @@ TEST(QRelaxedTest, APavingStoppedByTheTimeLimitSaysSo) {
   EXPECT_EQ(IntProperty(r.properties, "truncated").value(), 1);
   EXPECT_TRUE(r.estimate->Contains(c.truth));
   // max_boxes alone still says max_boxes, and is no stop.
-  const StepResult full = MakeQRelaxed({{"mode", "pave"}, {"epsilon", "0.001"}, {"max_boxes", "5"}}, 0)
-                              ->Step(Lines(3, 8, 2).views, StopCondition());
+  const StepResult full =
+      MakeQRelaxed({{"mode", "pave"}, {"epsilon", "0.001"}, {"max_boxes", "5"}}, 0)
+          ->Step(Lines(3, 8, 2).views, StopCondition());
   EXPECT_NE(full.summary.status, ContractStatus::kStopped);
   EXPECT_NE(full.summary.message.find("max_boxes"), std::string::npos) << full.summary.message;
 }
