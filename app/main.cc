@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <thread>
 
+#include "core/memory_budget.h"
 #include "experiments/registry.h"
 #include "harness/environment_error.h"
 #include "harness/list_command.h"
@@ -58,6 +59,10 @@ int main(int argc, char** argv) {
   solve_cmd->add_option("--repeat,-r", solve.repeat,
                         "contract a fresh copy N times; time_s is the median")
       ->capture_default_str();
+  solve_cmd->add_option("--timeout", solve.timeout_s,
+                        "seconds each contraction may take, then it stops with a sound box "
+                        "(default inf: no limit)")
+      ->type_name("S");
 
   std::string what;
   std::string list_format = "text";
@@ -195,9 +200,14 @@ int main(int argc, char** argv) {
   } catch (const icp::EnvironmentError& e) {  // disk, descriptors, processes, permissions
     std::cerr << "icpbench: " << e.what() << "\n";
     return kEnvironmentError;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "icpbench: out of memory (free memory or raise the limit, ulimit -v; or reduce "
-                 "--jobs or the size of the spec or file)\n";
+  } catch (const std::bad_alloc& e) {
+    // A size checked before it was allocated says what needed how much.
+    if (const auto* budget = dynamic_cast<const icp::MemoryBudgetError*>(&e))
+      std::cerr << "icpbench: out of memory: " << budget->what()
+                << " (raise the limit, ulimit -d, or lower the size)\n";
+    else
+      std::cerr << "icpbench: out of memory (free memory or raise the limit, ulimit -v; or reduce "
+                   "--jobs or the size of the spec or file)\n";
     return kEnvironmentError;
   } catch (const std::invalid_argument& e) {  // ParamError, unknown names, options
     std::cerr << "icpbench: " << e.what() << "\n";

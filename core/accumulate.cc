@@ -1,11 +1,16 @@
 #include "core/accumulate.h"
 
+#include <algorithm>
 #include <atomic>
 #include <mutex>
+#include <optional>
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "core/memory_budget.h"
 
 namespace icp {
 
@@ -77,26 +82,60 @@ struct Raster {
 };
 }  // namespace
 
+std::size_t CountGridBytes(const Grid& grid) {
+  return static_cast<std::size_t>(grid.rows()) * static_cast<std::size_t>(grid.cols()) *
+         sizeof(std::int32_t);
+}
+
+std::string CountGridName(const Grid& grid) {
+  return std::to_string(grid.cols()) + " x " + std::to_string(grid.rows()) + " cells";
+}
+
 cv::Mat Accumulate(const Grid& grid, const SharedContractors& measurements,
                    const StopCondition& stop, WorkCounters* work, bool* stopped) {
-  tbb::enumerable_thread_specific<cv::Mat> partial(
-      [&] { return cv::Mat(grid.rows(), grid.cols(), CV_32S, cv::Scalar(0)); });
-  std::mutex work_mutex;
+  const std::size_t bytes = CountGridBytes(grid);
+  const std::optional<MemoryBudget> budget = DataMemoryBudget();
+  CheckMemory(bytes, "an accumulator's count grid of " + CountGridName(grid), budget);
+  cv::Mat counts(grid.rows(), grid.cols(), CV_32S, cv::Scalar(0));
+  // Each thread counts into a grid of its own: as many threads as such grids
+  // fit in the memory left, and with one, straight into counts (the sums are
+  // the same whatever the split).
+  std::size_t threads =
+      static_cast<std::size_t>(std::max(1, tbb::this_task_arena::max_concurrency()));
+  if (budget)
+    threads = std::min(threads, (budget->available - bytes) / std::max<std::size_t>(bytes, 1));
   WorkCounters total;
   std::atomic<bool> any_stopped = false;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, measurements.size(), 1),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      cv::Mat& counts = partial.local();
-                      for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                        Raster raster(grid, *measurements[i], stop, counts);
-                        raster.Mark(0, grid.rows(), 0, grid.cols());
-                        if (raster.stopped) any_stopped = true;
-                        std::lock_guard<std::mutex> lock(work_mutex);
-                        total += raster.work;
-                      }
-                    });
-  cv::Mat counts(grid.rows(), grid.cols(), CV_32S, cv::Scalar(0));
-  for (const cv::Mat& p : partial) counts += p;
+  if (threads <= 1 || measurements.size() <= 1) {
+    for (const std::shared_ptr<Contractor>& m : measurements) {
+      Raster raster(grid, *m, stop, counts);
+      raster.Mark(0, grid.rows(), 0, grid.cols());
+      if (raster.stopped) any_stopped = true;
+      total += raster.work;
+    }
+  } else {
+    tbb::enumerable_thread_specific<cv::Mat> partial(
+        [&] { return cv::Mat(grid.rows(), grid.cols(), CV_32S, cv::Scalar(0)); });
+    std::mutex work_mutex;
+    auto count = [&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, measurements.size(), 1),
+                        [&](const tbb::blocked_range<std::size_t>& range) {
+                          cv::Mat& own = partial.local();
+                          for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                            Raster raster(grid, *measurements[i], stop, own);
+                            raster.Mark(0, grid.rows(), 0, grid.cols());
+                            if (raster.stopped) any_stopped = true;
+                            std::lock_guard<std::mutex> lock(work_mutex);
+                            total += raster.work;
+                          }
+                        });
+    };
+    if (static_cast<int>(threads) < tbb::this_task_arena::max_concurrency())
+      tbb::task_arena(static_cast<int>(threads)).execute(count);
+    else
+      count();
+    for (const cv::Mat& p : partial) counts += p;
+  }
   if (work) *work += total;
   if (stopped) *stopped = any_stopped;
   return counts;

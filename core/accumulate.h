@@ -12,6 +12,9 @@
 #ifndef ICPBENCH_CORE_ACCUMULATE_H_
 #define ICPBENCH_CORE_ACCUMULATE_H_
 
+#include <cstddef>
+#include <string>
+
 #include <opencv2/core.hpp>
 
 #include "core/contractor_algebra.h"
@@ -22,9 +25,18 @@ namespace icp {
 // Counts (CV_32S, grid.rows() x grid.cols()) of measurements that cannot
 // reject each cell. When stop fires, the blocks not yet examined are counted
 // for every measurement they were pending for (sound) and *stopped is set.
+// Each thread counts into a grid of its own: under a data limit
+// (core/memory_budget.h) only as many threads run as grids fit, one
+// counting straight into the result when no more does; MemoryBudgetError
+// (a std::bad_alloc) before anything is allocated when the result does not fit.
 cv::Mat Accumulate(const Grid& grid, const SharedContractors& measurements,
                    const StopCondition& stop, WorkCounters* work = nullptr,
                    bool* stopped = nullptr);
+
+// The bytes of one count grid over grid, and its size for messages
+// ("2000 x 1000 cells").
+std::size_t CountGridBytes(const Grid& grid);
+std::string CountGridName(const Grid& grid);
 
 }  // namespace icp
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/constraint_contractor.h"
 #include "core/contractor_testing.h"
 #include "core/random.h"
@@ -23,6 +25,27 @@ TEST(GridTest, CellsCoverTheSearchBoxAndBordersBelongToBoth) {
   EXPECT_EQ(c, 3);
   EXPECT_FALSE(grid.CellOf(2, 2, &r, &c));
   EXPECT_THROW(Grid(Box{{0, kInf}, {0, 1}}, 0, 1, 2, 2), std::invalid_argument);
+}
+
+TEST(GridTest, ADegenerateExtentIsCoveredAndMet) {
+  // A point and a subnormal width: the cells' common width is 0 or
+  // underflows, and the index guess must not divide by it.
+  for (const Interval& x :
+       {Interval(1, 1), Interval(0, 5e-324), Interval(1, std::nextafter(1.0, 2))}) {
+    const Grid grid(Box{x, {0, 1}}, 0, 1, 7, 2);
+    EXPECT_EQ(grid.CellX(0).lo(), x.lo());
+    EXPECT_EQ(grid.CellX(6).hi(), x.hi());
+    for (int c = 0; c < 7; ++c) EXPECT_TRUE(grid.CellX(c).IsSubsetOf(x)) << c;
+    for (double t : {x.lo(), x.hi()}) {
+      const auto [first, last] = grid.ColsMeeting(Interval(t));
+      ASSERT_LT(first, last) << t;
+      for (int c = first; c < last; ++c) EXPECT_TRUE(grid.CellX(c).Contains(t)) << t;
+    }
+    EXPECT_EQ(grid.ColsMeeting(x), (std::pair<int, int>{0, 7}));
+    int r = 0, c = 0;
+    EXPECT_TRUE(grid.CellOf(x.lo(), 0.5, &r, &c));
+    EXPECT_FALSE(grid.CellOf(x.hi() + 1, 0.5, &r, &c));
+  }
 }
 
 // m random lines cos(a) x + sin(a) y in [c - e, c + e], the first `inliers`

@@ -16,11 +16,21 @@
 namespace icp {
 
 // Coefficients 0..n (index = degree); coefficient 0 is x. When stop fires,
-// the contractors not yet applied count as the identity (sound) and
-// *stopped is set. work, when given, adds the contractions' counters.
+// the contractors not yet applied count as the identity (sound), which
+// costs O(n) more, and *stopped is set. work, when given, adds the
+// contractions' counters.
 std::vector<Box> HornerSortTransform(const Box& x, const SharedContractors& sequence,
                                      const StopCondition& stop, WorkCounters* work = nullptr,
                                      bool* stopped = nullptr);
+
+// Coefficient `degree` of HornerSortTransform(x, sequence), the same box,
+// from only the coefficients it depends on: after k of the n contractors,
+// degrees degree - (n - k) to degree, at most min(degree, n - degree) + 1
+// contractions a step instead of k + 1. Empty for a degree above n. Stops
+// as HornerSortTransform does.
+Box HornerCoefficient(const Box& x, const SharedContractors& sequence, int degree,
+                      const StopCondition& stop, WorkCounters* work = nullptr,
+                      bool* stopped = nullptr);
 
 }  // namespace icp
 

@@ -4,6 +4,8 @@
 
 #include "core/contractor_testing.h"
 
+#include <atomic>
+#include <chrono>
 #include <memory>
 
 #include "core/random.h"
@@ -90,6 +92,64 @@ TEST(BoxPolynomialTest, ASkippedContractorCountsAsTheIdentity) {
                           nullptr, &stopped);
   EXPECT_TRUE(stopped);
   EXPECT_EQ(p[1], (Box{{-10, 10}}));
+}
+
+TEST(BoxPolynomialTest, HornerCoefficientIsTheTransformsCoefficient) {
+  // polynomial's c2 computes one coefficient at a time: the same box, from
+  // fewer contractions.
+  RandomEngine rng(5);
+  for (int trial = 0; trial < 60; ++trial) {
+    const int n = UniformInt(rng, 0, 12);
+    SharedContractors cs;
+    for (int i = 0; i < n; ++i)
+      cs.push_back(std::make_shared<ClipTo>(
+          RandomBoxAround(rng, {UniformReal(rng, -3, 3), UniformReal(rng, -3, 3)}, 4)));
+    const Box x{{-10, 10}, {-10, 10}};
+    WorkCounters all;
+    const std::vector<Box> horner = HornerSortTransform(x, cs, StopCondition(), &all);
+    for (int degree = 0; degree <= n + 1; ++degree) {
+      WorkCounters one;
+      const Box coefficient = HornerCoefficient(x, cs, degree, StopCondition(), &one);
+      if (degree > n)
+        EXPECT_TRUE(coefficient.IsEmpty()) << trial;
+      else
+        EXPECT_EQ(coefficient, horner[degree]) << trial << " " << degree;
+      EXPECT_LE(one.revise_calls, all.revise_calls) << trial << " " << degree;
+    }
+  }
+}
+
+TEST(BoxPolynomialTest, AStopMidwayKeepsEveryCoefficientAndEndsAtOnce) {
+  // 20000 contractors, the stop condition firing at the 300th contraction:
+  // the rest count as the identity. That used to take the n^2 / 2 hulls of
+  // the full evaluation (about a minute); now O(n). The budget is generous.
+  const int n = 20000;
+  SharedContractors cs;
+  RandomEngine rng(6);
+  for (int i = 0; i < n; ++i)
+    cs.push_back(std::make_shared<ClipTo>(RandomBoxAround(rng, {1.0, -2.0}, 3)));
+  const Box x{{-10, 10}, {-10, 10}};
+  std::atomic<bool> cancel = false;
+  const SharedContractors counted = testing::CancelAfterCalls(cs, 300, &cancel);
+  const StopCondition stop = StopCondition().WithCancelFlag(&cancel);
+  bool stopped = false;
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<Box> p = HornerSortTransform(x, counted, stop, nullptr, &stopped);
+  cancel = false;
+  bool stopped_one = false;
+  const Box last = HornerCoefficient(x, testing::CancelAfterCalls(cs, 300, &cancel), n / 2, stop,
+                                     nullptr, &stopped_one);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 10);
+  EXPECT_TRUE(stopped);
+  EXPECT_TRUE(stopped_one);
+  ASSERT_EQ(p.size(), static_cast<std::size_t>(n + 1));
+  // Sound: every coefficient holds the common point of all the boxes
+  // (satisfying them all, it counts for every degree), which the unstopped
+  // evaluation keeps too.
+  for (int j = 0; j <= n; ++j) EXPECT_TRUE(p[j].Contains({1.0, -2.0})) << j;
+  EXPECT_TRUE(last.Contains({1.0, -2.0}));
 }
 
 }  // namespace

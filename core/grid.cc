@@ -21,9 +21,11 @@ void Grid::Cells(const Interval& extent, int n, std::vector<double>* lo, std::ve
   const Interval step = (Interval(extent.hi()) - Interval(extent.lo())) / Interval(n);
   for (int i = 0; i < n; ++i) {
     const Interval cell = Interval(extent.lo()) + step * Interval(i, i + 1.0);
-    // The outer cells end exactly on the search box.
-    lo->push_back(i == 0 ? extent.lo() : cell.lo());
-    hi->push_back(i == n - 1 ? extent.hi() : cell.hi());
+    // The outer cells end exactly on the search box, and no cell leaves it:
+    // over a few ulps the rounded step is wider than the extent (the true
+    // cells lie inside, so clamping keeps them covered).
+    lo->push_back(i == 0 ? extent.lo() : std::clamp(cell.lo(), extent.lo(), extent.hi()));
+    hi->push_back(i == n - 1 ? extent.hi() : std::clamp(cell.hi(), extent.lo(), extent.hi()));
   }
 }
 
@@ -42,20 +44,28 @@ std::pair<int, int> Grid::Meeting(const std::vector<double>& lo, const std::vect
   if (v.IsEmpty()) return {0, 0};
   const int n = static_cast<int>(lo.size());
   // The cells are of equal width up to rounding: a division guesses the
-  // index, the exact bounds correct it by a step or two.
+  // index, the exact bounds correct it by a step or two. Over a point or a
+  // few ulps the width is 0 or underflows and the quotient NaN or infinite:
+  // the guess is clamped before the cast, and the bounds walk the rest.
   const double start = lo[0], width = (hi[n - 1] - lo[0]) / n;
   auto guess = [&](double t) {
     const double f = std::floor((t - start) / width);
-    return f < 0 ? 0 : f >= n ? n - 1 : static_cast<int>(f);
+    return !(f >= 0) ? 0 : f >= n ? n - 1 : static_cast<int>(f);
   };
   // The first cell ending at or after v.lo, and one past the last cell
-  // starting at or before v.hi (both bound lists ascend).
+  // starting at or before v.hi (both bound lists ascend): the guess when it
+  // is right, else a binary search (cells of a few ulps share bounds, and a
+  // walk from the guess would cross all of them).
   int first = guess(v.lo());
-  while (first > 0 && hi[first - 1] >= v.lo()) --first;
-  while (first < n && hi[first] < v.lo()) ++first;
-  int last = guess(v.hi());
-  while (last < n && lo[last] <= v.hi()) ++last;
-  while (last > 0 && lo[last - 1] > v.hi()) --last;
+  if (!((first == 0 || hi[first - 1] < v.lo()) && hi[first] >= v.lo()))
+    first = static_cast<int>(std::partition_point(hi.begin(), hi.end(),
+                                                  [&](double b) { return b < v.lo(); }) -
+                             hi.begin());
+  int last = guess(v.hi()) + 1;
+  if (!((last == n || lo[last] > v.hi()) && lo[last - 1] <= v.hi()))
+    last = static_cast<int>(std::partition_point(lo.begin(), lo.end(),
+                                                 [&](double b) { return b <= v.hi(); }) -
+                            lo.begin());
   if (first >= last) return {0, 0};
   return {first, last};
 }

@@ -43,9 +43,10 @@ PavingResult Pave(const Box& x, Contractor& contractor, double epsilon, std::int
       result.boxes.push_back(std::move(box));
       continue;
     }
-    if (s.status == ContractStatus::kStopped || stop.ShouldStop() ||
-        static_cast<std::int64_t>(result.boxes.size() + stack.size()) + 2 > max_boxes) {
+    const bool stopped = s.status == ContractStatus::kStopped || stop.ShouldStop();
+    if (stopped || static_cast<std::int64_t>(result.boxes.size() + stack.size()) + 2 > max_boxes) {
       result.truncated = true;
+      result.stopped = stopped;
       result.boxes.push_back(std::move(box));
       continue;
     }

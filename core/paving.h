@@ -23,6 +23,9 @@ struct PavingResult {
   // The stop condition fired or max_boxes was reached: the boxes still to
   // process were kept unpaved (sound, coarser).
   bool truncated = false;
+  // Truncated by the stop condition or a contraction that stopped short
+  // (kStopped), not by max_boxes.
+  bool stopped = false;
 };
 
 // Throws std::invalid_argument unless epsilon > 0 and max_boxes >= 1.

@@ -6,6 +6,7 @@
 #include <ostream>
 
 #include "algorithms/registry.h"
+#include "core/memory_budget.h"
 #include "harness/environment_error.h"
 #include "harness/metrics.h"
 #include "harness/sweep_recorder.h"
@@ -78,9 +79,12 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
   } catch (const InvalidResult& e) {
     record.status = RunStatus::kFailed;
     record.reason = "invalid result at step " + std::to_string(step_index) + ": " + e.what();
-  } catch (const std::bad_alloc&) {
+  } catch (const std::bad_alloc& e) {
     record.status = RunStatus::kFailed;
+    // A size checked before it was allocated says what needed how much.
+    const auto* budget = dynamic_cast<const MemoryBudgetError*>(&e);
     record.reason = "out of memory at step " + std::to_string(step_index) +
+                    (budget != nullptr ? std::string(": ") + budget->what() : "") +
                     (spec.memory_limit_mb > 0
                          ? " (the worker's limit is memory_limit_mb = " +
                                FormatDouble(spec.memory_limit_mb) + " MiB: raise it in the spec)"

@@ -142,6 +142,29 @@ problems: [chain]
     EXPECT_NE(r.reason.find("memory_limit_mb = 256 MiB"), std::string::npos) << r.reason;
   }
 }
+
+// A size in range that needs more than the limit (accumulator cells =
+// 20000: 1.5 GiB of counts) fails before it is allocated, with the
+// documented reason, the size and the limit; OpenCV's "Insufficient
+// memory" was recorded instead.
+TEST(RunnerTest, AnAccumulatorOverTheMemoryLimitFailsWithItsSize) {
+  const std::string dir = FreshDir("accumulator_memory");
+  SweepSummary s = Sweep(R"(
+memory_limit_mb: 256
+algorithms:
+  - {name: accumulator, params: {cells: 20000}}
+problems: [line-intersection]
+)", dir, 1);
+  EXPECT_EQ(s.failed, 1);
+  ResultsStore store(StorePath(dir));
+  const std::vector<RunRecord> runs = store.LoadRuns(false);
+  ASSERT_EQ(runs.size(), 1u);
+  const std::string& reason = runs[0].reason;
+  EXPECT_EQ(reason.rfind("out of memory at step 0: ", 0), 0u) << reason;
+  EXPECT_NE(reason.find("20000 x 20000 cells"), std::string::npos) << reason;
+  EXPECT_NE(reason.find("needs 1526 MiB"), std::string::npos) << reason;
+  EXPECT_NE(reason.find("memory_limit_mb = 256 MiB"), std::string::npos) << reason;
+}
 #endif
 
 #if defined(ICPBENCH_SANITIZED)

@@ -39,6 +39,13 @@ SolveResult Solve(const SolveOptions& options) {
     throw std::invalid_argument("--repeat " + std::to_string(options.repeat) + ": must be >= 1");
   if (options.format != "text" && options.format != "json")
     throw std::invalid_argument("--format " + options.format + ": must be text or json");
+  if (!(options.timeout_s > 0))
+    throw std::invalid_argument("--timeout " + FormatDouble(options.timeout_s) +
+                                ": must be a number of seconds > 0 (inf: no limit)");
+  // Each repeat gets the whole limit.
+  auto limit = [&] {
+    return StopCondition::After(std::chrono::duration<double>(options.timeout_s));
+  };
   const AlgorithmInfo& info = FindAlgorithm(options.algorithm);
   SolveResult result;
   result.algorithm = info.name;
@@ -50,7 +57,8 @@ SolveResult Solve(const SolveOptions& options) {
     std::unique_ptr<Contractor> contractor = info.contractor(ContractorParams(params), result.csp);
     for (int r = 0; r < options.repeat; ++r) {
       Box box = result.csp.domains();
-      ContractContext context;
+      const StopCondition stop = limit();
+      ContractContext context(stop);
       auto start = std::chrono::steady_clock::now();
       ContractSummary summary = contractor->Contract(box, context);
       times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -66,7 +74,7 @@ SolveResult Solve(const SolveOptions& options) {
     for (int r = 0; r < options.repeat; ++r) {
       std::unique_ptr<Estimator> estimator = info.make(params, 0);
       auto start = std::chrono::steady_clock::now();
-      StepResult step_result = estimator->Step(step.views, StopCondition());
+      StepResult step_result = estimator->Step(step.views, limit());
       times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
       result.box = step_result.estimate->Hull();
       result.summary = step_result.summary;
@@ -113,6 +121,7 @@ std::string SolveResultToJson(const SolveResult& r) {
   out["status"] = StatusOf(r.box);
   out["box"] = BoxToJson(r.box, r.csp.names());
   out["time_s"] = r.time_s;
+  if (r.summary.status == ContractStatus::kStopped) out["stopped"] = r.summary.message;
   if (r.relaxed) {
     out["q"] = r.q;
     nlohmann::ordered_json estimate;

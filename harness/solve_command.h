@@ -1,5 +1,5 @@
 // `icpbench solve FILE --algorithm NAME [--param k=v ...] [--format text|json]
-// [--repeat N]`: contracts the initial box of a Minibex file with a CSP
+// [--repeat N] [--timeout S]`: contracts the initial box of a Minibex file with a CSP
 // contractor, or solves it as a relaxed CSP (q-relaxed, polynomial,
 // accumulator: each constraint is one measurement, the file's domains the
 // prior; see problems/minibex_file).
@@ -23,6 +23,9 @@ struct SolveOptions {
   std::vector<std::string> params;  // "key=value"
   std::string format = "text";      // text | json
   int repeat = 1;
+  // Seconds each contraction or solve may take (> 0; inf: no limit). Past
+  // it the algorithm stops with a sound box, status stopped.
+  double timeout_s = kInf;
 };
 
 struct SolveResult {
@@ -47,6 +50,8 @@ SolveResult Solve(const SolveOptions& options);
 
 // The JSON contract: {"algorithm", "status": "empty"|"nonempty", "box":
 // {name: [lo, hi]}, "time_s"}; infinite bounds are null, an empty box is {}.
+// A contraction that stopped short (a time limit, max_revise_calls) adds
+// "stopped": its message.
 // Relaxed solvers add "q", "estimate": {"kind": "box"|"paving"|
 // "accumulator", ...the estimate's extras ("boxes" for a paving, "max_count"
 // for an accumulator)}, and, when computed, "by_q": [{"q", "status", "box"}]

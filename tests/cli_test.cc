@@ -2,6 +2,8 @@
 // round-trip and enclose, null for infinite bounds, exit code 2 on bad input.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -139,6 +141,60 @@ TEST(CliTest, RepeatReportsTheMedianAndTheSameBox) {
   Result many = Icpbench("solve " + Example("car_window.bch") + " --format json --repeat 5");
   ASSERT_EQ(many.exit_code, 0) << many.out;
   EXPECT_EQ(nlohmann::json::parse(once.out)["box"], nlohmann::json::parse(many.out)["box"]);
+}
+
+TEST(CliTest, SolveTimeoutStopsASlowSolverWithASoundBox) {
+  // polynomial c2 is cubic in the measurements (500 lines: a minute) and
+  // solve had no time limit. 300 lines through (1, 2), 60 of them missing it.
+  std::string text = "Variables x in [-10, 10]; y in [-10, 10];\nConstraints\n";
+  for (int i = 0; i < 300; ++i) {
+    const double a = 3.14159 * i / 300, c = std::cos(a) + 2 * std::sin(a) + (i % 5 == 0 ? 3 : 0);
+    text += "  (" + std::to_string(std::cos(a)) + "*x + " + std::to_string(std::sin(a)) + "*y - " +
+            std::to_string(c) + ")^2 <= 0.0025;\n";
+  }
+  const std::string file = WriteFile("slow_lines.bch", text + "end\n");
+  const auto start = std::chrono::steady_clock::now();
+  Result r = Icpbench("solve " + file +
+                      " --algorithm polynomial --param approximation=c2 --timeout 0.5"
+                      " --format json");
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_LT(seconds, 30);
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_NE(j["stopped"].get<std::string>().find("time limit"), std::string::npos) << r.out;
+  EXPECT_LE(j["box"]["x"][0].get<double>(), 1.0);
+  EXPECT_GE(j["box"]["x"][1].get<double>(), 1.0);
+  EXPECT_LE(j["box"]["y"][0].get<double>(), 2.0);
+  EXPECT_GE(j["box"]["y"][1].get<double>(), 2.0);
+  // A contraction that is not stopped says nothing of it.
+  EXPECT_FALSE(nlohmann::json::parse(Icpbench("solve " + Example("paper002_sum.bch") +
+                                              " --timeout 60 --format json")
+                                         .out)
+                   .contains("stopped"));
+  for (const std::string bad : {"0", "-1", "nan"}) {
+    r = Icpbench("solve " + Example("paper002_sum.bch") + " --timeout " + bad);
+    EXPECT_EQ(r.exit_code, 2) << bad;
+    EXPECT_NE(r.out.find("--timeout " + bad + ": must be a number of seconds > 0"),
+              std::string::npos)
+        << r.out;
+  }
+  EXPECT_EQ(Icpbench("solve " + Example("paper002_sum.bch") + " --timeout inf").exit_code, 0);
+}
+
+TEST(CliTest, AnAccumulatorOverAPointDomainKeepsThePoint) {
+  // x in [1, 1] gave the grid a zero cell width and solve a segfault.
+  const std::string file = WriteFile("point.bch",
+                                     "Variables x in [1, 1]; y in [0, 2];\n"
+                                     "Constraints x + y = 2; x - y = 0; x = 3;\nend\n");
+  Result r = Icpbench("solve " + file + " --algorithm accumulator --format json");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["q"], 1);
+  EXPECT_EQ(j["box"]["x"][0].get<double>(), 1.0);
+  EXPECT_EQ(j["box"]["x"][1].get<double>(), 1.0);
+  EXPECT_LE(j["box"]["y"][0].get<double>(), 1.0);
+  EXPECT_GE(j["box"]["y"][1].get<double>(), 1.0);
 }
 
 TEST(CliTest, EveryAlgorithmSolvesTheExamples) {

@@ -148,5 +148,20 @@ TEST(RelaxedIcpTest, IcpIsEmptyWhereOutliersExist) {
     }
 }
 
+// A step cut short by the run's time limit makes the run a timeout, whatever
+// the solver was doing: a paving truncated by the limit was stored ok, as if
+// max_boxes had stopped it.
+TEST(RelaxedTimeLimitTest, APavingPastTheTimeLimitIsTheRunsTimeout) {
+  RunSpec spec{"q-relaxed", {{"mode", "pave"}, {"epsilon", "1e-7"}, {"max_boxes", "100000000"}},
+               "line-intersection", {{"lines", "20"}, {"outliers", "7"}}, 1, 0};
+  spec.timeout_s = 0.3;
+  const RunRecord run = ExecuteRun(spec);
+  EXPECT_EQ(run.status, RunStatus::kTimeout) << run.reason;
+  EXPECT_NE(run.reason.find("time limit"), std::string::npos) << run.reason;
+  ASSERT_EQ(run.steps.size(), 1u);
+  EXPECT_EQ(run.steps[0].status, "stopped");
+  EXPECT_EQ(run.steps[0].contained, 1);
+}
+
 }  // namespace
 }  // namespace icp

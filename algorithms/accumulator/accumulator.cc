@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
 #include <stdexcept>
 #include <string>
 
 #include "core/accumulate.h"
+#include "core/memory_budget.h"
 
 namespace icp {
 
@@ -24,8 +26,9 @@ Grid AccumulatorGrid(const Box& prior, const Box& search, const StateSpace& spac
   if (!(search[x].Width() < kInf) || !(search[y].Width() < kInf))
     throw std::invalid_argument("accumulator: the search box must be bounded in the gridded components");
   auto count = [&](int c) {
+    // A point search box (x in [1, 1]) has one cell: 0 / 0 is NaN.
     const double n = std::ceil(prior[c].Width() / search[c].Width() * cells);
-    return std::clamp(static_cast<int>(n), 1, cells);
+    return n >= 1 ? static_cast<int>(std::min<double>(n, cells)) : 1;
   };
   return Grid(prior, x, y, count(x), count(y));
 }
@@ -35,19 +38,33 @@ std::vector<cv::Mat> SourceAccumulators(const Grid& grid, const MeasurementSetVi
                                         bool* stopped) {
   const int sources =
       view.sources.empty() ? 1 : 1 + *std::max_element(view.sources.begin(), view.sources.end());
+  // Every grid it keeps, before one is allocated (one source: its counts
+  // are the sum); Accumulate fits its threads' own grids in what is left.
+  const std::size_t grids = sources == 1 ? 1 : static_cast<std::size_t>(sources) + 1;
+  CheckMemory(grids * CountGridBytes(grid),
+              "the accumulator's " +
+                  (grids > 1 ? std::to_string(grids) + " count grids" : "count grid") + " of " +
+                  CountGridName(grid) + " (the parameter cells)");
   std::vector<SharedContractors> by_source(sources);
   for (std::size_t i = 0; i < view.measurements.size(); ++i)
     by_source[view.sources.empty() ? 0 : view.sources[i]].push_back(view.measurements[i]);
   std::vector<cv::Mat> out;
-  cv::Mat sum(grid.rows(), grid.cols(), CV_32S, cv::Scalar(0));
   *stopped = false;
-  for (const SharedContractors& ms : by_source) {
-    bool s = false;
-    out.push_back(Accumulate(grid, ms, stop, work, &s));
-    *stopped = *stopped || s;
-    sum += out.back();
+  try {
+    cv::Mat sum;
+    if (sources > 1) sum = cv::Mat(grid.rows(), grid.cols(), CV_32S, cv::Scalar(0));
+    for (const SharedContractors& ms : by_source) {
+      bool s = false;
+      out.push_back(Accumulate(grid, ms, stop, work, &s));
+      *stopped = *stopped || s;
+      if (sources > 1) sum += out.back();
+    }
+    out.push_back(sources > 1 ? sum : out.back());
+  } catch (const cv::Exception& e) {
+    // OpenCV's own "Insufficient memory": the harness's out-of-memory reason.
+    if (e.code == cv::Error::StsNoMem) throw std::bad_alloc();
+    throw;
   }
-  out.push_back(sum);
   return out;
 }
 

@@ -43,7 +43,11 @@ void Describe(AccumulatorParams& p, ParamSet& set);
 Grid AccumulatorGrid(const Box& prior, const Box& search, const StateSpace& space, int cells);
 
 // The counts of each source's measurements apart (sources numbered from 0;
-// empty `sources`: one source), then their sum as the last element.
+// empty `sources`: one source), then their sum as the last element (the
+// same matrix as the first with one source). Throws MemoryBudgetError (a
+// std::bad_alloc) before allocating when the grids do not fit under the
+// process's data limit (a worker's memory_limit_mb), std::bad_alloc when
+// an allocation fails all the same.
 std::vector<cv::Mat> SourceAccumulators(const Grid& grid, const MeasurementSetView& view,
                                         const StopCondition& stop, WorkCounters* work,
                                         bool* stopped);

@@ -163,24 +163,52 @@ double SelectQuantile(std::vector<std::pair<double, double>>& pairs, double tota
   return std::max_element(pairs.begin(), pairs.end(), by_value)->first;
 }
 
-// WeightedQuantile at tail and at 1 - tail (tail < 1/2) of values added one
-// by one with positive weights, from the few smallest and largest of them,
-// kept in order as they come: no sort of them all. Quantiles answers when
-// those few hold the tails' weight (with equal weights they do), else
-// nullopt (then SelectQuantile over them all).
+// WeightedQuantile at tail and at 1 - tail (tail < 1/2) of the particles'
+// values in one component, from the few smallest and largest of them: no
+// sort of them all. Quantiles answers when those few hold the tails' weight
+// (with equal weights they do), else nullopt (then SelectQuantile over them
+// all).
 class Tails {
  public:
   Tails(std::size_t n, double tail)
       : m_(std::min(n, 8 + 2 * static_cast<std::size_t>(std::ceil(tail * static_cast<double>(n))))),
-        tail_(tail) {
-    low_.reserve(m_ + 1);
-    high_.reserve(m_ + 1);
-  }
+        tail_(tail) {}
 
-  void Add(double value, double weight) {
-    ++count_;
-    Insert(low_, value, weight, [](double a, double b) { return a < b; });
-    Insert(high_, value, weight, [](double a, double b) { return a > b; });
+  // Keeps the m_ least and the m_ greatest of value[i * stride] over the
+  // particles i in `positive` (those of positive weight; reordered), ties in
+  // the order of i, each in its order: std::nth_element, then a sort of the
+  // few, so O(n + m_ log m_). (Inserting each value into the kept ones in
+  // turn was quadratic: m_ grows with n.)
+  void Select(const double* value, std::size_t stride, const std::vector<double>& weights,
+              std::vector<std::uint32_t>& positive) {
+    count_ = positive.size();
+    auto at = [&](std::uint32_t i) { return value[i * stride]; };
+    // A strict weak order whatever the values: NaN after every number.
+    auto less = [&](std::uint32_t a, std::uint32_t b) {
+      const double va = at(a), vb = at(b);
+      if (va < vb) return true;
+      if (vb < va) return false;
+      const bool na = std::isnan(va), nb = std::isnan(vb);
+      return na != nb ? nb : a < b;
+    };
+    auto greater = [&](std::uint32_t a, std::uint32_t b) {
+      const double va = at(a), vb = at(b);
+      if (va > vb) return true;
+      if (vb > va) return false;
+      const bool na = std::isnan(va), nb = std::isnan(vb);
+      return na != nb ? nb : a < b;
+    };
+    auto keep = [&](auto before, std::vector<std::pair<double, double>>& kept) {
+      const std::size_t k = std::min(m_, positive.size());
+      if (k < positive.size())
+        std::nth_element(positive.begin(), positive.begin() + static_cast<std::ptrdiff_t>(k),
+                         positive.end(), before);
+      std::sort(positive.begin(), positive.begin() + static_cast<std::ptrdiff_t>(k), before);
+      kept.clear();
+      for (std::size_t j = 0; j < k; ++j) kept.emplace_back(at(positive[j]), weights[positive[j]]);
+    };
+    keep(less, low_);
+    keep(greater, high_);
   }
 
   // The two quantiles for weights summing to total.
@@ -219,20 +247,6 @@ class Tails {
   }
 
  private:
-  // Keeps the m_ first values in the order `before`, sorted.
-  template <class Before>
-  void Insert(std::vector<std::pair<double, double>>& kept, double value, double weight, Before before) {
-    if (kept.size() == m_ && !before(value, kept.back().first)) return;
-    std::size_t i = kept.size();
-    if (kept.size() < m_) kept.emplace_back();
-    else --i;
-    while (i > 0 && before(value, kept[i - 1].first)) {
-      kept[i] = kept[i - 1];
-      --i;
-    }
-    kept[i] = {value, weight};
-  }
-
   std::size_t m_;
   double tail_;
   std::size_t count_ = 0;
@@ -385,11 +399,11 @@ class ParticleFilter : public Estimator {
 
     const bool hull = p_.region == "hull";
     const double tail = kRegionLevel / (2 * d);
-    std::vector<Tails> tails(hull ? 0 : du, Tails(n, tail));
     Box region(du);
     if (hull) region.SetEmpty();
-    cv::Mat cloud(static_cast<int>(n), d, CV_64F);
+    cv::Mat cloud(static_cast<int>(n), d, CV_64F);  // continuous: row i at i * d
     std::vector<double> cov(du * du, 0.0), dev(du);
+    std::vector<std::uint32_t> positive;  // the particles of positive weight (n <= 1e7)
     for (std::size_t i = 0; i < n; ++i) {
       double* state = particles_[i].data();
       double* row = cloud.ptr<double>(static_cast<int>(i));
@@ -400,16 +414,16 @@ class ParticleFilter : public Estimator {
         dev[c] = state[c] - centre[c];
       }
       if (w[i] == 0) continue;
+      if (!hull) positive.push_back(static_cast<std::uint32_t>(i));
       for (int a = 0; a < d; ++a) {
         for (int b = a; b < d; ++b) cov[a * d + b] += w[i] * dev[a] * dev[b];
-        if (hull)
-          region[a] = Hull(region[a], Interval(state[a]));
-        else
-          tails[a].Add(state[a], w[i]);
+        if (hull) region[a] = Hull(region[a], Interval(state[a]));
       }
     }
     for (int c = 0; c < d && !hull; ++c) {
-      std::optional<Interval> quantiles = tails[c].Quantiles(1.0);  // w sums to 1
+      Tails tails(n, tail);
+      tails.Select(cloud.ptr<double>(0) + c, du, w, positive);
+      std::optional<Interval> quantiles = tails.Quantiles(1.0);  // w sums to 1
       if (!quantiles) {
         std::vector<std::pair<double, double>> pairs;
         for (std::size_t i = 0; i < n; ++i)

@@ -1,6 +1,9 @@
 #include "algorithms/polynomial/polynomial.h"
 
+#include <string>
+
 #include "core/box_polynomial.h"
+#include "core/memory_budget.h"
 
 namespace icp {
 
@@ -52,24 +55,48 @@ class PolynomialEstimator : public RelaxedEstimator {
         }
       }
     } else if (p_.approximation == "c2") {
-      for (int q = 0; q < m; ++q)
-        for (int i = 0; i < p_.p && !by_q[q].IsEmpty(); ++i) {
+      // Coefficient m - q of the Horner evaluation, p times from the prior.
+      // The first pass is the same for every q: one evaluation serves them
+      // all; the later ones compute only the coefficient they need.
+      if (!prior.IsEmpty()) {
+        const std::vector<Box> first =
+            HornerSortTransform(prior, ms, stop, &summary->work, &stopped);
+        for (int q = 0; q < m; ++q) by_q[q] = first[m - q];
+      }
+      // Past the stop condition the later passes are left out (sound).
+      for (int q = 0; q < m && !stop.ShouldStop(); ++q) {
+        if (by_q[q] == prior) continue;  // a pass that changed nothing is a fixpoint
+        for (int i = 1; i < p_.p && !by_q[q].IsEmpty() && !stop.ShouldStop(); ++i) {
           bool s = false;
           const Box before = by_q[q];
-          by_q[q] = HornerSortTransform(before, ms, stop, &summary->work, &s)[m - q];
+          by_q[q] = HornerCoefficient(before, ms, m - q, stop, &summary->work, &s);
           stopped = stopped || s;
           if (by_q[q] == before) break;
         }
+      }
+      stopped = stopped || stop.ShouldStop();
     } else {
       SharedContractors repeated;
       for (int i = 0; i < p_.p; ++i) repeated.insert(repeated.end(), ms.begin(), ms.end());
+      // Every coefficient of the p m contractors is kept while they run.
+      const std::size_t boxes = repeated.size() + 1;
+      CheckMemory(2 * boxes * (sizeof(Box) + prior.size() * sizeof(Interval) + 16),
+                  "polynomial approximation=c3: the " + std::to_string(boxes) +
+                      " coefficients of p x m = " + std::to_string(p_.p) + " x " +
+                      std::to_string(m) + " contractors (lower p)");
       const std::vector<Box> coefficients =
           HornerSortTransform(prior, repeated, stop, &summary->work, &stopped);
       for (int q = 0; q < m; ++q) by_q[q] = coefficients[(m - q) * p_.p];
     }
     for (Box& b : by_q)
       if (b.IsEmpty()) b.SetEmpty();
-    if (stopped) summary->status = ContractStatus::kStopped;
+    if (stopped) {
+      summary->status = ContractStatus::kStopped;
+      summary->message = stop.ShouldStop()
+                             ? "time limit reached: the contractions not yet made count as the "
+                               "identity (sound, wider)"
+                             : "a measurement's contraction stopped short";
+    }
     return by_q;
   }
 

@@ -2,8 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
+#include <string>
+
 #include "algorithms/q_relaxed/q_relaxed.h"
 #include "algorithms/relaxed/relaxed_testing.h"
+#include "core/box_polynomial.h"
+#include "core/contractor_testing.h"
 
 namespace icp {
 namespace {
@@ -49,6 +55,52 @@ TEST(PolynomialTest, AutoQFindsTheFirstNonEmptyCoefficient) {
   const StepResult once = MakePolynomial({{"p", "1"}}, 0)->Step(c.views, StopCondition());
   EXPECT_TRUE(r.hulls_by_q[7].IsSubsetOf(once.hulls_by_q[7]));
   EXPECT_LT(BoxArea(r.hulls_by_q[7], 0, 1), BoxArea(once.hulls_by_q[7], 0, 1));
+}
+
+TEST(PolynomialTest, C2IsTheRepeatedHornerCoefficient) {
+  // c2 shares the first pass among the q and computes one coefficient at a
+  // time after it: the boxes are those of the plain definition, for every q.
+  for (const int p : {1, 2, 10})
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      const auto c = Lines(seed, 14, 4);
+      const SharedContractors& ms = c.views.measurement_set->measurements;
+      const Box& prior = c.views.measurement_set->prior;
+      const int m = static_cast<int>(ms.size());
+      const StepResult r = MakePolynomial({{"approximation", "c2"}, {"p", std::to_string(p)}}, 0)
+                               ->Step(c.views, StopCondition());
+      for (int q = 0; q <= m; ++q) {
+        Box expected = prior;
+        for (int i = 0; i < p && q < m && !expected.IsEmpty(); ++i) {
+          const Box before = expected;
+          expected = HornerSortTransform(before, ms, StopCondition())[m - q];
+          if (expected == before) break;
+        }
+        if (expected.IsEmpty()) expected.SetEmpty();
+        EXPECT_EQ(r.hulls_by_q[q], expected) << p << " " << seed << " " << q;
+      }
+    }
+}
+
+TEST(PolynomialTest, C2AndC3StopAtTheTimeLimitWithASoundSet) {
+  // c3 with p = 10000 (in range) kept evaluating its p m coefficients after
+  // the stop condition fired, (p m)^2 / 2 hulls; c2 had no message. Both now
+  // return at once, stopped, with every q's set still holding the truth.
+  for (const std::string approximation : {"c2", "c3"}) {
+    auto c = Lines(8, 3, 0);
+    std::atomic<bool> cancel = false;
+    auto& ms = c.views.measurement_set->measurements;
+    ms = testing::CancelAfterCalls(ms, 200, &cancel);
+    const auto start = std::chrono::steady_clock::now();
+    const StepResult r = MakePolynomial({{"approximation", approximation}, {"p", "10000"}}, 0)
+                             ->Step(c.views, StopCondition().WithCancelFlag(&cancel));
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_LT(seconds, 10) << approximation;
+    EXPECT_TRUE(cancel) << approximation;
+    EXPECT_EQ(r.summary.status, ContractStatus::kStopped) << approximation;
+    EXPECT_NE(r.summary.message.find("time limit"), std::string::npos) << r.summary.message;
+    for (const Box& b : r.hulls_by_q) EXPECT_TRUE(b.Contains(c.truth)) << approximation;
+  }
 }
 
 TEST(PolynomialTest, RejectsBadParameters) {

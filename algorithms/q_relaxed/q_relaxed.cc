@@ -1,5 +1,7 @@
 #include "algorithms/q_relaxed/q_relaxed.h"
 
+#include <string>
+
 #include "core/paving.h"
 
 namespace icp {
@@ -20,6 +22,12 @@ void Describe(QRelaxedParams& p, ParamSet& set) {
 
 namespace {
 
+// Why a stopped solve stopped: the stop condition (the run's time limit),
+// or a measurement's own contraction that stopped short.
+std::string StopMessage(const StopCondition& stop, const std::string& what) {
+  return (stop.ShouldStop() ? "time limit reached: " : "a contraction stopped short: ") + what;
+}
+
 class QRelaxedEstimator : public RelaxedEstimator {
  public:
   explicit QRelaxedEstimator(const QRelaxedParams& p) : RelaxedEstimator(p.relaxed), p_(p) {}
@@ -39,7 +47,10 @@ class QRelaxedEstimator : public RelaxedEstimator {
         ContractContext context(stop);
         const ContractSummary s = fixpoint.Contract(box, context);
         out.summary.work += s.work;
-        if (s.status == ContractStatus::kStopped) out.summary.status = s.status;
+        if (s.status == ContractStatus::kStopped) {
+          out.summary.status = s.status;
+          out.summary.message = StopMessage(stop, "the fixpoint was cut short");
+        }
         if (s.status == ContractStatus::kEmpty) box.SetEmpty();
       }
       contracted_q = q;
@@ -54,7 +65,7 @@ class QRelaxedEstimator : public RelaxedEstimator {
     // Paving: from the q whose fixpoint is non-empty, upward while the
     // paving is empty (a finer set can vanish where its hull does not).
     std::int64_t bisections = 0;
-    bool truncated = false;
+    bool truncated = false, stopped = false;
     std::vector<Box> boxes;
     int paved_q = -1;
     auto pave = [&](int q) {
@@ -69,6 +80,7 @@ class QRelaxedEstimator : public RelaxedEstimator {
       out.summary.work += paving.work;
       bisections += paving.bisections;
       truncated = truncated || paving.truncated;
+      stopped = stopped || paving.stopped;
       boxes = std::move(paving.boxes);
       return !boxes.empty();
     };
@@ -76,8 +88,14 @@ class QRelaxedEstimator : public RelaxedEstimator {
     if (paved_q != out.q) pave(out.q);
     out.estimate = std::make_unique<PavingEstimate>(prior.size(), std::vector<Box>{}, std::move(boxes));
     out.properties = {{"bisections", bisections}, {"truncated", static_cast<std::int64_t>(truncated)}};
-    if (truncated && out.summary.status != ContractStatus::kStopped)
+    // A paving cut short by the time limit is the run's timeout (kStopped),
+    // not a max_boxes truncation: the harness records it as such.
+    if (stopped) {
+      out.summary.status = ContractStatus::kStopped;
+      out.summary.message = StopMessage(stop, "paving truncated, its unfinished boxes kept whole");
+    } else if (truncated && out.summary.status != ContractStatus::kStopped) {
       out.summary.message = "paving truncated at max_boxes";
+    }
     return out;
   }
 

@@ -1,10 +1,14 @@
 #include "algorithms/q_relaxed/q_relaxed.h"
 
+#include <atomic>
 #include <cmath>
+#include <memory>
+#include <string>
 
 #include <gtest/gtest.h>
 
 #include "algorithms/relaxed/relaxed_testing.h"
+#include "core/contractor_testing.h"
 
 namespace icp {
 namespace {
@@ -118,6 +122,31 @@ TEST(QRelaxedTest, WithAutoQATrackedSearchNeedingTooManyOutliersRestarts) {
   EXPECT_EQ(IntProperty(r.properties, "reset").value(), 1);
   EXPECT_LE(IntProperty(r.properties, "q").value(), 2);
   EXPECT_TRUE(r.estimate->Contains(second.truth));
+}
+
+TEST(QRelaxedTest, APavingStoppedByTheTimeLimitSaysSo) {
+  // It was reported as truncated at max_boxes, with a status the harness
+  // stores as ok instead of the run's timeout.
+  auto c = Lines(3, 8, 2);
+  std::atomic<bool> cancel = false;
+  auto& measurements = c.views.measurement_set->measurements;
+  const SharedContractors wrapped = testing::CancelAfterCalls({measurements[0]}, 40, &cancel);
+  measurements[0] = wrapped[0];
+  const StopCondition stop = StopCondition().WithCancelFlag(&cancel);
+  const StepResult r = MakeQRelaxed({{"mode", "pave"}, {"epsilon", "0.001"}, {"q", "2"}}, 0)
+                           ->Step(c.views, stop);
+  ASSERT_TRUE(cancel);
+  EXPECT_EQ(r.summary.status, ContractStatus::kStopped);
+  EXPECT_NE(r.summary.message.find("time limit"), std::string::npos) << r.summary.message;
+  EXPECT_EQ(r.summary.message.find("max_boxes"), std::string::npos) << r.summary.message;
+  EXPECT_EQ(IntProperty(r.properties, "truncated").value(), 1);
+  EXPECT_TRUE(r.estimate->Contains(c.truth));
+  // max_boxes alone still says max_boxes, and is no stop.
+  const StepResult full =
+      MakeQRelaxed({{"mode", "pave"}, {"epsilon", "0.001"}, {"max_boxes", "5"}}, 0)
+          ->Step(Lines(3, 8, 2).views, StopCondition());
+  EXPECT_NE(full.summary.status, ContractStatus::kStopped);
+  EXPECT_NE(full.summary.message.find("max_boxes"), std::string::npos) << full.summary.message;
 }
 
 TEST(QRelaxedTest, RejectsBadParameters) {
