@@ -26,8 +26,9 @@ void Describe(MarinaSonarParams& p, ParamSet& set) {
           "number of steps to drive (the route ends after about 1187 at 0.5 m/s); with a log, at "
           "most this many rows",
           Range::Closed(1, 1e6));
-  set.Add("dt", &p.dt, "time step, s (simulator)", Range::Positive(60));
-  set.Add("speed", &p.speed, "mean forward speed, m/s, varying by ±10 % (simulator)",
+  set.Add("dt", &p.dt, "time step, s; speed x dt <= 20 m (simulator)", Range::Positive(60));
+  set.Add("speed", &p.speed,
+          "mean forward speed, m/s, varying by ±10 %; speed x dt <= 20 m (simulator)",
           Range{0.05, 5, false, false});
   set.Add("dvl_error", &p.dvl_error, "DVL half-width on each body-frame velocity, m/s (simulator)",
           Range::Positive(1));
@@ -70,6 +71,11 @@ MarinaSonarParams ParseMarinaSonar(const std::string& owner, const ParamMap& val
   if (!p.map.empty() && p.log.empty())
     throw ParamError(owner + ".map = " + p.map +
                      ": another map needs a log (the simulator drives the shipped marina)");
+  if (p.log.empty() && !(p.speed * p.dt <= kMarinaMaxStep))
+    throw ParamError(owner + ".speed = " + FormatDouble(p.speed) + ", dt = " + FormatDouble(p.dt) +
+                     ": a step of speed x dt = " + FormatDouble(p.speed * p.dt) +
+                     " m; the simulator needs speed x dt <= " + FormatDouble(kMarinaMaxStep) +
+                     " m (each step is straight: a longer one cuts through the quays)");
   return p;
 }
 
