@@ -1,12 +1,18 @@
-// The marina-sonar problem under extreme and malformed input (issue 31):
-// every speed and time step in range drives the route, and the rest is
-// rejected with the rule.
+// The marina-sonar problem under extreme and malformed input (issue 31): a
+// map image is bounded in size before it is decoded; every speed and time
+// step in range drives the route, and the rest is rejected with the rule.
 #include <gtest/gtest.h>
+
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
+
+#include <opencv2/imgcodecs.hpp>
 
 #include "problems/marina_sonar/marina_map.h"
 #include "problems/marina_sonar/marina_sonar.h"
@@ -19,6 +25,126 @@ const MarinaMap& ShippedMap() {
   static const MarinaMap map = LoadMarinaMap(ShippedMarinaMapPath());
   return map;
 }
+
+std::string TempPath(const std::string& name) {
+  return (std::filesystem::temp_directory_path() /
+          ("marina_inputs_test_" + std::to_string(::getpid()) + "_" + name))
+      .string();
+}
+
+// Writes bytes to path and the shipped frame beside it (path's .yaml).
+void WriteMap(const std::string& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
+  WriteMapFrame(MarinaMapFrame(), MapFramePath(path), "test");
+}
+
+void RemoveMap(const std::string& path) {
+  std::filesystem::remove(path);
+  std::filesystem::remove(MapFramePath(path));
+}
+
+// A valid 1-bit PNG of rows x cols pixels, one of them a wall: small on
+// disk whatever its size.
+std::string BilevelPng(int rows, int cols) {
+  cv::Mat image(rows, cols, CV_8UC1, cv::Scalar(0));
+  image.at<unsigned char>(rows / 2, cols / 2) = 255;
+  std::vector<unsigned char> bytes;
+  EXPECT_TRUE(cv::imencode(".png", image, bytes, {cv::IMWRITE_PNG_BILEVEL, 1}));
+  return std::string(bytes.begin(), bytes.end());
+}
+
+// The PNG signature and an IHDR chunk declaring width x height (1-bit grey),
+// then nothing: the header alone.
+std::string PngHeader(std::uint32_t width, std::uint32_t height) {
+  std::string head("\x89PNG\r\n\x1a\n", 8);
+  auto be32 = [&head](std::uint32_t v) {
+    for (int shift = 24; shift >= 0; shift -= 8) head += static_cast<char>(v >> shift & 0xff);
+  };
+  be32(13);
+  head += "IHDR";
+  be32(width);
+  be32(height);
+  head += std::string("\x01\x00\x00\x00\x00", 5);
+  be32(0);  // CRC, not checked before the size
+  return head;
+}
+
+std::string LoadError(const std::string& path) {
+  try {
+    LoadMarinaMap(path);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "(loaded)";
+}
+
+// --- the map's size ------------------------------------------------------------
+
+TEST(MarinaInputsTest, MapBeyondThePixelLimitIsRejectedBeforeDecoding) {
+  // 6000 x 5000 = 3e7 pixels: a valid PNG of a few kilobytes.
+  const std::string big = TempPath("big.png");
+  WriteMap(big, BilevelPng(5000, 6000));
+  const std::string error = LoadError(big);
+  EXPECT_NE(error.find("6000 x 5000 = 30000000 pixels, beyond the limit of 25000000"),
+            std::string::npos)
+      << error;
+  EXPECT_THROW(CheckMarinaMap(big), std::invalid_argument);
+  RemoveMap(big);
+  // 15000 x 15000 declared by the header alone: rejected without reading on.
+  const std::string huge = TempPath("huge.png");
+  WriteMap(huge, PngHeader(15000, 15000));
+  EXPECT_NE(LoadError(huge).find("15000 x 15000 = 225000000 pixels"), std::string::npos)
+      << LoadError(huge);
+  RemoveMap(huge);
+  // At the limit, accepted.
+  const std::string edge = TempPath("edge.png");
+  WriteMap(edge, BilevelPng(5000, 5000));
+  EXPECT_NO_THROW(CheckMarinaMap(edge));
+  RemoveMap(edge);
+}
+
+TEST(MarinaInputsTest, ValidationRejectsABigMapWithItsLimit) {
+  const std::string big = TempPath("validate.png");
+  WriteMap(big, PngHeader(15000, 15000));
+  const std::string log = TempPath("validate.csv");
+  std::ofstream(log) << "step,0,0.5,0,0.02,1.5,0.01,10,10\n";
+  try {
+    FindProblem("marina-sonar").resolve("marina-sonar", {{"map", big}, {"log", log}});
+    ADD_FAILURE() << "accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("beyond the limit of 25000000"), std::string::npos)
+        << e.what();
+  }
+  RemoveMap(big);
+  std::filesystem::remove(log);
+}
+
+TEST(MarinaInputsTest, MapMustBeAPng) {
+  const std::string bmp = TempPath("map.bmp");
+  cv::Mat image(10, 10, CV_8UC1, cv::Scalar(255));
+  ASSERT_TRUE(cv::imwrite(bmp, image));
+  WriteMapFrame(MarinaMapFrame(), MapFramePath(bmp), "test");
+  EXPECT_NE(LoadError(bmp).find("not a PNG map image"), std::string::npos) << LoadError(bmp);
+  RemoveMap(bmp);
+  for (const std::string& bytes : {std::string(), std::string("\x89PNG\r\n\x1a\n", 8),
+                                   PngHeader(0, 10), PngHeader(0x80000000u, 1)})
+    EXPECT_THROW(DecodeMapWalls(bytes, "mem"), std::invalid_argument);
+  // A truncated image after a good header: undecodable, the documented error.
+  const std::string png = BilevelPng(20, 30);
+  EXPECT_THROW(DecodeMapWalls(png.substr(0, png.size() / 2), "mem"), std::invalid_argument);
+  EXPECT_EQ(DecodeMapWalls(png, "mem").size(), cv::Size(30, 20));
+}
+
+TEST(MarinaInputsTest, CheckedBoundsAreTheLoadedMapsBounds) {
+  EXPECT_EQ(CheckMarinaMap(ShippedMarinaMapPath()), ShippedMap().bounds);
+  const std::string odd = TempPath("odd.png");
+  std::ofstream(odd, std::ios::binary) << BilevelPng(7, 13);
+  WriteMapFrame(ImageFrame{-3.1, 0.7, 0.3}, MapFramePath(odd), "test");
+  EXPECT_EQ(CheckMarinaMap(odd), LoadMarinaMap(odd).bounds);
+  RemoveMap(odd);
+}
+
+// --- the simulator ------------------------------------------------------------
 
 // Each straight step of the drive stays in the water, clear of the walls,
 // and the drive reaches the canal's end when it has the steps for it.

@@ -61,7 +61,9 @@ void Describe(MarinaSonarParams& p, ParamSet& set) {
   set.Add("likelihood_floor", &p.likelihood_floor,
           "outlier floor of one return's likelihood (probabilistic view)", Range{0, 1, true, true});
   set.Add("log", &p.log, "CSV log replacing the simulator (empty: simulate)");
-  set.Add("map", &p.map, "map image with its .yaml frame sidecar (empty: the shipped marina)");
+  set.Add("map", &p.map,
+          "PNG map image of at most 25000000 pixels with its .yaml frame sidecar (empty: the "
+          "shipped marina)");
 }
 
 namespace {
@@ -95,20 +97,32 @@ Displacement DeadReckoning(const MarinaRecord& r, const Interval& dt) {
   return {dt * (u * c - v * s), dt * (u * s + v * c)};
 }
 
-MarinaSonarProblem::MarinaSonarProblem(const MarinaSonarParams& params, MarinaMap map,
-                                       std::vector<MarinaRecord> records)
-    : params_(params), map_(std::move(map)), records_(std::move(records)) {
-  num_steps_ = static_cast<int>(std::min<std::size_t>(records_.size(), params_.steps));
-  for (int k = 0; k < num_steps_; ++k) {
-    const MarinaRecord& r = records_[k];
-    if (r.has_truth && !map_.bounds.Contains({r.truth_x, r.truth_y}))
+namespace {
+
+// What the problem needs of a drive on a map covering bounds (the
+// constructor's contract, checked at validation too).
+void CheckDrive(const MarinaSonarParams& params, const std::vector<MarinaRecord>& records,
+                const Box& bounds) {
+  const std::size_t n = std::min<std::size_t>(records.size(), params.steps);
+  for (std::size_t k = 0; k < n; ++k) {
+    const MarinaRecord& r = records[k];
+    if (r.has_truth && !bounds.Contains({r.truth_x, r.truth_y}))
       throw std::invalid_argument("marina-sonar: step " + std::to_string(k) + ": the truth (" +
                                   FormatDouble(r.truth_x) + ", " + FormatDouble(r.truth_y) +
                                   ") lies outside the map");
   }
+  if (params.start == "known" && (records.empty() || !records[0].has_truth))
+    throw ParamError("marina-sonar.start = known: the first step has no truth");
+}
+
+}  // namespace
+
+MarinaSonarProblem::MarinaSonarProblem(const MarinaSonarParams& params, MarinaMap map,
+                                       std::vector<MarinaRecord> records)
+    : params_(params), map_(std::move(map)), records_(std::move(records)) {
+  num_steps_ = static_cast<int>(std::min<std::size_t>(records_.size(), params_.steps));
+  CheckDrive(params_, records_, map_.bounds);
   if (params_.start == "known") {
-    if (records_.empty() || !records_[0].has_truth)
-      throw ParamError("marina-sonar.start = known: the first step has no truth");
     start_box_ = Intersect(Box({Around(records_[0].truth_x, params_.start_error),
                                 Around(records_[0].truth_y, params_.start_error)}),
                            map_.bounds);
@@ -121,11 +135,10 @@ MarinaSonarProblem::MarinaSonarProblem(const MarinaSonarParams& params, MarinaMa
 
 ParamMap ResolveMarinaSonar(const std::string& owner, const ParamMap& values) {
   const MarinaSonarParams p = ParseMarinaSonar(owner, values);
-  MarinaMap map = LoadMarinaMap(MapPath(p));
-  if (!p.log.empty()) {
-    const MarinaSonarProblem checked(p, std::move(map), ReadMarinaLog(p.log));
-    static_cast<void>(checked);
-  }
+  // Validation runs in the parent process, which has no memory limit: the
+  // map is checked (bounded in size, decoded, not derived), not loaded.
+  const Box bounds = CheckMarinaMap(MapPath(p));
+  if (!p.log.empty()) CheckDrive(p, ReadMarinaLog(p.log), bounds);
   return ResolveParams<MarinaSonarParams>(owner, values);
 }
 

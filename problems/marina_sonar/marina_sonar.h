@@ -100,8 +100,9 @@ struct MarinaSonarParams {
   double likelihood_floor = 0.1;
   // CSV log replacing the simulator (ReadMarinaLog); empty: simulate.
   std::string log;
-  // Map image (with its .yaml frame sidecar); empty: the shipped marina
-  // (data/marina.png). Another map needs a log.
+  // Map image, a PNG of at most kMaxMarinaMapPixels pixels (with its .yaml
+  // frame sidecar); empty: the shipped marina (data/marina.png). Another map
+  // needs a log.
   std::string map;
 };
 void Describe(MarinaSonarParams& p, ParamSet& set);
