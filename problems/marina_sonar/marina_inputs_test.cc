@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -142,6 +143,51 @@ TEST(MarinaInputsTest, CheckedBoundsAreTheLoadedMapsBounds) {
   WriteMapFrame(ImageFrame{-3.1, 0.7, 0.3}, MapFramePath(odd), "test");
   EXPECT_EQ(CheckMarinaMap(odd), LoadMarinaMap(odd).bounds);
   RemoveMap(odd);
+}
+
+// --- the text files --------------------------------------------------------------
+
+std::string LogError(const std::string& text) {
+  std::istringstream in(text);
+  try {
+    ReadMarinaLog(in, "drive.csv");
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+// A UTF-8 byte-order mark at the start is skipped; file content quoted in a
+// message has its control and non-ASCII bytes escaped.
+TEST(MarinaInputsTest, LogByteOrderMarkSkippedAndQuotedBytesEscaped) {
+  const std::string step = "step,0,0.5,0,0.02,1.5,0.01,10,10\n";
+  std::istringstream bom("\xEF\xBB\xBF" + step);
+  EXPECT_EQ(ReadMarinaLog(bom, "bom.csv").size(), 1u);
+  const std::string nul = LogError(std::string("step,0,0.5\0,0,0.02,1.5,0.01,,\n", 30));
+  EXPECT_NE(nul.find("drive.csv:1: field 3 (dvl_u): '0.5\\x00' is not a finite number"),
+            std::string::npos)
+      << nul;
+  const std::string kind = LogError(step + "\x7fret\xc3\xa9,1\n");
+  EXPECT_NE(kind.find("unknown row kind '\\x7fret\\xc3\\xa9'"), std::string::npos) << kind;
+  const std::string flag = LogError(step + "return,0,1,0.3,0.01,\x02,,\n");
+  EXPECT_NE(flag.find("'\\x02' must be 0, 1 or empty"), std::string::npos) << flag;
+  // A long field is cut in the message.
+  const std::string long_kind = LogError(std::string(1000, 'z') + "\n");
+  EXPECT_NE(long_kind.find(std::string(80, 'z') + "...'"), std::string::npos) << long_kind;
+  EXPECT_LT(long_kind.size(), 200u);
+}
+
+TEST(MarinaInputsTest, FrameByteOrderMarkSkippedAndQuotedBytesEscaped) {
+  std::istringstream bom("\xEF\xBB\xBForigin_x: 1\norigin_y: 2\npixel_size: 0.5\n");
+  EXPECT_EQ(ReadMapFrame(bom, "frame.yaml").origin_x, 1);
+  std::istringstream nul(std::string("origin\0x: 1\n", 13));
+  try {
+    ReadMapFrame(nul, "frame.yaml");
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("unknown key 'origin\\x00x'"), std::string::npos)
+        << e.what();
+  }
 }
 
 // --- the simulator ------------------------------------------------------------
