@@ -26,7 +26,7 @@ void Describe(MarinaSonarParams& p, ParamSet& set) {
           "number of steps to drive (the route ends after about 1187 at 0.5 m/s); with a log, at "
           "most this many rows",
           Range::Closed(1, 1e6));
-  set.Add("dt", &p.dt, "time step, s; speed x dt <= 20 m (simulator)", Range::Positive(60));
+  set.Add("dt", &p.dt, "time step, s; speed x dt <= 20 m (simulator)", Range::Positive(40));
   set.Add("speed", &p.speed,
           "mean forward speed, m/s, varying by ±10 %; speed x dt <= 20 m (simulator)",
           Range{0.05, 5, false, false});

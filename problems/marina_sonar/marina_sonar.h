@@ -58,7 +58,8 @@ struct MarinaSonarParams {
   // Number of steps to drive (the simulated route ends after about 1187
   // steps at the default speed); with a log, at most this many rows.
   int steps = 1200;
-  // Time step of the simulator, s; speed * dt at most kMarinaMaxStep.
+  // Time step of the simulator, s, in (0, 40] (40 s at the default speed is
+  // the longest step); speed * dt at most kMarinaMaxStep.
   double dt = 1;
   // Mean forward speed of the simulator, m/s; it varies by ±10 %.
   double speed = 0.5;
