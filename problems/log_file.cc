@@ -1,4 +1,5 @@
-// Opening the problems' text logs and writing their comment lines.
+// Opening the problems' text files, writing their comment lines, and what
+// their readers share.
 #include "problems/log_file.h"
 
 #include <ostream>
@@ -16,6 +17,28 @@ std::ifstream OpenLogFile(const std::string& path, const std::string& what) {
 void WriteLogComment(std::ostream& out, const std::string& comment) {
   std::istringstream lines(comment);
   for (std::string line; std::getline(lines, line);) out << "# " << line << "\n";
+}
+
+void StripByteOrderMark(std::string& first_line) {
+  if (first_line.compare(0, 3, "\xEF\xBB\xBF") == 0) first_line.erase(0, 3);
+}
+
+std::string QuoteForMessage(std::string_view text) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  constexpr std::size_t kMaxQuoted = 80;
+  std::string out;
+  for (const char c : text.substr(0, kMaxQuoted)) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte < 0x7f) {
+      out += c;
+    } else {
+      out += "\\x";
+      out += kHex[byte >> 4];
+      out += kHex[byte & 0xf];
+    }
+  }
+  if (text.size() > kMaxQuoted) out += "...";
+  return out;
 }
 
 }  // namespace icp

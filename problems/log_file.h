@@ -1,11 +1,14 @@
-// The text log files of the problems (car-track, marina-sonar): opening one
-// for reading and writing its '#' comment lines.
+// The text files of the problems (car-track and marina-sonar logs, the
+// marina map's frame sidecar, beacon scenes): opening one for reading,
+// writing its '#' comment lines, and what every reader does alike (a
+// leading byte-order mark, file content quoted in a message).
 #ifndef ICPBENCH_PROBLEMS_LOG_FILE_H_
 #define ICPBENCH_PROBLEMS_LOG_FILE_H_
 
 #include <fstream>
 #include <iosfwd>
 #include <string>
+#include <string_view>
 
 namespace icp {
 
@@ -17,6 +20,16 @@ std::ifstream OpenLogFile(const std::string& path, const std::string& what);
 // Writes comment to out as '#' lines, one for each of its lines (none when
 // it is empty).
 void WriteLogComment(std::ostream& out, const std::string& comment);
+
+// Removes the UTF-8 byte-order mark (EF BB BF) that some editors write at
+// the start of a text file; a reader calls it on its first line.
+void StripByteOrderMark(std::string& first_line);
+
+// text as an error message quotes it: every byte outside printable ASCII
+// (control bytes, NUL, DEL, bytes >= 0x80) written as \xHH, and the bytes
+// after the first 80 as "...", so that a message stays one readable line
+// whatever the file holds.
+std::string QuoteForMessage(std::string_view text);
 
 }  // namespace icp
 

@@ -13,6 +13,7 @@
 
 #include "core/constraint_system.h"
 #include "core/random.h"
+#include "problems/log_file.h"
 #include "problems/planar.h"
 
 namespace icp {
@@ -73,11 +74,15 @@ std::vector<std::string> SplitFields(const std::string& line) {
 BeaconScene ReadBeaconScene(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::invalid_argument(path + ": cannot open the beacon scene");
+  return ReadBeaconScene(in, path);
+}
+
+BeaconScene ReadBeaconScene(std::istream& in, const std::string& path) {
   BeaconScene scene;
   std::string line;
   int number = 0;
   while (std::getline(in, line)) {
-    ++number;
+    if (++number == 1) StripByteOrderMark(line);
     const std::string where = path + ":" + std::to_string(number) + ": ";
     const auto first = line.find_first_not_of(" \t\r");
     if (first == std::string::npos || line[first] == '#') continue;
@@ -86,8 +91,8 @@ BeaconScene ReadBeaconScene(const std::string& path) {
       double v = 0;
       const auto [end, ec] = std::from_chars(f[i].data(), f[i].data() + f[i].size(), v);
       if (f[i].empty() || ec != std::errc() || end != f[i].data() + f[i].size() || !std::isfinite(v))
-        throw std::invalid_argument(where + "field " + std::to_string(i + 1) + ": '" + f[i] +
-                                    "' is not a finite number");
+        throw std::invalid_argument(where + "field " + std::to_string(i + 1) + ": '" +
+                                    QuoteForMessage(f[i]) + "' is not a finite number");
       return v;
     };
     auto expect = [&](std::size_t n) {
@@ -119,7 +124,8 @@ BeaconScene ReadBeaconScene(const std::string& path) {
         throw std::invalid_argument(where + "range must be >= 0 and error > 0");
       scene.ranges.push_back(r);
     } else {
-      throw std::invalid_argument(where + "unknown row kind '" + f[0] + "' (box, truth, range)");
+      throw std::invalid_argument(where + "unknown row kind '" + QuoteForMessage(f[0]) +
+                                  "' (box, truth, range)");
     }
   }
   if (scene.box.size() != 2 || scene.truth.size() != 2 || scene.ranges.empty())

@@ -41,6 +41,7 @@
 #define ICPBENCH_PROBLEMS_BEACON_RANGES_BEACON_RANGES_H_
 
 #include <cstdint>
+#include <iosfwd>
 #include <memory>
 #include <string>
 #include <vector>
@@ -110,8 +111,9 @@ struct BeaconScene {
 };
 
 // Reads a scene file (format in problems/beacon_ranges/README.md); throws
-// std::invalid_argument naming the file and line on a bad one.
+// std::invalid_argument naming the file (source) and line on a bad one.
 BeaconScene ReadBeaconScene(const std::string& path);
+BeaconScene ReadBeaconScene(std::istream& in, const std::string& source);
 // The shipped scene of Figs. 5.5-5.7.
 std::string TwoRobotsScenePath();
 

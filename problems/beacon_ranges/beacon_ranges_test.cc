@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -245,6 +246,28 @@ TEST(BeaconRangesTest, BadSceneFilesFailWithTheirLine) {
     EXPECT_NE(std::string(e.what()).find("bad_scene.csv:3:"), std::string::npos) << e.what();
   }
   EXPECT_THROW(ReadBeaconScene(testing::TempDir() + "/no_such_scene.csv"), std::invalid_argument);
+}
+
+// A UTF-8 byte-order mark at the start is skipped; file content quoted in a
+// message has its control and non-ASCII bytes escaped.
+TEST(BeaconRangesTest, SceneByteOrderMarkSkippedAndQuotedBytesEscaped) {
+  const std::string scene = "box,-1,1,-1,1\ntruth,0,0\nrange,0,1,1,1,0.1,0\n";
+  std::istringstream bom("\xEF\xBB\xBF" + scene);
+  EXPECT_EQ(ReadBeaconScene(bom, "bom.csv").ranges.size(), 1u);
+  auto error = [](const std::string& text) {
+    std::istringstream in(text);
+    try {
+      ReadBeaconScene(in, "scene.csv");
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  const std::string nul = error(scene + std::string("range,0,1,1,1\0,0.1,0\n", 22));
+  EXPECT_NE(nul.find("scene.csv:4: field 5: '1\\x00' is not a finite number"), std::string::npos)
+      << nul;
+  const std::string kind = error("\x1b[2J,1\n");
+  EXPECT_NE(kind.find("unknown row kind '\\x1b[2J'"), std::string::npos) << kind;
 }
 
 }  // namespace

@@ -62,7 +62,7 @@ class LogReader {
     std::vector<CarTrackRecord> records;
     bool have_header = false;
     while (std::getline(in, line)) {
-      ++line_number_;
+      if (++line_number_ == 1) StripByteOrderMark(line);
       const std::string_view text = TrimField(line);
       if (text.empty() || text.front() == '#') continue;
       if (!have_header) {
@@ -96,7 +96,7 @@ class LogReader {
         std::string known;
         for (const char* n : kColumnNames) known += (known.empty() ? "" : ", ") + std::string(n);
         Fail("header column " + std::to_string(field + 1) + ": unknown column '" +
-             std::string(name) + "' (known: " + known + ")");
+             QuoteForMessage(name) + "' (known: " + known + ")");
       }
       const int column = static_cast<int>(it - std::begin(kColumnNames));
       if (position_[column] >= 0) Fail("header: column '" + std::string(name) + "' repeated");
@@ -150,7 +150,7 @@ class LogReader {
     double v = 0;
     const auto [end, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
     if (f.empty() || ec != std::errc() || end != f.data() + f.size() || !std::isfinite(v))
-      Fail(Where(column) + ": '" + std::string(f) + "' is not a finite number");
+      Fail(Where(column) + ": '" + QuoteForMessage(f) + "' is not a finite number");
     return v;
   }
 
@@ -159,7 +159,7 @@ class LogReader {
     std::int64_t v = 0;
     const auto [end, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
     if (f.empty() || ec != std::errc() || end != f.data() + f.size())
-      Fail(Where(column) + ": '" + std::string(f) + "' is not an integer");
+      Fail(Where(column) + ": '" + QuoteForMessage(f) + "' is not an integer");
     return v;
   }
 

@@ -151,6 +151,24 @@ TEST(CarTrackTest, BadLogsFailWithLineAndColumn) {
   }
 }
 
+// A UTF-8 byte-order mark before the header is skipped; file content quoted
+// in a message has its control and non-ASCII bytes escaped (a NUL byte
+// would cut the message short on a terminal).
+TEST(CarTrackTest, ByteOrderMarkSkippedAndQuotedBytesEscaped) {
+  const std::string header =
+      "t,odo_left_ticks,odo_right_ticks,gyro_dtheta,gps_x,gps_y,gps_ex,gps_ey\n";
+  EXPECT_EQ(ReadLogText("\xEF\xBB\xBF" + header + "0,0,0,0,,,,\n").size(), 1u);
+  const std::string row("0,0,0,1\0x,,,,\n", 17);
+  const std::string nul = ErrorOf([&] { ReadLogText(header + row); });
+  EXPECT_NE(nul.find("column 4 (gyro_dtheta): '1\\x00x' is not a finite"), std::string::npos)
+      << nul;
+  const std::string column = ErrorOf([&] { ReadLogText("t,\x01\xff\n"); });
+  EXPECT_NE(column.find("unknown column '\\x01\\xff'"), std::string::npos) << column;
+  // A BOM anywhere else is content, quoted escaped.
+  const std::string late = ErrorOf([&] { ReadLogText("# c\n\xEF\xBB\xBFt\n"); });
+  EXPECT_NE(late.find("'\\xef\\xbb\\xbft'"), std::string::npos) << late;
+}
+
 TEST(CarTrackTest, NonPhysicalValuesFailWithLineAndColumn) {
   const std::string header =
       "t,odo_left_ticks,odo_right_ticks,gyro_dtheta,gps_x,gps_y,gps_ex,gps_ey,truth_x,truth_y,"

@@ -40,7 +40,7 @@ class LogReader {
     std::vector<MarinaRecord> records;
     std::string line;
     while (std::getline(in, line)) {
-      ++line_number_;
+      if (++line_number_ == 1) StripByteOrderMark(line);
       const std::string_view text = TrimField(line);
       if (text.empty() || text.front() == '#') continue;
       fields_ = SplitCsvFields(text);
@@ -53,7 +53,7 @@ class LogReader {
         if (records.empty()) Fail("a return before the first step row");
         records.back().returns.push_back(ReadReturn());
       } else {
-        Fail("unknown row kind '" + std::string(fields_[0]) + "' (step, return)");
+        Fail("unknown row kind '" + QuoteForMessage(fields_[0]) + "' (step, return)");
       }
     }
     if (records.empty()) throw std::invalid_argument(source_ + ": no step rows");
@@ -85,7 +85,7 @@ class LogReader {
     double v = 0;
     const auto [end, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
     if (f.empty() || ec != std::errc() || end != f.data() + f.size() || !std::isfinite(v))
-      Fail(Where(i) + ": '" + std::string(f) + "' is not a finite number");
+      Fail(Where(i) + ": '" + QuoteForMessage(f) + "' is not a finite number");
     if (!(std::fabs(v) <= limit))
       Fail(Where(i) + ": " + FormatDouble(v) + " is beyond +-" + FormatDouble(limit));
     return v;
@@ -130,7 +130,7 @@ class LogReader {
     r.beam_half_width = NonNegative(3, kPi);
     if (!Empty(4)) {
       if (fields_[5] != "0" && fields_[5] != "1")
-        Fail(Where(4) + ": '" + std::string(fields_[5]) + "' must be 0, 1 or empty");
+        Fail(Where(4) + ": '" + QuoteForMessage(fields_[5]) + "' must be 0, 1 or empty");
       r.has_outlier_flag = true;
       r.outlier = fields_[5] == "1";
     }

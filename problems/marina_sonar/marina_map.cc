@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -13,6 +14,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/params.h"
+#include "problems/log_file.h"
 
 namespace icp {
 
@@ -80,15 +82,21 @@ std::string MapFramePath(const std::string& image_path) {
 
 ImageFrame ReadMapFrame(const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw std::invalid_argument(path + ": cannot open the map frame (origin_x, origin_y, pixel_size)");
+  if (!in)
+    throw std::invalid_argument(path +
+                                ": cannot open the map frame (origin_x, origin_y, pixel_size)");
+  return ReadMapFrame(in, path);
+}
+
+ImageFrame ReadMapFrame(std::istream& in, const std::string& source) {
   double values[3] = {0, 0, 0};
   bool seen[3] = {false, false, false};
   constexpr const char* kKeys[3] = {"origin_x", "origin_y", "pixel_size"};
   std::string line;
   int number = 0;
   while (std::getline(in, line)) {
-    ++number;
-    const std::string where = path + ":" + std::to_string(number) + ": ";
+    if (++number == 1) StripByteOrderMark(line);
+    const std::string where = source + ":" + std::to_string(number) + ": ";
     std::string_view text(line);
     const auto hash = text.find('#');
     if (hash != std::string_view::npos) text = text.substr(0, hash);
@@ -106,7 +114,7 @@ ImageFrame ReadMapFrame(const std::string& path) {
     const std::string_view value = trim(text.substr(colon + 1));
     const auto* it = std::find(std::begin(kKeys), std::end(kKeys), key);
     if (it == std::end(kKeys))
-      throw std::invalid_argument(where + "unknown key '" + std::string(key) +
+      throw std::invalid_argument(where + "unknown key '" + QuoteForMessage(key) +
                                   "' (known: origin_x, origin_y, pixel_size)");
     const int k = static_cast<int>(it - std::begin(kKeys));
     if (seen[k]) throw std::invalid_argument(where + "key '" + std::string(key) + "' repeated");
@@ -114,14 +122,14 @@ ImageFrame ReadMapFrame(const std::string& path) {
     const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
     if (value.empty() || ec != std::errc() || end != value.data() + value.size() || !std::isfinite(v) ||
         std::fabs(v) > 1e9)
-      throw std::invalid_argument(where + std::string(key) + ": '" + std::string(value) +
+      throw std::invalid_argument(where + std::string(key) + ": '" + QuoteForMessage(value) +
                                   "' is not a finite number within +-1e9");
     if (k == 2 && !(v > 0)) throw std::invalid_argument(where + "pixel_size must be > 0");
     values[k] = v;
     seen[k] = true;
   }
   for (int k = 0; k < 3; ++k)
-    if (!seen[k]) throw std::invalid_argument(path + ": lacks the key '" + kKeys[k] + "'");
+    if (!seen[k]) throw std::invalid_argument(source + ": lacks the key '" + kKeys[k] + "'");
   return ImageFrame{values[0], values[1], values[2]};
 }
 
@@ -148,17 +156,120 @@ MarinaMap MakeMarinaMap(const cv::Mat& walls, const ImageFrame& frame) {
   return map;
 }
 
-MarinaMap LoadMarinaMap(const std::string& image_path) {
+namespace {
+
+// The PNG signature and the IHDR chunk that must follow it (PNG spec §5.2,
+// §11.2.2): length 13, type, width and height (big-endian, 1 to 2^31 - 1),
+// bit depth, colour type, compression, filter, interlace, CRC.
+constexpr std::string_view kPngSignature("\x89PNG\r\n\x1a\n", 8);
+constexpr std::size_t kPngHeadSize = 33;
+
+std::uint32_t BigEndian32(std::string_view bytes) {
+  std::uint32_t v = 0;
+  for (int i = 0; i < 4; ++i) v = v << 8 | static_cast<unsigned char>(bytes[i]);
+  return v;
+}
+
+std::string NotAPng(const std::string& source, const std::string& why) {
+  return source + ": not a PNG map image (" + why +
+         "); a map is a PNG whose pixels are walls where the grey level is >= 128";
+}
+
+// The first kPngHeadSize bytes of the file at path (fewer if it is shorter).
+std::string ReadHead(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::invalid_argument(path + ": cannot open the map image");
+  std::string head(kPngHeadSize, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  return head;
+}
+
+void CheckRegularFile(const std::string& image_path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(image_path, ec))
     throw std::invalid_argument(image_path + ": no such map image (a regular file)");
-  const cv::Mat grey = cv::imread(image_path, cv::IMREAD_GRAYSCALE);
-  if (grey.empty()) throw std::invalid_argument(image_path + ": cannot read the map image");
-  const ImageFrame frame = ReadMapFrame(MapFramePath(image_path));
+}
+
+// The walls of a decoded grey image; OpenCV's own exceptions (a decoder
+// failing on a corrupt file) become the reader's documented one.
+template <typename Decode>
+cv::Mat WallsOf(Decode decode, const std::string& source) {
+  cv::Mat grey;
+  try {
+    grey = decode();
+  } catch (const cv::Exception& e) {
+    throw std::invalid_argument(source + ": cannot decode the map image (" + e.err + ")");
+  }
+  if (grey.empty()) throw std::invalid_argument(source + ": cannot decode the map image");
   cv::Mat walls = grey >= 128;
   if (cv::countNonZero(walls) == 0)
-    throw std::invalid_argument(image_path + ": the map has no wall pixel (grey level >= 128)");
-  return MakeMarinaMap(walls, frame);
+    throw std::invalid_argument(source + ": the map has no wall pixel (grey level >= 128)");
+  return walls;
+}
+
+// The world box of a rows x cols image in frame, rounded outward: what
+// BinaryImage::Bounds gives once the image is decoded.
+Box MapBounds(int rows, int cols, const ImageFrame& frame) {
+  const Interval s(frame.pixel_size);
+  auto extent = [&](double origin, int n) {
+    const Interval o(origin);
+    return Interval(o.lo(), (o + Interval(static_cast<double>(n)) * s).hi());
+  };
+  return Box{extent(frame.origin_x, cols), extent(frame.origin_y, rows)};
+}
+
+}  // namespace
+
+cv::Size MapImageSize(std::string_view head, const std::string& source) {
+  if (head.substr(0, kPngSignature.size()) != kPngSignature)
+    throw std::invalid_argument(NotAPng(source, "no PNG signature"));
+  if (head.size() < kPngHeadSize) throw std::invalid_argument(NotAPng(source, "truncated header"));
+  if (BigEndian32(head.substr(8)) != 13 || head.substr(12, 4) != "IHDR")
+    throw std::invalid_argument(NotAPng(source, "no IHDR chunk first"));
+  const std::uint32_t width = BigEndian32(head.substr(16)), height = BigEndian32(head.substr(20));
+  constexpr std::uint32_t kPngMaxSide = 0x7fffffff;
+  if (width == 0 || height == 0 || width > kPngMaxSide || height > kPngMaxSide)
+    throw std::invalid_argument(NotAPng(source, "width " + std::to_string(width) + ", height " +
+                                                    std::to_string(height)));
+  const std::int64_t pixels = std::int64_t{width} * height;
+  if (pixels > kMaxMarinaMapPixels)
+    throw std::invalid_argument(source + ": the map image is " + std::to_string(width) + " x " +
+                                std::to_string(height) + " = " + std::to_string(pixels) +
+                                " pixels, beyond the limit of " +
+                                std::to_string(kMaxMarinaMapPixels) +
+                                " (5000 x 5000): crop the map or use larger pixels");
+  return cv::Size(static_cast<int>(width), static_cast<int>(height));
+}
+
+cv::Mat DecodeMapWalls(std::string_view bytes, const std::string& source) {
+  MapImageSize(bytes.substr(0, kPngHeadSize), source);
+  if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    throw std::invalid_argument(source + ": the map image's file is over 2 GiB");
+  return WallsOf(
+      [bytes] {
+        const cv::Mat buffer(1, static_cast<int>(bytes.size()), CV_8UC1,
+                             const_cast<char*>(bytes.data()));
+        return cv::imdecode(buffer, cv::IMREAD_GRAYSCALE);
+      },
+      source);
+}
+
+MarinaMap LoadMarinaMap(const std::string& image_path) {
+  CheckRegularFile(image_path);
+  MapImageSize(ReadHead(image_path), image_path);
+  const ImageFrame frame = ReadMapFrame(MapFramePath(image_path));
+  return MakeMarinaMap(
+      WallsOf([&] { return cv::imread(image_path, cv::IMREAD_GRAYSCALE); }, image_path), frame);
+}
+
+Box CheckMarinaMap(const std::string& image_path) {
+  CheckRegularFile(image_path);
+  MapImageSize(ReadHead(image_path), image_path);
+  const ImageFrame frame = ReadMapFrame(MapFramePath(image_path));
+  const cv::Mat walls =
+      WallsOf([&] { return cv::imread(image_path, cv::IMREAD_GRAYSCALE); }, image_path);
+  return MapBounds(walls.rows, walls.cols, frame);
 }
 
 double WallDistance(const MarinaMap& map, double x, double y) {

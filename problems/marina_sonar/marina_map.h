@@ -16,9 +16,12 @@
 #ifndef ICPBENCH_PROBLEMS_MARINA_SONAR_MARINA_MAP_H_
 #define ICPBENCH_PROBLEMS_MARINA_SONAR_MARINA_MAP_H_
 
+#include <cstdint>
+#include <iosfwd>
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include <opencv2/core.hpp>
 
@@ -44,9 +47,11 @@ std::string ShippedMarinaMapPath();
 std::string MapFramePath(const std::string& image_path);
 
 // Reads a frame sidecar: lines "key: value" for origin_x, origin_y (m) and
-// pixel_size (m per pixel, > 0), each exactly once; '#' comments and blank
-// lines ignored. Throws std::invalid_argument naming the file and line.
+// pixel_size (m per pixel, > 0), each exactly once; '#' comments, blank
+// lines and a leading UTF-8 byte-order mark ignored. Throws
+// std::invalid_argument naming the file (source) and line.
 ImageFrame ReadMapFrame(const std::string& path);
+ImageFrame ReadMapFrame(std::istream& in, const std::string& source);
 // Writes one, with a comment line.
 void WriteMapFrame(const ImageFrame& frame, const std::string& path, const std::string& comment);
 
@@ -62,10 +67,34 @@ struct MarinaMap {
 };
 // From an image (nonzero = wall) and its frame.
 MarinaMap MakeMarinaMap(const cv::Mat& walls, const ImageFrame& frame);
-// Reads a map image (any format cv::imread reads; a pixel is a wall when its
-// grey level is >= 128) and its sidecar. Throws std::invalid_argument on an
-// unreadable image, a map without walls, or a bad sidecar.
+
+// The largest map image, width x height in pixels (5000 x 5000, a 2.5 km
+// square at 0.5 m per pixel). A map costs about 20 bytes a pixel once loaded
+// (the image, its ψ transform, the distance field and their temporaries),
+// 500 MB at the limit; a small PNG can declare far more pixels (15000 x
+// 15000 in 44 KB), so the size is checked from the header, before a pixel is
+// decoded.
+inline constexpr std::int64_t kMaxMarinaMapPixels = 25'000'000;
+
+// The size of a map image from its first bytes: the PNG signature and the
+// IHDR chunk (33 bytes; a map is a PNG). Throws std::invalid_argument naming
+// source when head is not the start of a PNG image or when the image has
+// more than kMaxMarinaMapPixels pixels.
+cv::Size MapImageSize(std::string_view head, const std::string& source);
+// The walls of a PNG map image given as its bytes (a pixel is a wall when
+// its grey level is >= 128): CV_8UC1, 255 on walls. Checks the size first
+// (MapImageSize). Throws std::invalid_argument naming source on a bad
+// header, an undecodable image, or an image without walls.
+cv::Mat DecodeMapWalls(std::string_view bytes, const std::string& source);
+// Reads a map: a PNG image, read as DecodeMapWalls reads its bytes, and its
+// sidecar. Throws std::invalid_argument as DecodeMapWalls and ReadMapFrame
+// do, or when image_path is not a regular file.
 MarinaMap LoadMarinaMap(const std::string& image_path);
+// Checks a map as LoadMarinaMap does, without deriving the ψ transform and
+// the distance field (about 2 bytes a pixel, not 20: validation runs in the
+// parent process, without a worker's memory limit). Returns the world box it
+// covers, MarinaMap::bounds.
+Box CheckMarinaMap(const std::string& image_path);
 
 // The distance in metres from (x, y) to the nearest wall, by the distance
 // field (the nearest pixel's value; outside the image, that of the nearest

@@ -18,10 +18,15 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// Turn rate limit of the simulated robot, rad/s, and the distance at which it
-// heads for the next waypoint, m.
+// Turn rate limit of the simulated robot, rad/s, raised at speeds above
+// 0.5 m/s so that it turns within kMinTurnRadius metres at any speed: a
+// wider turn overshoots the waypoints and circles them through the quays.
 constexpr double kMaxTurnRate = 0.2;
+constexpr double kMinTurnRadius = 2.5;
+// The distance at which it heads for the next waypoint, m, raised to 1.2
+// steps when a step is longer (a step may not jump over the circle).
 constexpr double kWaypointRadius = 3;
+constexpr double kStepsToArrive = 1.2;
 // Rays across the beam whose shortest hit is the echo.
 constexpr int kBeamRays = 5;
 
@@ -44,14 +49,17 @@ class Simulator {
     const double bias_v = 0.6 * p_.dvl_error * UniformReal(rng_, -1, 1);
     const double bias_th = 0.6 * p_.compass_error * UniformReal(rng_, -1, 1);
     std::vector<MarinaRecord> records;
+    // At the default speed and dt both are their constants, so the default
+    // drive is what it has always been.
+    const double arrival = std::max(kWaypointRadius, kStepsToArrive * p_.speed * p_.dt);
+    const double max_turn = p_.dt * std::max(kMaxTurnRate, p_.speed / kMinTurnRadius);
     for (int k = 0; k < p_.steps; ++k) {
       while (target < route.size() &&
-             std::hypot(route[target][0] - x, route[target][1] - y) < kWaypointRadius)
+             std::hypot(route[target][0] - x, route[target][1] - y) < arrival)
         ++target;
       if (target == route.size()) break;  // the route is driven
       const double desired = std::atan2(route[target][1] - y, route[target][0] - x);
       const double turn = std::remainder(desired - th, 2 * kPi);
-      const double max_turn = kMaxTurnRate * p_.dt;
       th += std::clamp(turn, -max_turn, max_turn);
       const double t = k * p_.dt;
       // True body-frame velocity: the speed varies by ±10 %, a current

@@ -26,8 +26,9 @@ void Describe(MarinaSonarParams& p, ParamSet& set) {
           "number of steps to drive (the route ends after about 1187 at 0.5 m/s); with a log, at "
           "most this many rows",
           Range::Closed(1, 1e6));
-  set.Add("dt", &p.dt, "time step, s (simulator)", Range::Positive(60));
-  set.Add("speed", &p.speed, "mean forward speed, m/s, varying by ±10 % (simulator)",
+  set.Add("dt", &p.dt, "time step, s; speed x dt <= 20 m (simulator)", Range::Positive(40));
+  set.Add("speed", &p.speed,
+          "mean forward speed, m/s, varying by ±10 %; speed x dt <= 20 m (simulator)",
           Range{0.05, 5, false, false});
   set.Add("dvl_error", &p.dvl_error, "DVL half-width on each body-frame velocity, m/s (simulator)",
           Range::Positive(1));
@@ -60,7 +61,9 @@ void Describe(MarinaSonarParams& p, ParamSet& set) {
   set.Add("likelihood_floor", &p.likelihood_floor,
           "outlier floor of one return's likelihood (probabilistic view)", Range{0, 1, true, true});
   set.Add("log", &p.log, "CSV log replacing the simulator (empty: simulate)");
-  set.Add("map", &p.map, "map image with its .yaml frame sidecar (empty: the shipped marina)");
+  set.Add("map", &p.map,
+          "PNG map image of at most 25000000 pixels with its .yaml frame sidecar (empty: the "
+          "shipped marina)");
 }
 
 namespace {
@@ -70,6 +73,11 @@ MarinaSonarParams ParseMarinaSonar(const std::string& owner, const ParamMap& val
   if (!p.map.empty() && p.log.empty())
     throw ParamError(owner + ".map = " + p.map +
                      ": another map needs a log (the simulator drives the shipped marina)");
+  if (p.log.empty() && !(p.speed * p.dt <= kMarinaMaxStep))
+    throw ParamError(owner + ".speed = " + FormatDouble(p.speed) + ", dt = " + FormatDouble(p.dt) +
+                     ": a step of speed x dt = " + FormatDouble(p.speed * p.dt) +
+                     " m; the simulator needs speed x dt <= " + FormatDouble(kMarinaMaxStep) +
+                     " m (each step is straight: a longer one cuts through the quays)");
   return p;
 }
 
@@ -89,20 +97,32 @@ Displacement DeadReckoning(const MarinaRecord& r, const Interval& dt) {
   return {dt * (u * c - v * s), dt * (u * s + v * c)};
 }
 
-MarinaSonarProblem::MarinaSonarProblem(const MarinaSonarParams& params, MarinaMap map,
-                                       std::vector<MarinaRecord> records)
-    : params_(params), map_(std::move(map)), records_(std::move(records)) {
-  num_steps_ = static_cast<int>(std::min<std::size_t>(records_.size(), params_.steps));
-  for (int k = 0; k < num_steps_; ++k) {
-    const MarinaRecord& r = records_[k];
-    if (r.has_truth && !map_.bounds.Contains({r.truth_x, r.truth_y}))
+namespace {
+
+// What the problem needs of a drive on a map covering bounds (the
+// constructor's contract, checked at validation too).
+void CheckDrive(const MarinaSonarParams& params, const std::vector<MarinaRecord>& records,
+                const Box& bounds) {
+  const std::size_t n = std::min<std::size_t>(records.size(), params.steps);
+  for (std::size_t k = 0; k < n; ++k) {
+    const MarinaRecord& r = records[k];
+    if (r.has_truth && !bounds.Contains({r.truth_x, r.truth_y}))
       throw std::invalid_argument("marina-sonar: step " + std::to_string(k) + ": the truth (" +
                                   FormatDouble(r.truth_x) + ", " + FormatDouble(r.truth_y) +
                                   ") lies outside the map");
   }
+  if (params.start == "known" && (records.empty() || !records[0].has_truth))
+    throw ParamError("marina-sonar.start = known: the first step has no truth");
+}
+
+}  // namespace
+
+MarinaSonarProblem::MarinaSonarProblem(const MarinaSonarParams& params, MarinaMap map,
+                                       std::vector<MarinaRecord> records)
+    : params_(params), map_(std::move(map)), records_(std::move(records)) {
+  num_steps_ = static_cast<int>(std::min<std::size_t>(records_.size(), params_.steps));
+  CheckDrive(params_, records_, map_.bounds);
   if (params_.start == "known") {
-    if (records_.empty() || !records_[0].has_truth)
-      throw ParamError("marina-sonar.start = known: the first step has no truth");
     start_box_ = Intersect(Box({Around(records_[0].truth_x, params_.start_error),
                                 Around(records_[0].truth_y, params_.start_error)}),
                            map_.bounds);
@@ -115,11 +135,10 @@ MarinaSonarProblem::MarinaSonarProblem(const MarinaSonarParams& params, MarinaMa
 
 ParamMap ResolveMarinaSonar(const std::string& owner, const ParamMap& values) {
   const MarinaSonarParams p = ParseMarinaSonar(owner, values);
-  MarinaMap map = LoadMarinaMap(MapPath(p));
-  if (!p.log.empty()) {
-    const MarinaSonarProblem checked(p, std::move(map), ReadMarinaLog(p.log));
-    static_cast<void>(checked);
-  }
+  // Validation runs in the parent process, which has no memory limit: the
+  // map is checked (bounded in size, decoded, not derived), not loaded.
+  const Box bounds = CheckMarinaMap(MapPath(p));
+  if (!p.log.empty()) CheckDrive(p, ReadMarinaLog(p.log), bounds);
   return ResolveParams<MarinaSonarParams>(owner, values);
 }
 

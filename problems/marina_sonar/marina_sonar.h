@@ -58,7 +58,8 @@ struct MarinaSonarParams {
   // Number of steps to drive (the simulated route ends after about 1187
   // steps at the default speed); with a log, at most this many rows.
   int steps = 1200;
-  // Time step of the simulator, s.
+  // Time step of the simulator, s, in (0, 40] (40 s at the default speed is
+  // the longest step); speed * dt at most kMarinaMaxStep.
   double dt = 1;
   // Mean forward speed of the simulator, m/s; it varies by ±10 %.
   double speed = 0.5;
@@ -100,11 +101,16 @@ struct MarinaSonarParams {
   double likelihood_floor = 0.1;
   // CSV log replacing the simulator (ReadMarinaLog); empty: simulate.
   std::string log;
-  // Map image (with its .yaml frame sidecar); empty: the shipped marina
-  // (data/marina.png). Another map needs a log.
+  // Map image, a PNG of at most kMaxMarinaMapPixels pixels (with its .yaml
+  // frame sidecar); empty: the shipped marina (data/marina.png). Another map
+  // needs a log.
   std::string map;
 };
 void Describe(MarinaSonarParams& p, ParamSet& set);
+// The longest nominal step of the simulator, speed * dt, m: it moves
+// straight for dt seconds (the dead-reckoning model), so a longer step would
+// cut the route's corners through the quays or miss the 20 m wide canal.
+inline constexpr double kMarinaMaxStep = 20;
 // Parses, validates (map without log), loads the map and reads the log so
 // that bad files fail early; returns the effective parameters.
 ParamMap ResolveMarinaSonar(const std::string& owner, const ParamMap& values);
