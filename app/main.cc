@@ -5,7 +5,9 @@
 // for `paper`), 130/143 `run`
 // stopped by SIGINT/SIGTERM, 1 an unexpected internal error.
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <new>
@@ -16,6 +18,7 @@
 #include <thread>
 
 #include "core/memory_budget.h"
+#include "core/params.h"
 #include "experiments/registry.h"
 #include "harness/environment_error.h"
 #include "harness/list_command.h"
@@ -33,7 +36,22 @@
 namespace {
 constexpr int kUsageError = 2;
 constexpr int kEnvironmentError = 3;
+
+// A finite number of seconds in [lo, hi]; the message gives the range (CLI11's
+// own range checks let NaN through and print an open end as DBL_MAX).
+CLI::Validator SecondsIn(double lo, double hi) {
+  const std::string range = "[" + icp::FormatDouble(lo) + ", " + icp::FormatDouble(hi) + "]";
+  return CLI::Validator(
+      [lo, hi, range](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        const bool number = !text.empty() && end == text.c_str() + text.size();
+        if (number && std::isfinite(v) && v >= lo && v <= hi) return "";
+        return "'" + text + "' must be a number of seconds in " + range;
+      },
+      "SECONDS in " + range);
 }
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"icpbench: interval constraint propagation benchmarks"};
@@ -87,14 +105,16 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   bool mpi = false;
   icp::MpiSweepOptions mpi_options;
-  run_cmd->add_flag("--mpi", mpi,
-                    "one sweep over the ranks of mpirun -n N: rank 0 dispatches and stores, the others "
-                    "run --jobs runs each");
+  CLI::Option* mpi_flag =
+      run_cmd->add_flag("--mpi", mpi,
+                        "one sweep over the ranks of mpirun -n N: rank 0 dispatches and stores, "
+                        "the others run --jobs runs each");
   run_cmd->add_option("--rank-timeout", mpi_options.rank_timeout_s,
                       "with --mpi: seconds without a message after which a rank is lost (its runs "
                       "in flight go to other ranks)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(SecondsIn(icp::kMinRankTimeoutS, icp::kMaxRankTimeoutS))
+      ->needs(mpi_flag);
   run_cmd->add_flag("--force", run.force, "rerun runs that are already stored");
   run_cmd->add_flag("--no-retry", run.no_retry,
                     "keep stored failed and timeout runs instead of retrying them");

@@ -363,6 +363,26 @@ TEST(RunnerProcessTest, CliMpiWithOneRankOrWithoutMpiIsAUsageError) {
   EXPECT_FALSE(std::filesystem::exists(StorePath(dir)));
 }
 
+// --rank-timeout is checked when the command line is read (no mpirun
+// needed): a finite number of seconds in its range, and only with --mpi.
+TEST(RunnerProcessTest, CliRankTimeoutOutsideItsRangeOrWithoutMpiIsAUsageError) {
+  const std::string spec =
+      testing::WriteFile("process_quick.yaml", "algorithms: [hc4]\nproblems: [chain]\n");
+  const std::string dir = FreshDir("cli_rank_timeout");
+  for (const std::string value : {"nan", "inf", "-inf", "0", "1", "-5", "86401", "1e300", "x"}) {
+    const testing::Result r =
+        Icpbench("run " + spec + " --mpi --rank-timeout " + value + " --out " + dir);
+    EXPECT_EQ(r.exit_code, 2) << value << ": " << r.out;
+    EXPECT_NE(r.out.find("--rank-timeout"), std::string::npos) << value << ": " << r.out;
+    EXPECT_NE(r.out.find("[2, 86400]"), std::string::npos) << value << ": " << r.out;
+    EXPECT_LT(r.out.size(), 300u) << value << ": " << r.out;  // no number in 300 digits
+  }
+  const testing::Result r = Icpbench("run " + spec + " --rank-timeout 60 --out " + dir);
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find("--rank-timeout requires --mpi"), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(StorePath(dir)));
+}
+
 TEST(RunnerProcessTest, CliAnUnwritableOutputDirectoryIsTheEnvironment) {
   // /sys refuses new files even to root: a real permission error.
   const std::string spec =
