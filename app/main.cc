@@ -5,10 +5,13 @@
 // for `paper`), 130/143 `run`
 // stopped by SIGINT/SIGTERM, 1 an unexpected internal error.
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <new>
+#include <system_error>
 
 #include <unistd.h>
 
@@ -16,10 +19,12 @@
 #include <thread>
 
 #include "core/memory_budget.h"
+#include "core/params.h"
 #include "experiments/registry.h"
 #include "harness/environment_error.h"
 #include "harness/list_command.h"
 #include "harness/mpi_sweep.h"
+#include "harness/output_directory.h"
 #include "harness/plugin_loader.h"
 #include "report/report.h"
 #include "harness/results_store.h"
@@ -33,7 +38,22 @@
 namespace {
 constexpr int kUsageError = 2;
 constexpr int kEnvironmentError = 3;
+
+// A finite number of seconds in [lo, hi]; the message gives the range (CLI11's
+// own range checks let NaN through and print an open end as DBL_MAX).
+CLI::Validator SecondsIn(double lo, double hi) {
+  const std::string range = "[" + icp::FormatDouble(lo) + ", " + icp::FormatDouble(hi) + "]";
+  return CLI::Validator(
+      [lo, hi, range](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        const bool number = !text.empty() && end == text.c_str() + text.size();
+        if (number && std::isfinite(v) && v >= lo && v <= hi) return "";
+        return "'" + text + "' must be a number of seconds in " + range;
+      },
+      "SECONDS in " + range);
 }
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"icpbench: interval constraint propagation benchmarks"};
@@ -87,14 +107,16 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   bool mpi = false;
   icp::MpiSweepOptions mpi_options;
-  run_cmd->add_flag("--mpi", mpi,
-                    "one sweep over the ranks of mpirun -n N: rank 0 dispatches and stores, the others "
-                    "run --jobs runs each");
+  CLI::Option* mpi_flag =
+      run_cmd->add_flag("--mpi", mpi,
+                        "one sweep over the ranks of mpirun -n N: rank 0 dispatches and stores, "
+                        "the others run --jobs runs each");
   run_cmd->add_option("--rank-timeout", mpi_options.rank_timeout_s,
                       "with --mpi: seconds without a message after which a rank is lost (its runs "
                       "in flight go to other ranks)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(SecondsIn(icp::kMinRankTimeoutS, icp::kMaxRankTimeoutS))
+      ->needs(mpi_flag);
   run_cmd->add_flag("--force", run.force, "rerun runs that are already stored");
   run_cmd->add_flag("--no-retry", run.no_retry,
                     "keep stored failed and timeout runs instead of retrying them");
@@ -133,6 +155,9 @@ int main(int argc, char** argv) {
     return kUsageError;
   }
 
+  // How the command writes its output elsewhere, for the advice on an
+  // output it may not write.
+  std::string elsewhere = icp::kChooseAnotherOut;
   try {
     for (const std::string& plugin : plugins) icp::LoadPlugin(plugin);
     if (*solve_cmd) {
@@ -180,23 +205,40 @@ int main(int argc, char** argv) {
       std::cout << icp::ReportDirectory(report_dir, report_format, icp::PaperTables);
     } else if (*plot_cmd) {
       if (plot_out.empty()) plot_out = plot_dir + "/figures";
+      icp::CheckWritableDirectory(plot_out, elsewhere);
       std::vector<std::string> messages;
       for (const std::string& file :
            icp::PlotDirectory(plot_dir, plot_out, &messages, icp::PaperFigures))
         std::cout << file << "\n";
       for (const std::string& m : messages) std::cerr << "icpbench: " << m << "\n";
     } else if (*paper_cmd) {
+      elsewhere = icp::PaperElsewhere(paper_dir);
       const icp::PaperOutput paper = icp::BuildPaper(paper_dir);
       for (const std::string& m : paper.messages) std::cerr << "icpbench: " << m << "\n";
       std::cout << paper.pdf << "\n";
     } else if (*merge_cmd) {
-      // Validates every input, then writes OUT in one rename (MergeStores).
+      // An OUT_DIR it may not write is said as such (SQLite's own error on
+      // the new store would not say why). MergeStores validates every input,
+      // then writes OUT in one rename.
+      elsewhere = "choose another OUT_DIR";
+      icp::CheckWritableDirectory(merge_out, elsewhere);
       const icp::MergeSummary m = icp::MergeStores(merge_out, merge_in);
       for (std::size_t i = 0; i < merge_in.size(); ++i)
         std::cerr << "icpbench: merged " << m.from_input[i] << " runs from " << merge_in[i] << "\n";
       if (!m.ConflictMessage().empty()) std::cerr << "icpbench: " << m.ConflictMessage() << "\n";
       std::cerr << "icpbench: " << m.runs << " runs in " << icp::StorePath(merge_out) << "\n";
     }
+  } catch (const std::filesystem::filesystem_error& e) {  // creating or replacing an output
+    const int error = e.code().value();
+    const bool os_error = e.code().category() == std::generic_category() ||
+                          e.code().category() == std::system_category();
+    if (os_error && icp::IsEnvironmentErrno(error)) {
+      std::cerr << "icpbench: " << e.what() << " (" << icp::EnvironmentAdvice(error, elsewhere)
+                << ")\n";
+      return kEnvironmentError;
+    }
+    std::cerr << "icpbench: " << e.what() << "\n";
+    return kUsageError;
   } catch (const icp::EnvironmentError& e) {  // disk, descriptors, processes, permissions
     std::cerr << "icpbench: " << e.what() << "\n";
     return kEnvironmentError;

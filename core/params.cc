@@ -1,5 +1,7 @@
 #include "core/params.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -38,9 +40,76 @@ bool ParseDouble(const std::string& text, double* out) {
   *out = v;
   return true;
 }
-bool ParseInt(const std::string& text, int* out) {
-  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), *out);
-  return ec == std::errc() && end == text.data() + text.size() && !text.empty();
+
+// The integers a range allows, as an int parameter holds them: open ends
+// moved in to the next integer, ends beyond the int type (AtLeast's 1e308)
+// cut to it.
+struct IntegerRange {
+  long long lo;
+  long long hi;
+  bool Contains(long long v) const { return v >= lo && v <= hi; }
+  std::string ToString() const {
+    return "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  }
+};
+IntegerRange IntegersIn(const Range& r) {
+  constexpr double kMin = std::numeric_limits<int>::min();
+  constexpr double kMax = std::numeric_limits<int>::max();
+  const double lo = r.min_open ? std::floor(r.min) + 1 : std::ceil(r.min);
+  const double hi = r.max_open ? std::ceil(r.max) - 1 : std::floor(r.max);
+  return {static_cast<long long>(std::max(lo, kMin)), static_cast<long long>(std::min(hi, kMax))};
+}
+
+// The outcome of reading an integer parameter's text.
+enum class IntegerText { kInteger, kTooLarge, kNotAnInteger };
+
+// Reads decimal text with an optional sign, fraction and exponent ("12",
+// "+1e7", "2.5e3", "10000000.0": specs written by hand and YAML's floats
+// often spell integers so) whose value is an exact integer. The digits are
+// checked, not a double, so "2147483647.0000001" is no integer. kTooLarge:
+// an integer beyond +-1e10 (outside any int range), *out unset.
+IntegerText ReadInteger(const std::string& text, long long* out) {
+  std::size_t i = 0;
+  const bool negative = i < text.size() && text[i] == '-';
+  if (i < text.size() && (text[i] == '-' || text[i] == '+')) ++i;
+  std::string digits;      // the significand's digits, the point removed
+  long long exponent = 0;  // value = digits * 10^exponent
+  const auto digit = [&text](std::size_t at) {
+    return at < text.size() && std::isdigit(static_cast<unsigned char>(text[at]));
+  };
+  for (; digit(i); ++i) digits += text[i];
+  if (i < text.size() && text[i] == '.') {
+    for (++i; digit(i); ++i, --exponent) digits += text[i];
+  }
+  if (digits.empty()) return IntegerText::kNotAnInteger;
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    const bool negative_exponent = i < text.size() && text[i] == '-';
+    if (i < text.size() && (text[i] == '-' || text[i] == '+')) ++i;
+    if (i == text.size()) return IntegerText::kNotAnInteger;
+    long long e = 0;
+    for (; digit(i); ++i)
+      e = std::min(e * 10 + (text[i] - '0'), 1000000000LL);  // saturates: 1e999999999 is too large
+    exponent += negative_exponent ? -e : e;
+  }
+  if (i != text.size()) return IntegerText::kNotAnInteger;
+  // Drop leading zeros, and trailing ones into the exponent.
+  digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size()));
+  while (!digits.empty() && digits.back() == '0') {
+    digits.pop_back();
+    ++exponent;
+  }
+  if (digits.empty()) {  // zero, however written
+    *out = 0;
+    return IntegerText::kInteger;
+  }
+  if (exponent < 0) return IntegerText::kNotAnInteger;
+  if (static_cast<long long>(digits.size()) + exponent > 10) return IntegerText::kTooLarge;
+  long long v = 0;
+  for (char c : digits) v = v * 10 + (c - '0');
+  for (long long k = 0; k < exponent; ++k) v *= 10;
+  *out = negative ? -v : v;
+  return IntegerText::kInteger;
 }
 }  // namespace
 
@@ -69,18 +138,22 @@ void ParamSet::Add(const std::string& name, double* field, const std::string& do
 }
 
 void ParamSet::Add(const std::string& name, int* field, const std::string& doc, Range range) {
+  const IntegerRange integers = IntegersIn(range);
   Entry e;
-  e.info = {name, "int", std::to_string(*field), range.ToString(), doc};
+  e.info = {name, "int", std::to_string(*field), integers.ToString(), doc};
   e.get = [field] { return std::to_string(*field); };
-  e.validate = [where = Where(name), field, range] {
-    if (!range.Contains(*field))
-      throw ParamError(where(std::to_string(*field)) + ": must be in " + range.ToString());
+  e.validate = [where = Where(name), field, integers] {
+    if (!integers.Contains(*field))
+      throw ParamError(where(std::to_string(*field)) + ": must be in " + integers.ToString());
   };
-  e.set = [where = Where(name), field, range](const std::string& text) {
-    int v;
-    if (!ParseInt(text, &v)) throw ParamError(where(text) + ": not an integer");
-    if (!range.Contains(v)) throw ParamError(where(text) + ": must be in " + range.ToString());
-    *field = v;
+  e.set = [where = Where(name), field, integers](const std::string& text) {
+    long long v = 0;
+    const IntegerText read = ReadInteger(text, &v);
+    if (read == IntegerText::kNotAnInteger)
+      throw ParamError(where(text) + ": must be an integer in " + integers.ToString());
+    if (read == IntegerText::kTooLarge || !integers.Contains(v))
+      throw ParamError(where(text) + ": must be in " + integers.ToString());
+    *field = static_cast<int>(v);
   };
   entries_.push_back(std::move(e));
 }

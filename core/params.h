@@ -55,6 +55,9 @@ class ParamSet {
   explicit ParamSet(std::string owner) : owner_(std::move(owner)) {}
 
   void Add(const std::string& name, double* field, const std::string& doc, Range range);
+  // An int field allows the integers of range, cut to the int type, and
+  // lists them so ("[1, 2147483647]"); its text may be any decimal spelling
+  // of an exact integer ("1e7", "2.5e3").
   void Add(const std::string& name, int* field, const std::string& doc, Range range);
   void Add(const std::string& name, bool* field, const std::string& doc);
   void Add(const std::string& name, std::string* field, const std::string& doc,

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <string>
+#include <vector>
 
 namespace icp {
 namespace {
@@ -66,7 +68,7 @@ TEST(ParamsTest, RejectsBadInputWithFieldValueAndRule) {
   EXPECT_EQ(message({{"ratio", "1"}}), "example.ratio = 1: must be in [0, 1)");
   EXPECT_EQ(message({{"ratio", "nan"}}), "example.ratio = nan: not a number");
   EXPECT_EQ(message({{"ratio", "0.1x"}}), "example.ratio = 0.1x: not a number");
-  EXPECT_EQ(message({{"slices", "2.5"}}), "example.slices = 2.5: not an integer");
+  EXPECT_EQ(message({{"slices", "2.5"}}), "example.slices = 2.5: must be an integer in [1, 1000]");
   EXPECT_EQ(message({{"slices", "0"}}), "example.slices = 0: must be in [1, 1000]");
   // "no" is not read as true (a habit of lenient parsers, see STYLE.md).
   EXPECT_EQ(message({{"verbose", "no"}}), "example.verbose = no: must be true or false");
@@ -87,6 +89,76 @@ TEST(ParamsTest, ValuesRoundTrip) {
   auto q = ParseParams<ExampleParams>("example", values);
   EXPECT_EQ(q.ratio, p.ratio);
   EXPECT_EQ(q.slices, p.slices);
+}
+
+// Integer parameters: ranges print as the integers they allow (an open end
+// or an unbounded one resolved), exact integers written with an exponent
+// (YAML's and hand-written specs' 1e7) are read, and every rejection gives
+// the range.
+struct CountParams {
+  int count = 5;
+  int positive = 1;
+  int big = 10;
+};
+void Describe(CountParams& p, ParamSet& set) {
+  set.Add("count", &p.count, "at least 0", Range::AtLeast(0));
+  set.Add("positive", &p.positive, "above 0", Range::Positive(1e7));
+  set.Add("big", &p.big, "up to 1e7", Range::Closed(1, 1e7));
+}
+
+std::string CountMessage(const std::string& key, const std::string& value) {
+  try {
+    ParseParams<CountParams>("count", {{key, value}});
+  } catch (const ParamError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(ParamsTest, IntegerRangesPrintAsIntegers) {
+  const std::vector<ParamInfo> info = DefaultParams<CountParams>("count");
+  EXPECT_EQ(info[0].range, "[0, 2147483647]");
+  EXPECT_EQ(info[1].range, "[1, 10000000]");
+  EXPECT_EQ(info[2].range, "[1, 10000000]");
+}
+
+TEST(ParamsTest, IntegersWithAnExponentAreReadWhenExact) {
+  const auto p = ParseParams<CountParams>(
+      "count", {{"count", "1e7"}, {"positive", "2.5e3"}, {"big", "+10000000.0"}});
+  EXPECT_EQ(p.count, 10000000);
+  EXPECT_EQ(p.positive, 2500);
+  EXPECT_EQ(p.big, 10000000);
+  // One canonical spelling: 1e7 and 10000000 are one run.
+  EXPECT_EQ(ResolveParams<CountParams>("count", {{"count", "1e7"}}).at("count"), "10000000");
+  EXPECT_EQ(ParseParams<CountParams>("count", {{"count", "2147483647"}}).count, 2147483647);
+  EXPECT_EQ(ParseParams<CountParams>("count", {{"count", "00"}}).count, 0);
+}
+
+TEST(ParamsTest, IntegerRejectionsSayWhyAndGiveTheRange) {
+  EXPECT_EQ(CountMessage("count", "1.5"),
+            "count.count = 1.5: must be an integer in [0, 2147483647]");
+  EXPECT_EQ(CountMessage("count", "1e-1"),
+            "count.count = 1e-1: must be an integer in [0, 2147483647]");
+  EXPECT_EQ(CountMessage("count", "+oo"),
+            "count.count = +oo: must be an integer in [0, 2147483647]");
+  EXPECT_EQ(CountMessage("count", "inf"),
+            "count.count = inf: must be an integer in [0, 2147483647]");
+  EXPECT_EQ(CountMessage("count", "0x10"),
+            "count.count = 0x10: must be an integer in [0, 2147483647]");
+  EXPECT_EQ(CountMessage("count", " 5"), "count.count =  5: must be an integer in [0, 2147483647]");
+  EXPECT_EQ(CountMessage("count", ""), "count.count = : must be an integer in [0, 2147483647]");
+  // Integers out of range, inside the int type or beyond it, are out of range.
+  EXPECT_EQ(CountMessage("count", "-1"), "count.count = -1: must be in [0, 2147483647]");
+  EXPECT_EQ(CountMessage("count", "2147483648"),
+            "count.count = 2147483648: must be in [0, 2147483647]");
+  EXPECT_EQ(CountMessage("count", "1e300"), "count.count = 1e300: must be in [0, 2147483647]");
+  EXPECT_EQ(CountMessage("count", "99999999999999999999999"),
+            "count.count = 99999999999999999999999: must be in [0, 2147483647]");
+  EXPECT_EQ(CountMessage("positive", "0"), "count.positive = 0: must be in [1, 10000000]");
+  EXPECT_EQ(CountMessage("big", "1.0000001e7"),
+            "count.big = 1.0000001e7: must be in [1, 10000000]");
+  EXPECT_EQ(CountMessage("big", "10000000.5"),
+            "count.big = 10000000.5: must be an integer in [1, 10000000]");
 }
 
 TEST(ParamsTest, FormatDoubleIsShortestRoundTrip) {

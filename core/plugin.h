@@ -30,8 +30,10 @@ struct ProblemInfo;
 class PluginRegistrar {
  public:
   // Adds to the registry. Returns false, and the load fails with the reason
-  // (a name already taken, a missing name or factory), when it cannot; the
-  // entry point may stop there or go on, the load fails either way.
+  // (a name already taken, a missing name or factory, a name other than
+  // lower-case letters, digits, '-' and '_' starting with a letter or digit,
+  // at most 64 characters), when it cannot; the entry point may stop there
+  // or go on, the load fails either way.
   virtual bool AddAlgorithm(AlgorithmInfo info) = 0;
   virtual bool AddProblem(ProblemInfo info) = 0;
   // Why the entry point is about to return nonzero, for the error message.

@@ -22,16 +22,20 @@ inline bool IsEnvironmentErrno(int e) {
          e == EROFS || e == EAGAIN || e == ENOMEM || e == EIO;
 }
 
-// What the user can do about errno value e.
-inline std::string EnvironmentAdvice(int e) {
+// How `run` and `plot` write elsewhere; merge and paper have their own.
+inline constexpr char kChooseAnotherOut[] = "choose another --out";
+
+// What the user can do about errno value e; `elsewhere` says how the
+// command writes its output elsewhere.
+inline std::string EnvironmentAdvice(int e, const std::string& elsewhere = kChooseAnotherOut) {
   switch (e) {
     case ENOSPC:
-    case EDQUOT: return "free disk space (or choose another --out) and rerun";
+    case EDQUOT: return "free disk space (or " + elsewhere + ") and rerun";
     case EMFILE:
     case ENFILE: return "raise the descriptor limit (ulimit -n) or reduce --jobs";
     case EACCES:
     case EPERM:
-    case EROFS: return "check the permissions of the output directory (or choose another --out)";
+    case EROFS: return "check the permissions of the output directory (or " + elsewhere + ")";
     case EAGAIN:
     case ENOMEM: return "reduce --jobs or free memory / raise the process limit (ulimit -u)";
     default: return "check the disk and the file system";
@@ -40,9 +44,11 @@ inline std::string EnvironmentAdvice(int e) {
 
 // Throws EnvironmentError for an environment errno, std::runtime_error
 // otherwise; the message is "what: strerror(e) (advice)".
-[[noreturn]] inline void ThrowErrno(const std::string& what, int e) {
+[[noreturn]] inline void ThrowErrno(const std::string& what, int e,
+                                    const std::string& elsewhere = kChooseAnotherOut) {
   const std::string message = what + ": " + std::strerror(e);
-  if (IsEnvironmentErrno(e)) throw EnvironmentError(message + " (" + EnvironmentAdvice(e) + ")");
+  if (IsEnvironmentErrno(e))
+    throw EnvironmentError(message + " (" + EnvironmentAdvice(e, elsewhere) + ")");
   throw std::runtime_error(message);
 }
 

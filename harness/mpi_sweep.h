@@ -29,9 +29,15 @@
 namespace icp {
 
 struct MpiSweepOptions {
-  double rank_timeout_s = 60;
+  double rank_timeout_s = 60;  // in [kMinRankTimeoutS, kMaxRankTimeoutS]
   double heartbeat_s = 1;
 };
+
+// The range of --rank-timeout, checked where the option is read: at least
+// two heartbeats (a shorter silence loses busy ranks by mistake), at most a
+// day (a dead rank's runs wait that long for another rank).
+constexpr double kMinRankTimeoutS = 2;
+constexpr double kMaxRankTimeoutS = 86400;
 
 struct MpiSweepResult {
   bool dispatcher = false;  // rank 0: summary is the sweep's

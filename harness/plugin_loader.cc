@@ -2,8 +2,10 @@
 
 #include <dlfcn.h>
 
+#include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <set>
 #include <string>
 #include <utility>
 
@@ -23,6 +25,44 @@ std::string Missing(const Info& info) {
   if (info.params == nullptr) return "no parameter list (params)";
   if (info.resolve == nullptr) return "no parameter resolver (resolve)";
   return "";
+}
+
+// Names a plugin may register, as the tree's are ("hc4", "3b-bc4",
+// "car-track"): they are spec keys, command-line values, parts of a run's
+// key and of the one-line progress, so no upper case, separators or control
+// characters; not starting with '-' (read as an option).
+constexpr std::size_t kMaxNameLength = 64;
+constexpr char kNamingRule[] =
+    "a name is lower-case letters, digits, '-' and '_', starting with a letter or digit, at most "
+    "64 characters";
+
+bool IsValidName(const std::string& name) {
+  if (name.empty() || name.size() > kMaxNameLength) return false;
+  const auto allowed = [](char c, bool first) {
+    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || (!first && (c == '-' || c == '_'));
+  };
+  for (std::size_t i = 0; i < name.size(); ++i)
+    if (!allowed(name[i], i == 0)) return false;
+  return true;
+}
+
+// The name as a message shows it: quoted, control characters escaped (a
+// newline would break the message's line).
+std::string Quoted(const std::string& name) {
+  std::string out = "'";
+  for (char c : name) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      out += "\\n";
+    } else if (byte < 0x20 || byte == 0x7f) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02x", byte);
+      out += hex;
+    } else {
+      out += c;
+    }
+  }
+  return out + "'";
 }
 
 // Forwards to the registries. Failures are kept, not thrown: an exception
@@ -46,7 +86,9 @@ class Registrar final : public PluginRegistrar {
   template <class Info>
   bool Add(const std::string& kind, Info info, void (*add)(Info)) {
     const std::string missing = Missing(info);
-    if (!missing.empty()) return Fail(kind + " '" + info.name + "' has " + missing);
+    if (!missing.empty()) return Fail(kind + " " + Quoted(info.name) + " has " + missing);
+    if (!IsValidName(info.name))
+      return Fail(kind + " " + Quoted(info.name) + " is not a valid name: " + kNamingRule);
     try {
       add(std::move(info));  // throws std::invalid_argument for a taken name
       return true;
@@ -64,17 +106,38 @@ class Registrar final : public PluginRegistrar {
   std::string error_;
 };
 
+std::string FileKind(std::filesystem::file_type type) {
+  switch (type) {
+    case std::filesystem::file_type::directory:
+      return "a directory";
+    case std::filesystem::file_type::fifo:
+      return "a FIFO";
+    case std::filesystem::file_type::socket:
+      return "a socket";
+    case std::filesystem::file_type::character:
+      return "a character device";
+    case std::filesystem::file_type::block:
+      return "a block device";
+    default:
+      return "not a file a library can be loaded from";
+  }
+}
+
 }  // namespace
 
 void LoadPlugin(const std::string& path) {
   const auto fail = [&path](const std::string& cause) {
     throw PluginError("plugin " + path + ": " + cause);
   };
+  namespace fs = std::filesystem;
   std::error_code error;
-  if (!std::filesystem::exists(path, error)) fail("no such file");
+  const fs::file_status status = fs::status(path, error);  // follows symbolic links
+  if (!fs::exists(status)) fail("no such file");
+  // dlopen would block on a FIFO (reading it) and fail later on others.
+  if (!fs::is_regular_file(status)) fail("not a regular file (" + FileKind(status.type()) + ")");
   // dlopen searches the library path for a name without a slash; a path is
   // a path.
-  const std::string absolute = std::filesystem::absolute(path).string();
+  const std::string absolute = fs::absolute(path).string();
   // RTLD_NOW: a symbol the executable lacks fails the load here, by name,
   // rather than the first run that calls it. Never closed (see the header).
   void* handle = dlopen(absolute.c_str(), RTLD_NOW | RTLD_LOCAL);
@@ -85,6 +148,10 @@ void LoadPlugin(const std::string& path) {
               ? " (the icpbench executable lacks it: build the plugin against this icpbench)"
               : ""));
   }
+  // The same file given again (by any path: dlopen knows it by device and
+  // inode and returns the same handle): its names are registered already.
+  static std::set<void*> registered;
+  if (registered.count(handle) != 0) return;
   using EntryPoint = int (*)(PluginRegistrar*);
   const auto entry = reinterpret_cast<EntryPoint>(dlsym(handle, ICPBENCH_PLUGIN_ENTRY_POINT));
   if (entry == nullptr)
@@ -92,9 +159,9 @@ void LoadPlugin(const std::string& path) {
          "(icp::PluginRegistrar*) (core/plugin.h)");
 
   Registrar registrar;
-  int status = 0;
+  int returned = 0;
   try {
-    status = entry(&registrar);
+    returned = entry(&registrar);
   } catch (const std::exception& e) {
     fail(ICPBENCH_PLUGIN_ENTRY_POINT " threw: " + std::string(e.what()));
   } catch (...) {
@@ -102,9 +169,10 @@ void LoadPlugin(const std::string& path) {
   }
   // A registration that failed is the cause, whatever the entry point returned.
   if (registrar.failed()) fail(registrar.error());
-  if (status != 0)
-    fail(ICPBENCH_PLUGIN_ENTRY_POINT " failed (returned " + std::to_string(status) + ")" +
+  if (returned != 0)
+    fail(ICPBENCH_PLUGIN_ENTRY_POINT " failed (returned " + std::to_string(returned) + ")" +
          (registrar.error().empty() ? "" : ": " + registrar.error()));
+  registered.insert(handle);
 }
 
 }  // namespace icp

@@ -16,10 +16,12 @@ class PluginError : public std::invalid_argument {
 };
 
 // Loads the library at path and runs its entry point; throws PluginError if
-// the file is missing or not loadable, has no entry point, the entry point
-// fails or throws, or it registers a name that is taken. The library stays
-// loaded for the life of the process (the registries point into it), and so
-// is inherited by the forked workers of `icpbench run`.
+// the file is missing, not a regular file or not loadable, has no entry
+// point, the entry point fails or throws, or it registers a name that is
+// taken or breaks the naming rule (core/plugin.h). A library already loaded
+// (by any path) is not loaded again. The library stays loaded for the life
+// of the process (the registries point into it), and so is inherited by the
+// forked workers of `icpbench run`.
 void LoadPlugin(const std::string& path);
 
 }  // namespace icp

@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -235,6 +236,60 @@ TEST(RunnerProcessTest, AnInfiniteOrHugeTimeoutMeansNoLimit) {
                              .spec.timeout_s));
 }
 
+// A line's value from a /proc file of pid ("Threads:" of status, "Max cpu
+// time" of limits), the text after the key; "" when absent.
+std::string ProcField(pid_t pid, const std::string& file, const std::string& key) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/" + file);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(key, 0) == 0) return line.substr(key.size());
+  return "";
+}
+
+// Time limits are wall-clock whatever a run's threads: a run hung busy on
+// more threads than cores (fault mode spin) uses CPU time faster than the
+// clock. Its CPU-time limit, which counts every thread, must not come
+// before its wall-clock limits (the parent's kill at timeout_s + the grace,
+// its own alarm a second later) even were every core its own; and the run
+// is stored as a timeout by those. (The limit is read, not raced: on a
+// loaded machine the threads may not get the cores to reach it.)
+TEST(RunnerProcessTest, AMultiThreadedRunIsStoppedByTheWallClock) {
+  const std::string dir = FreshDir("spin");
+  int result_fd = -1;
+  const pid_t sweep = StartSweep(R"(
+timeout_s: 1
+algorithms:
+  - {name: fault, params: {mode: spin}}
+problems: [chain]
+)",
+                                 dir, 1, 3, &result_fd);  // killed at 4 s, alarm at 5 s
+  ASSERT_GT(sweep, 0);
+  std::vector<pid_t> workers;
+  ASSERT_TRUE(WaitFor([&] { return (workers = LiveChildrenOf(sweep)).size() == 1; }, 5));
+  // Spinning: past its set-up, limits set.
+  EXPECT_TRUE(WaitFor(
+      [&] { return std::atoi(ProcField(workers[0], "status", "Threads:").c_str()) > 1; }, 5));
+  std::istringstream limit(ProcField(workers[0], "limits", "Max cpu time"));
+  std::string soft;
+  limit >> soft;
+  if (soft != "unlimited") {
+    EXPECT_GE(std::atof(soft.c_str()), 5.0 * std::thread::hardware_concurrency())
+        << "a CPU-time limit of " << soft << " s comes before the wall-clock limit of 5 s on "
+        << std::thread::hardware_concurrency() << " cores";
+  }
+  const std::string result = ReadAll(result_fd);
+  waitpid(sweep, nullptr, 0);
+  EXPECT_EQ(result, "0 0 1");  // not interrupted, one run finished
+  ResultsStore store(StorePath(dir));
+  const std::vector<RunRecord> runs = store.LoadRuns(false);
+  ASSERT_EQ(runs.size(), 1u);
+  EXPECT_EQ(runs[0].status, RunStatus::kTimeout) << runs[0].reason;
+  // The parent's kill, or (a parent starved past it) the worker's own alarm.
+  EXPECT_TRUE(runs[0].reason.rfind("killed after 4 s", 0) == 0 ||
+              runs[0].reason.find("wall-clock") != std::string::npos)
+      << runs[0].reason;
+  EXPECT_GE(runs[0].wall_time_s, 4) << runs[0].reason;
+}
+
 TEST(RunnerProcessTest, AMatrixAboveTheLimitIsRejectedBeforeItIsExpanded) {
   const auto t0 = Clock::now();
   try {
@@ -305,6 +360,26 @@ TEST(RunnerProcessTest, CliMpiWithOneRankOrWithoutMpiIsAUsageError) {
   const testing::Result r = Icpbench("run " + spec + " --mpi --out " + dir);
   EXPECT_EQ(r.exit_code, 2) << r.out;
   EXPECT_NE(r.out.find(MpiBuilt() ? "needs at least 2 ranks" : "built without MPI"), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(StorePath(dir)));
+}
+
+// --rank-timeout is checked when the command line is read (no mpirun
+// needed): a finite number of seconds in its range, and only with --mpi.
+TEST(RunnerProcessTest, CliRankTimeoutOutsideItsRangeOrWithoutMpiIsAUsageError) {
+  const std::string spec =
+      testing::WriteFile("process_quick.yaml", "algorithms: [hc4]\nproblems: [chain]\n");
+  const std::string dir = FreshDir("cli_rank_timeout");
+  for (const std::string value : {"nan", "inf", "-inf", "0", "1", "-5", "86401", "1e300", "x"}) {
+    const testing::Result r =
+        Icpbench("run " + spec + " --mpi --rank-timeout " + value + " --out " + dir);
+    EXPECT_EQ(r.exit_code, 2) << value << ": " << r.out;
+    EXPECT_NE(r.out.find("--rank-timeout"), std::string::npos) << value << ": " << r.out;
+    EXPECT_NE(r.out.find("[2, 86400]"), std::string::npos) << value << ": " << r.out;
+    EXPECT_LT(r.out.size(), 300u) << value << ": " << r.out;  // no number in 300 digits
+  }
+  const testing::Result r = Icpbench("run " + spec + " --rank-timeout 60 --out " + dir);
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find("--rank-timeout requires --mpi"), std::string::npos) << r.out;
   EXPECT_FALSE(std::filesystem::exists(StorePath(dir)));
 }
 

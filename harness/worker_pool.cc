@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -42,11 +43,29 @@ bool WriteAll(int fd, const std::string& data) {
   return true;
 }
 
+// The most threads of a worker that can run at once: every processor the
+// system has (a run may widen the affinity mask it inherits).
+unsigned MaxParallelism() {
+  const long configured = sysconf(_SC_NPROCESSORS_CONF);
+  return std::max({1u, std::thread::hardware_concurrency(),
+                   configured > 0 ? static_cast<unsigned>(configured) : 1u});
+}
+
+// A worker's CPU-time limit for a wall-clock limit of wall_s: RLIMIT_CPU
+// counts the time of every thread, which grows up to MaxParallelism() times
+// as fast as the clock, so the limit is scaled by it and cannot fire before
+// the wall-clock alarm, whatever the run's threads. It stays as a last
+// backstop (it ends a busy worker that cancelled the alarm).
+rlim_t CpuLimitSeconds(unsigned wall_s) {
+  return static_cast<rlim_t>(wall_s) * MaxParallelism() + 1;
+}
+
 // In the forked worker: die with the parent whatever kills it (a parent that
 // died before prctl is caught by the getppid check), keep the terminal's
 // Ctrl-C for the parent (it stops the workers itself), and enforce a hard
-// limit of its own in case the parent cannot kill it.
-void SetUpWorker(pid_t parent, double hard_limit_s, double memory_limit_mb) {
+// limit of its own in case the parent cannot kill it: an alarm at
+// alarm_s, wall-clock, and the CPU-time limit cpu_s (see CpuLimitSeconds).
+void SetUpWorker(pid_t parent, unsigned alarm_s, rlim_t cpu_s, double memory_limit_mb) {
   prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (getppid() != parent) _exit(4);
   setpgid(0, 0);
@@ -55,10 +74,9 @@ void SetUpWorker(pid_t parent, double hard_limit_s, double memory_limit_mb) {
   sigset_t none;
   sigemptyset(&none);
   sigprocmask(SIG_SETMASK, &none, nullptr);
-  if (hard_limit_s > 0 && hard_limit_s < kNoLimitAbove) {
-    const auto s = static_cast<unsigned>(std::ceil(hard_limit_s));
-    alarm(s);
-    rlimit cpu{s, s + 1};
+  if (alarm_s > 0) {
+    alarm(alarm_s);
+    rlimit cpu{cpu_s, cpu_s + 1};
     setrlimit(RLIMIT_CPU, &cpu);
   }
 #if !defined(ICPBENCH_SANITIZED)
@@ -120,8 +138,12 @@ bool WorkerPool::Start(const PlannedRun& run) {
                                   ? run.spec.timeout_s + kill_grace_s_
                                   : 0;
   // The worker's own limit comes after the parent's kill, which is the
-  // normal way a hung run ends.
+  // normal way a hung run ends. Computed before fork: the child only sets it.
   const double hard_limit_s = kill_after_s > 0 ? kill_after_s + 1 : 0;
+  const unsigned alarm_s = hard_limit_s > 0 && hard_limit_s < kNoLimitAbove
+                               ? static_cast<unsigned>(std::ceil(hard_limit_s))
+                               : 0;
+  const rlim_t cpu_limit_s = alarm_s > 0 ? CpuLimitSeconds(alarm_s) : RLIM_INFINITY;
   int fds[2];
   if (pipe(fds) != 0) {
     start_errno_ = errno;
@@ -140,7 +162,7 @@ bool WorkerPool::Start(const PlannedRun& run) {
     return false;
   }
   if (pid == 0) {
-    SetUpWorker(parent, hard_limit_s, run.spec.memory_limit_mb);
+    SetUpWorker(parent, alarm_s, cpu_limit_s, run.spec.memory_limit_mb);
     close(fds[0]);
     for (int fd : close_in_workers_) close(fd);
     for (const Worker& w : workers_) close(w.fd);
@@ -153,6 +175,7 @@ bool WorkerPool::Start(const PlannedRun& run) {
   w.started = Clock::now();
   w.kill_after_s = kill_after_s;
   w.hard_limit_s = hard_limit_s;
+  w.cpu_limit_s = alarm_s > 0 ? static_cast<double>(cpu_limit_s) : 0;
   w.run = run;
   w.step_file = step_file;
   workers_.push_back(std::move(w));
@@ -222,11 +245,14 @@ FinishedRun WorkerPool::Finish(Worker& w, int wait_status) {
     r.status = RunStatus::kTimeout;
     r.reason = "killed after " + FormatDouble(w.kill_after_s) + " s (timeout " +
                FormatDouble(w.run.spec.timeout_s) + " s)";
-  } else if (WIFSIGNALED(wait_status) &&
-             (WTERMSIG(wait_status) == SIGALRM || WTERMSIG(wait_status) == SIGXCPU)) {
+  } else if (WIFSIGNALED(wait_status) && WTERMSIG(wait_status) == SIGALRM) {
     r.status = RunStatus::kTimeout;
-    r.reason = "stopped by its own hard limit of " + FormatDouble(w.hard_limit_s) + " s (timeout " +
-               FormatDouble(w.run.spec.timeout_s) + " s)";
+    r.reason = "stopped by its own wall-clock limit of " + FormatDouble(w.hard_limit_s) +
+               " s (timeout " + FormatDouble(w.run.spec.timeout_s) + " s)";
+  } else if (WIFSIGNALED(wait_status) && WTERMSIG(wait_status) == SIGXCPU) {
+    r.status = RunStatus::kTimeout;
+    r.reason = "stopped by its own CPU-time limit of " + FormatDouble(w.cpu_limit_s) +
+               " s, all threads (timeout " + FormatDouble(w.run.spec.timeout_s) + " s)";
   } else if (WIFSIGNALED(wait_status)) {
     const int sig = WTERMSIG(wait_status);
     r.status = RunStatus::kFailed;

@@ -64,7 +64,8 @@ class WorkerPool {
     std::string output;
     std::chrono::steady_clock::time_point started;
     double kill_after_s = 0;  // 0: never
-    double hard_limit_s = 0;  // the worker's own limit (alarm, CPU); 0: none
+    double hard_limit_s = 0;  // the worker's own wall-clock limit (alarm); 0: none
+    double cpu_limit_s = 0;   // its CPU-time limit, all threads (RLIMIT_CPU); 0: none
     bool killed = false;
     PlannedRun run;
     std::string step_file;

@@ -5,6 +5,7 @@
 
 #include "experiments/registry.h"
 #include "harness/environment_error.h"
+#include "harness/output_directory.h"
 #include "harness/results_store.h"
 #include "paper/latex.h"
 #include "paper/sections.h"
@@ -18,11 +19,11 @@ namespace {
 
 constexpr char kName[] = "icpbench";
 
-void WriteText(const std::string& path, const std::string& text) {
+void WriteText(const std::string& path, const std::string& text, const std::string& elsewhere) {
   std::ofstream out(path);
   out << text;
   out.close();
-  if (!out) ThrowErrno("cannot write " + path, errno);
+  if (!out) ThrowErrno("cannot write " + path, errno, elsewhere);
 }
 
 }  // namespace
@@ -49,16 +50,23 @@ PaperOutput BuildPaper(const std::string& dir) {
   const std::vector<RunRecord> runs = LoadRunsFromDirectory(dir);  // no store: exit 2
   RequireLatex();                                                  // before drawing anything
   const std::string paper_dir = dir + "/paper";
+  const std::string elsewhere = PaperElsewhere(dir);
   std::error_code error;
   std::filesystem::create_directories(paper_dir + "/generated", error);
-  if (error) ThrowErrno("cannot create " + paper_dir, error.value());
+  if (error) ThrowErrno("cannot create " + paper_dir, error.value(), elsewhere);
+  CheckWritableDirectory(paper_dir, elsewhere);  // one left by another user
+  CheckWritableDirectory(paper_dir + "/generated", elsewhere);
   // The figures as `plot` draws them (every paper's, then the generic ones).
   const PlotOutput plots = PlotRuns(runs, paper_dir + "/figures", PaperFigures);
   for (const auto& [path, text] :
        GeneratePaper(runs, StorePath(dir), paper_dir + "/figures", plots.messages).files)
-    WriteText(paper_dir + "/" + path, text);
+    WriteText(paper_dir + "/" + path, text, elsewhere);
   RunLatexmk(paper_dir, kName);
   return {paper_dir + "/" + kName + ".pdf", plots.messages};
+}
+
+std::string PaperElsewhere(const std::string& dir) {
+  return "copy " + StorePath(dir) + " into a directory you may write and run paper there";
 }
 
 }  // namespace icp

@@ -40,9 +40,14 @@ struct PaperOutput {
 // Loads the store in dir, draws the figures into DIR/paper/figures, writes
 // the sources into DIR/paper and compiles them. Throws std::runtime_error
 // when dir holds no store (LoadRunsFromDirectory), EnvironmentError when
-// latexmk, pdflatex or a LaTeX package is missing, std::logic_error when
+// latexmk, pdflatex or a LaTeX package is missing or DIR/paper cannot be
+// written (its advice ends with PaperElsewhere), std::logic_error when
 // LaTeX fails on the generated text (a bug; the message names the log).
 PaperOutput BuildPaper(const std::string& dir);
+
+// How to get the paper of the store in dir when dir cannot be written
+// (paper has no --out: it writes DIR/paper).
+std::string PaperElsewhere(const std::string& dir);
 
 }  // namespace icp
 

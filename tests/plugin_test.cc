@@ -2,12 +2,16 @@
 // (examples/plugin/), installed and built by tests/plugin_example.sh, which
 // ctest runs first, and the fixture plugins of tests/plugin_fixtures/.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tests/cli_helpers.h"
@@ -129,9 +133,79 @@ TEST(PluginTest, ANameTheTreeHasIsAnError) {
                   "problem 'chain' is already registered");
 }
 
-TEST(PluginTest, RegisteringANameTwiceIsAnError) {
-  ExpectLoadError("--plugin " + kExample + " --plugin " + kExample, kExample,
-                  "algorithm 'hc4-twice' is already registered");
+// The same library given twice (or through another path to the same file)
+// is loaded once: its names are not "already registered" by itself.
+TEST(PluginTest, ALibraryGivenTwiceIsLoadedOnce) {
+  const std::string link = ::testing::TempDir() + "plugin_link.so";
+  std::filesystem::remove(link);
+  std::filesystem::create_symlink(kExample, link);
+  Result r = Icpbench("--plugin " + kExample + " list algorithms --format json --plugin " +
+                      kExample + " --plugin " + link);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  int count = 0;
+  for (const nlohmann::json& entry : nlohmann::json::parse(r.out))
+    count += entry["name"] == "hc4-twice";
+  EXPECT_EQ(count, 1) << r.out;
+  std::filesystem::remove(link);
+}
+
+// A FIFO or a directory is refused before dlopen, which would wait on a
+// FIFO forever (timeout stops the test's icpbench if it does).
+TEST(PluginTest, APathThatIsNotARegularFileIsAnError) {
+  const std::string fifo = ::testing::TempDir() + "plugin_fifo.so";
+  std::filesystem::remove(fifo);
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  const std::string dir = ::testing::TempDir() + "plugin_dir.so";
+  std::filesystem::create_directories(dir);
+  for (const auto& [path, kind] : {std::pair{fifo, "a FIFO"}, std::pair{dir, "a directory"}}) {
+    Result r = icp::testing::RunCommand("timeout 20 " ICPBENCH_BINARY,
+                                        "--plugin " + path + " list algorithms");
+    EXPECT_EQ(r.exit_code, 2) << r.out;
+    EXPECT_NE(r.out.find("icpbench: plugin " + path + ": not a regular file (" + kind + ")"),
+              std::string::npos)
+        << r.out;
+  }
+  std::filesystem::remove(fifo);
+}
+
+// Names a plugin registers: lower-case letters, digits, '-' and '_' (as the
+// tree's), so that keys, specs and the one-line progress stay readable.
+TEST(PluginTest, ANameOutsideTheNamingRuleIsAnError) {
+  const std::string rule = "a name is lower-case letters, digits, '-' and '_'";
+  // The name, and as the message shows it (a control character escaped).
+  const std::pair<std::string, std::string> cases[] = {
+      {"Chain", "'Chain'"},   {"a|b", "'a|b'"},
+      {"a{b}", "'a{b}'"},     {"a=b", "'a=b'"},
+      {"a\nb", "'a\\nb'"},    {"a b", "'a b'"},
+      {"-chain", "'-chain'"}, {std::string(65, 'a'), "'" + std::string(65, 'a') + "'"},
+  };
+  for (const auto& [name, shown] : cases) {
+    setenv("ICPBENCH_TEST_PLUGIN_NAME", name.c_str(), 1);  // a newline stays one
+    Result r = Icpbench("--plugin " PLUGIN_NAMED_PROBLEM " list problems");
+    EXPECT_EQ(r.exit_code, 2) << name << ": " << r.out;
+    EXPECT_NE(r.out.find("icpbench: plugin " PLUGIN_NAMED_PROBLEM ": problem " + shown +
+                         " is not a valid name: " + rule),
+              std::string::npos)
+        << name << ": " << r.out;
+  }
+  for (const std::string good : {"chain_2", "3b-chain"}) {
+    setenv("ICPBENCH_TEST_PLUGIN_NAME", good.c_str(), 1);
+    Result r = Icpbench("--plugin " PLUGIN_NAMED_PROBLEM " list problems");
+    EXPECT_EQ(r.exit_code, 0) << good << ": " << r.out;
+    EXPECT_NE(r.out.find(good), std::string::npos) << r.out;
+  }
+  unsetenv("ICPBENCH_TEST_PLUGIN_NAME");
+}
+
+// The rule is the tree's own: every built-in name follows it.
+TEST(PluginTest, TheTreesNamesFollowTheNamingRule) {
+  const std::regex rule("[a-z0-9][a-z0-9_-]{0,63}");
+  for (const std::string what : {"algorithms", "problems"}) {
+    Result r = Icpbench("list " + what + " --format json");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    for (const nlohmann::json& entry : nlohmann::json::parse(r.out))
+      EXPECT_TRUE(std::regex_match(entry["name"].get<std::string>(), rule)) << entry["name"];
+  }
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "algorithms/fault/fault.h"
 
+#include <algorithm>
 #include <csignal>
 #include <cstdlib>
 #include <limits>
@@ -15,12 +16,19 @@ namespace icp {
 
 void Describe(FaultParams& p, ParamSet& set) {
   set.Add("mode", &p.mode, "the fault to inject",
-          {"none", "segfault", "abort", "hang", "throw", "allocate", "garbage", "slow"});
+          {"none", "segfault", "abort", "hang", "spin", "throw", "allocate", "garbage", "slow"});
   set.Add("after_calls", &p.after_calls, "good steps before the fault", Range::AtLeast(0));
   set.Add("slow_ms", &p.slow_ms, "mode slow: milliseconds added to every step", Range::AtLeast(0));
 }
 
 namespace {
+// Busy forever; the process is killed.
+void Spin() {
+  volatile bool stop = false;  // read every time: the loop is not elided
+  while (!stop) {
+  }
+}
+
 class FaultEstimator : public Estimator {
  public:
   explicit FaultEstimator(FaultParams params)
@@ -48,6 +56,11 @@ class FaultEstimator : public Estimator {
     }
     if (params_.mode == "hang") {
       for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
+    }
+    if (params_.mode == "spin") {
+      const unsigned threads = 2 * std::max(1u, std::thread::hardware_concurrency());
+      for (unsigned i = 1; i < threads; ++i) std::thread(Spin).detach();
+      Spin();
     }
     // garbage: a box reaching outside the step's domains.
     StepResult result = hc4_.Step(views, stop);

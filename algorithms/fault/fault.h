@@ -1,9 +1,11 @@
 // A fault-injection plugin for testing the harness, not an algorithm: after
 // `after_calls` good steps (HC4 over the window, carry=first) it crashes,
-// hangs, throws, allocates without bound (64 MiB blocks, each touched once, until std::bad_alloc or 64 GiB) or returns a box that is
-// not inside the step's domains, as `mode` says; `slow` is no fault but
-// HC4 with every step slow_ms longer (a long run, to kill mid-sweep). The harness must record such runs as failed (or timed out)
-// with their reason and carry on.
+// hangs, throws, allocates without bound (64 MiB blocks, each touched once, until std::bad_alloc or
+// 64 GiB) or returns a box that is not inside the step's domains, as `mode` says; `spin` hangs busy
+// on twice as many threads as the machine has cores, ignoring the stop condition (a hung parallel
+// run: its CPU time grows faster than the clock); `slow` is no fault but HC4 with every step
+// slow_ms longer (a long run, to kill mid-sweep). The harness must record such runs as failed (or
+// timed out) with their reason and carry on.
 #ifndef ICPBENCH_ALGORITHMS_FAULT_FAULT_H_
 #define ICPBENCH_ALGORITHMS_FAULT_FAULT_H_
 
@@ -17,7 +19,7 @@
 namespace icp {
 
 struct FaultParams {
-  // none | segfault | abort | hang | throw | allocate | garbage | slow
+  // none | segfault | abort | hang | spin | throw | allocate | garbage | slow
   std::string mode = "segfault";
   // Steps that behave (as HC4) before the fault.
   int after_calls = 0;
