@@ -263,7 +263,7 @@ TEST(BeaconRangesTest, SceneByteOrderMarkSkippedAndQuotedBytesEscaped) {
     }
     return std::string("(no error)");
   };
-  const std::string nul = error(scene + std::string("range,0,1,1,1\0,0.1,0\n", 22));
+  const std::string nul = error(scene + std::string("range,0,1,1,1\0,0.1,0\n", 21));
   EXPECT_NE(nul.find("scene.csv:4: field 5: '1\\x00' is not a finite number"), std::string::npos)
       << nul;
   const std::string kind = error("\x1b[2J,1\n");

@@ -158,7 +158,8 @@ TEST(CarTrackTest, ByteOrderMarkSkippedAndQuotedBytesEscaped) {
   const std::string header =
       "t,odo_left_ticks,odo_right_ticks,gyro_dtheta,gps_x,gps_y,gps_ex,gps_ey\n";
   EXPECT_EQ(ReadLogText("\xEF\xBB\xBF" + header + "0,0,0,0,,,,\n").size(), 1u);
-  const std::string row("0,0,0,1\0x,,,,\n", 17);
+  const char kRow[] = "0,0,0,1\0x,,,,\n";  // a NUL inside the fourth field
+  const std::string row(kRow, sizeof kRow - 1);
   const std::string nul = ErrorOf([&] { ReadLogText(header + row); });
   EXPECT_NE(nul.find("column 4 (gyro_dtheta): '1\\x00x' is not a finite"), std::string::npos)
       << nul;

@@ -180,7 +180,7 @@ TEST(MarinaInputsTest, LogByteOrderMarkSkippedAndQuotedBytesEscaped) {
 TEST(MarinaInputsTest, FrameByteOrderMarkSkippedAndQuotedBytesEscaped) {
   std::istringstream bom("\xEF\xBB\xBForigin_x: 1\norigin_y: 2\npixel_size: 0.5\n");
   EXPECT_EQ(ReadMapFrame(bom, "frame.yaml").origin_x, 1);
-  std::istringstream nul(std::string("origin\0x: 1\n", 13));
+  std::istringstream nul(std::string("origin\0x: 1\n", 12));
   try {
     ReadMapFrame(nul, "frame.yaml");
     ADD_FAILURE() << "no error";
