@@ -106,13 +106,15 @@ cv::Mat Accumulate(const Grid& grid, const SharedContractors& measurements,
     threads = std::min(threads, (budget->available - bytes) / std::max<std::size_t>(bytes, 1));
   WorkCounters total;
   std::atomic<bool> any_stopped = false;
+  // Adds one measurement's cells to `into`; returns its work.
+  auto rasterise = [&](Contractor& measurement, cv::Mat& into) {
+    Raster raster(grid, measurement, stop, into);
+    raster.Mark(0, grid.rows(), 0, grid.cols());
+    if (raster.stopped) any_stopped = true;
+    return raster.work;
+  };
   if (threads <= 1 || measurements.size() <= 1) {
-    for (const std::shared_ptr<Contractor>& m : measurements) {
-      Raster raster(grid, *m, stop, counts);
-      raster.Mark(0, grid.rows(), 0, grid.cols());
-      if (raster.stopped) any_stopped = true;
-      total += raster.work;
-    }
+    for (const std::shared_ptr<Contractor>& m : measurements) total += rasterise(*m, counts);
   } else {
     tbb::enumerable_thread_specific<cv::Mat> partial(
         [&] { return cv::Mat(grid.rows(), grid.cols(), CV_32S, cv::Scalar(0)); });
@@ -122,11 +124,9 @@ cv::Mat Accumulate(const Grid& grid, const SharedContractors& measurements,
                         [&](const tbb::blocked_range<std::size_t>& range) {
                           cv::Mat& own = partial.local();
                           for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                            Raster raster(grid, *measurements[i], stop, own);
-                            raster.Mark(0, grid.rows(), 0, grid.cols());
-                            if (raster.stopped) any_stopped = true;
+                            const WorkCounters work = rasterise(*measurements[i], own);
                             std::lock_guard<std::mutex> lock(work_mutex);
-                            total += raster.work;
+                            total += work;
                           }
                         });
     };
