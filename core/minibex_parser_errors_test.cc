@@ -100,6 +100,9 @@ TEST(MinibexParserTest, RejectsBadInputWithPosition) {
       {"Constraints x = 1; end", 1, 1, "expected 'Variables'"},
       {"Variables x in [0,1]; Constraints x = 1; end\n;;", 2, 2, "after the final 'end'"},
       {"Variables\n\tx in [0,1]\xff; end", 2, 12, "unexpected byte 0xFF"},
+      // Only a byte order mark that starts the text is skipped.
+      {"Variables x\xEF\xBB\xBF in [0,1]; end", 1, 12, "unexpected byte 0xEF"},
+      {"\xEF\xBB\xBF\xEF\xBB\xBFVariables x; end", 1, 1, "unexpected byte 0xEF"},
       {"Variables x in [0,1]; Constraints x = [1, 2; end", 1, 44, "expected ']'"},
       {"Variables x in [0,1]; Constraints x = 2^40000000000; end", 1, 41, "too large"},
   };

@@ -52,6 +52,13 @@ TEST(MinibexParserTest, PaperExample) {
   EXPECT_EQ(Eval(csp, 0, csp.domains()), Interval(-8, 17));
 }
 
+TEST(MinibexParserTest, LeadingUtf8ByteOrderMarkIsSkipped) {
+  ConstraintSystem csp = ParseMinibex("\xEF\xBB\xBFVariables x in [0,2]; Constraints x^2=1; end");
+  ASSERT_EQ(csp.num_variables(), 1);
+  EXPECT_EQ(csp.names(), (std::vector<std::string>{"x"}));
+  EXPECT_EQ(csp.domains()[0], Interval(0, 2));
+}
+
 TEST(MinibexParserTest, DecimalConstantIsEnclosedNotRounded) {
   ConstraintSystem csp = ParseMinibex(R"(
     Constants

@@ -20,6 +20,9 @@ class Tokenizer {
 
   std::vector<Token> Run() {
     std::vector<Token> out;
+    // Editors on Windows start UTF-8 files with a byte order mark; it is not
+    // part of the text (columns still count from the first real character).
+    if (s_.starts_with(kUtf8ByteOrderMark)) i_ = kUtf8ByteOrderMark.size();
     while (i_ < s_.size()) {
       const char c = s_[i_];
       const char next = i_ + 1 < s_.size() ? s_[i_ + 1] : '\0';
@@ -53,6 +56,8 @@ class Tokenizer {
   }
 
  private:
+  static constexpr std::string_view kUtf8ByteOrderMark = "\xEF\xBB\xBF";
+
   bool IsIdentChar(std::size_t k) const {
     return k < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[k])) || s_[k] == '_');
   }
