@@ -1,0 +1,112 @@
+"""icpbench from Python: the same registries, solvers, sweeps and results store
+as the command line (docs/python.md).
+
+    import icpbench
+    icpbench.solve("examples/paper_example.bxx", algorithm="hc4")["box"]
+    for step in icpbench.problem("car-track", seed=1, steps=5): ...
+    icpbench.run("specs/tour.yaml", out="results/tour", jobs=2)
+    icpbench.open("results/tour").runs()            # a pandas DataFrame
+
+Bad input raises ValueError with the command line's message; the environment
+(disk, processes) raises OSError.
+"""
+
+import json
+import math
+import os
+import tempfile
+
+import numpy as np
+
+from . import _icpbench
+from ._icpbench import Estimate, Estimator, InvalidResult, Problem, Step
+from .store import Store, open  # noqa: A001 (icpbench.open reads a results directory)
+
+__all__ = ["algorithms", "problems", "solve", "problem", "estimator", "run", "open",
+           "Store", "Step", "Problem", "Estimator", "Estimate", "InvalidResult"]
+
+
+def algorithms():
+    """The registered algorithms: the records of `icpbench list algorithms --format json`."""
+    return json.loads(_icpbench.list_json("algorithms"))
+
+
+def problems():
+    """The registered problems: the records of `icpbench list problems --format json`."""
+    return json.loads(_icpbench.list_json("problems"))
+
+
+def _looks_like_minibex_text(minibex):
+    return "\n" in minibex or minibex.lstrip().startswith(("Variables", "Constants"))
+
+
+def _bounds(pair):
+    """A JSON [lo, hi] pair; null stands for an infinite bound."""
+    lo, hi = pair
+    return (-math.inf if lo is None else float(lo), math.inf if hi is None else float(hi))
+
+
+def solve(minibex, algorithm="hc4", repeat=1, timeout=math.inf, **params):
+    """Contracts (or, for a relaxed solver, solves) a Minibex system.
+
+    minibex: the text of a Minibex system, or the path of a file holding one.
+    params: the algorithm's parameters, as `solve --param key=value`.
+    Returns the dict of `icpbench solve --format json` with each box's bounds
+    as floats (+-inf where the command line writes null), plus `lo` and `hi`:
+    the box as NumPy arrays in the variables' order ("variables").
+    """
+    minibex = os.fspath(minibex)
+    if _looks_like_minibex_text(minibex):
+        with tempfile.NamedTemporaryFile("w", suffix=".bxx", delete=False) as f:
+            f.write(minibex)
+        try:
+            text, names = _icpbench.solve_json(f.name, algorithm, params, repeat, timeout)
+        finally:
+            os.unlink(f.name)
+    else:
+        text, names = _icpbench.solve_json(minibex, algorithm, params, repeat, timeout)
+    result = json.loads(text)
+
+    def box_of(box):
+        return {name: _bounds(pair) for name, pair in box.items()}
+
+    result["box"] = box_of(result["box"])
+    for by_q in result.get("by_q", []):
+        by_q["box"] = box_of(by_q["box"])
+    result["variables"] = list(names)
+    empty = result["status"] == "empty"
+    result["lo"] = np.array([math.inf if empty else result["box"][n][0] for n in names])
+    result["hi"] = np.array([-math.inf if empty else result["box"][n][1] for n in names])
+    return result
+
+
+def problem(name, seed=0, **params):
+    """A problem's steps as an iterator (icpbench.Step: truth, views)."""
+    return Problem(name, params, seed)
+
+
+def estimator(name, seed=0, **params):
+    """An algorithm to feed by hand: `.step(step)` returns an icpbench.Estimate."""
+    return Estimator(name, params, seed)
+
+
+def run(spec, out, jobs=1, force=False, no_retry=False, name="python"):
+    """Runs a sweep as `icpbench run SPEC --out OUT --jobs JOBS` does.
+
+    spec: the path of a spec file, or a dict with the same content (see
+    docs/specs.md). Runs already in OUT's store are skipped (a sweep resumes),
+    failed ones retried unless no_retry. Progress goes to sys.stderr. Returns
+    the sweep's counts: planned, already_stored, ok, failed, timed_out,
+    skipped; raises KeyboardInterrupt if a signal stopped it (finished runs
+    are kept).
+    """
+    if isinstance(spec, dict):
+        summary = _icpbench.run_sweep(json.dumps(spec), False, name,  # YAML reads JSON
+                                      os.fspath(out), jobs, force, no_retry)
+    else:
+        summary = _icpbench.run_sweep(os.fspath(spec), True, "", os.fspath(out), jobs, force,
+                                      no_retry)
+    if summary["interrupted_by"]:
+        raise KeyboardInterrupt(f"sweep interrupted: {summary['stopped']} runs in flight stopped")
+    return summary
+

@@ -1,0 +1,88 @@
+"""Reading a results store (DIR/results.sqlite, docs/store.md) from Python.
+
+Tables come back as pandas DataFrames when pandas is installed, as lists of
+dicts otherwise. The store is opened read-only as `icpbench report` opens it:
+with a writer's WAL file present, read through it; otherwise immutable, so
+reading creates no -wal/-shm files and needs no write permission.
+"""
+
+import os
+import sqlite3
+from urllib.parse import quote
+
+try:
+    import pandas as _pd
+except ImportError:  # plain records without pandas
+    _pd = None
+
+_KNOWN_SCHEMA_VERSIONS = {1, 2, 3}
+
+
+class Store:
+    """A results store, read-only. Use as a context manager or call close()."""
+
+    def __init__(self, directory):
+        path = os.path.join(os.fspath(directory), "results.sqlite")
+        if not os.path.isfile(path):
+            raise ValueError(f"{path}: no results store here (run `icpbench run SPEC --out "
+                             f"{os.fspath(directory)}` first)")
+        self.path = path
+        mode = "mode=ro" if os.path.exists(path + "-wal") else "immutable=1"
+        try:
+            self._db = sqlite3.connect(f"file:{quote(os.path.abspath(path))}?{mode}", uri=True)
+            version = self._db.execute(
+                "SELECT value FROM meta WHERE key='schema_version'").fetchone()
+        except sqlite3.DatabaseError as e:
+            raise ValueError(f"{path}: not an icpbench results store ({e})") from None
+        self.schema_version = int(version[0]) if version else None
+        if self.schema_version not in _KNOWN_SCHEMA_VERSIONS:
+            raise ValueError(f"{path}: schema version {self.schema_version} is not one this "
+                             f"icpbench reads ({sorted(_KNOWN_SCHEMA_VERSIONS)})")
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def close(self):
+        self._db.close()
+
+    def query(self, sql, params=()):
+        """Any SELECT on the store, as a DataFrame (or records)."""
+        cursor = self._db.execute(sql, params)
+        columns = [d[0] for d in cursor.description]
+        rows = cursor.fetchall()
+        if _pd is not None:
+            return _pd.DataFrame.from_records(rows, columns=columns)
+        return [dict(zip(columns, row)) for row in rows]
+
+    def _table(self, table, run_id):
+        if run_id is None:
+            return self.query(f"SELECT * FROM {table}")
+        return self.query(f"SELECT * FROM {table} WHERE run_id = ?", (run_id,))
+
+    def runs(self):
+        """One row per run: algorithm, problem, their parameters, status, metrics."""
+        return self.query("SELECT * FROM runs ORDER BY id")
+
+    def steps(self, run_id=None):
+        """One row per step (of one run, or of all)."""
+        return self._table("steps", run_id)
+
+    def step_values(self, run_id=None):
+        """Per step and reported variable: lo, hi and the truth."""
+        return self._table("step_values", run_id)
+
+    def step_properties(self, run_id=None):
+        """What estimators report per step beyond the columns (name, type, value)."""
+        return self._table("step_properties", run_id)
+
+    def run_properties(self, run_id=None):
+        """What estimators report per run (name, type, value)."""
+        return self._table("run_properties", run_id)
+
+
+def open(directory):  # noqa: A001 (icpbench.open mirrors `icpbench report DIR`)
+    """Opens DIR/results.sqlite read-only."""
+    return Store(directory)

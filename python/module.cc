@@ -1,0 +1,85 @@
+// _icpbench: the C++ half of the Python module (python/icpbench/__init__.py
+// is the other). Errors reach Python as the command line words them: bad
+// input (a parameter, a spec, a Minibex file, a locked output directory) as
+// ValueError, the environment (disk, processes, descriptors) as OSError.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/minibex_parser.h"
+#include "harness/environment_error.h"
+#include "harness/list_command.h"
+#include "harness/results_store.h"
+#include "harness/solve_command.h"
+#include "python/module_internal.h"
+
+namespace icp::python {
+
+ParamMap ToParamMap(const py::dict& params) {
+  ParamMap map;
+  for (const auto& [key, value] : params) {
+    const std::string name = py::str(key);
+    if (py::isinstance<py::bool_>(value))
+      map[name] = value.cast<bool>() ? "true" : "false";
+    else if (py::isinstance<py::float_>(value))
+      map[name] = py::str(py::module_::import("builtins").attr("repr")(value));  // round-trips
+    else
+      map[name] = py::str(value);
+  }
+  return map;
+}
+
+namespace {
+
+// `solve`: the JSON the command line prints (solve --format json) and the
+// variables' names in order.
+py::tuple SolveJson(const std::string& file, const std::string& algorithm, const py::dict& params,
+                    int repeat, double timeout_s) {
+  SolveOptions options;
+  options.file = file;
+  options.algorithm = algorithm;
+  for (const auto& [key, value] : ToParamMap(params)) options.params.push_back(key + "=" + value);
+  options.format = "json";
+  options.repeat = repeat;
+  options.timeout_s = timeout_s;
+  SolveResult result;
+  {
+    py::gil_scoped_release release;
+    result = Solve(options);
+  }
+  return py::make_tuple(SolveResultToJson(result), result.csp.names());
+}
+
+}  // namespace
+
+}  // namespace icp::python
+
+PYBIND11_MODULE(_icpbench, m) {
+  namespace py = pybind11;
+  using namespace icp::python;
+  m.doc() = "The C++ half of the icpbench module; use `import icpbench`.";
+
+  // The order matters: pybind11 tries the newest registration first.
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const icp::EnvironmentError& e) {
+      PyErr_SetString(PyExc_OSError, e.what());
+    } catch (const icp::StoreError& e) {  // the command line's exit 2, too
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const icp::MinibexError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+
+  m.def("list_json", &icp::ListPlugins, py::arg("what"), py::arg("format") = "json",
+        "The registry `what` (algorithms or problems) as `icpbench list WHAT --format json`.");
+  m.def("solve_json", &SolveJson, py::arg("file"), py::arg("algorithm"), py::arg("params"),
+        py::arg("repeat"), py::arg("timeout_s"),
+        "(solve --format json text, variable names) for a Minibex file.");
+  BindRuns(m);
+  BindSteps(m);
+}

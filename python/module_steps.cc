@@ -1,0 +1,251 @@
+// Stepping by hand: a problem's steps (Problem), an estimator fed one step at
+// a time (Estimator) and what it returns (Estimate), as the runner does it
+// (harness/runner.cc), with the step measured as the store measures it.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <chrono>
+#include <limits>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "algorithms/registry.h"
+#include "harness/metrics.h"
+#include "problems/registry.h"
+#include "python/module_internal.h"
+
+namespace icp::python {
+namespace {
+
+py::dict PropertiesToDict(const Properties& properties) {
+  py::dict out;
+  for (const Property& p : properties)
+    std::visit([&](const auto& v) { out[py::str(p.name)] = v; }, p.value);
+  return out;
+}
+
+py::array_t<double> Array(const std::vector<double>& values) {
+  return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
+}
+
+// Lower and upper bounds of a box as two arrays (+inf / -inf for an empty one).
+py::tuple BoundsOf(const Box& box) {
+  std::vector<double> lo, hi;
+  for (std::size_t i = 0; i < box.size(); ++i) {
+    lo.push_back(box[i].lo());
+    hi.push_back(box[i].hi());
+  }
+  return py::make_tuple(Array(lo), Array(hi));
+}
+
+// A list of boxes as an array of shape (boxes, variables, 2).
+py::array_t<double> BoxesArray(const std::vector<Box>& boxes, int dims) {
+  py::array_t<double> out({static_cast<py::ssize_t>(boxes.size()), static_cast<py::ssize_t>(dims),
+                           py::ssize_t{2}});
+  auto a = out.mutable_unchecked<3>();
+  for (std::size_t b = 0; b < boxes.size(); ++b)
+    for (int i = 0; i < dims; ++i) {
+      a(b, i, 0) = boxes[b][i].lo();
+      a(b, i, 1) = boxes[b][i].hi();
+    }
+  return out;
+}
+
+template <class T>
+py::array_t<T> MatArray(const cv::Mat& mat) {
+  py::array_t<T> out({static_cast<py::ssize_t>(mat.rows), static_cast<py::ssize_t>(mat.cols)});
+  auto a = out.template mutable_unchecked<2>();
+  for (int r = 0; r < mat.rows; ++r)
+    for (int c = 0; c < mat.cols; ++c) a(r, c) = mat.at<T>(r, c);
+  return out;
+}
+
+struct PyStep {
+  std::shared_ptr<const Step> step;
+};
+
+class PyProblem {
+ public:
+  PyProblem(const std::string& name, const py::dict& params, std::uint64_t seed) {
+    const ProblemInfo& info = FindProblem(name);
+    params_ = info.resolve(info.name, ToParamMap(params));
+    problem_ = info.make(params_, seed);
+  }
+  std::string Name() const { return std::string(problem_->Name()); }
+  int NumSteps() const { return problem_->NumSteps(); }
+  const ParamMap& Params() const { return params_; }
+  PyStep Next() {
+    auto step = std::make_shared<Step>();
+    bool more;
+    {
+      py::gil_scoped_release release;
+      more = problem_->Next(step.get());
+    }
+    if (!more) throw py::stop_iteration();
+    return PyStep{std::move(step)};
+  }
+
+ private:
+  ParamMap params_;
+  std::unique_ptr<Problem> problem_;
+};
+
+// One step's result: the estimate, the estimator's report and the step's
+// measurement as the runner stores it.
+struct PyEstimate {
+  std::shared_ptr<StepResult> result;
+  StepRecord record;
+};
+
+class PyEstimator {
+ public:
+  PyEstimator(const std::string& name, const py::dict& params, std::uint64_t seed)
+      : info_(&FindAlgorithm(name)) {
+    params_ = info_->resolve(info_->name, ToParamMap(params));
+    estimator_ = info_->make(params_, seed);
+  }
+  const ParamMap& Params() const { return params_; }
+  std::string Needs() const { return std::string(ToString(info_->needs)); }
+
+  PyEstimate StepOnce(const PyStep& s, double timeout_s) {
+    const Step& step = *s.step;
+    if (!step.views.Offers(info_->needs))
+      throw std::invalid_argument("step " + std::to_string(step.views.step) + " offers no " +
+                                  std::string(ToString(info_->needs)) + " view");
+    PyEstimate out;
+    out.result = std::make_shared<StepResult>();
+    {
+      py::gil_scoped_release release;
+      const StopCondition stop =
+          timeout_s < std::numeric_limits<double>::infinity()
+              ? StopCondition::After(std::chrono::duration<double>(timeout_s))
+              : StopCondition();
+      const auto t0 = std::chrono::steady_clock::now();
+      *out.result = estimator_->Step(step.views, stop);
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (!out.result->estimate) throw InvalidResult("no estimate");
+      if (std::string why = InvalidEstimateReason(step.views, *out.result->estimate); !why.empty())
+        throw InvalidResult(why);
+      out.record = MeasureStep(step, *out.result->estimate);
+      out.record.status = std::string(ToString(out.result->summary.status));
+      if (out.result->solve_time_s < 0) out.result->solve_time_s = seconds;
+    }
+    return out;
+  }
+  py::dict RunProperties() const { return PropertiesToDict(estimator_->RunProperties()); }
+
+ private:
+  const AlgorithmInfo* info_;
+  ParamMap params_;
+  std::unique_ptr<Estimator> estimator_;
+};
+
+const Estimate& EstimateOf(const PyEstimate& e) { return *e.result->estimate; }
+
+}  // namespace
+
+void BindSteps(py::module_& m) {
+  py::register_exception<InvalidResult>(m, "InvalidResult", PyExc_RuntimeError);
+
+  py::class_<PyStep>(m, "Step", "One step of a problem: its truth and the views it offers.")
+      .def_property_readonly("index", [](const PyStep& s) { return s.step->views.step; })
+      .def_property_readonly("names", [](const PyStep& s) { return s.step->views.space.names; })
+      .def_property_readonly("truth", [](const PyStep& s) { return Array(s.step->truth); },
+                             "The true state (empty when unknown).")
+      .def_property_readonly("views", [](const PyStep& s) {
+        std::vector<std::string> views;
+        for (View v : {View::kCsp, View::kMeasurementSet, View::kProbabilistic})
+          if (s.step->views.Offers(v)) views.emplace_back(ToString(v));
+        return views;
+      })
+      .def_property_readonly("annotations",
+                             [](const PyStep& s) { return PropertiesToDict(s.step->annotations); })
+      .def_property_readonly("csp_variables", [](const PyStep& s) {
+        return s.step->views.csp ? s.step->views.csp->csp.names() : std::vector<std::string>{};
+      })
+      .def_property_readonly("csp_domains", [](const PyStep& s) {
+        return s.step->views.csp ? BoundsOf(s.step->views.csp->csp.domains()) : BoundsOf(Box());
+      }, "The CSP view's initial box as (lo, hi) arrays (empty arrays without one).")
+      .def_property_readonly("measurements", [](const PyStep& s) {
+        return s.step->views.measurement_set ? s.step->views.measurement_set->measurements.size()
+                                             : std::size_t{0};
+      })
+      .def("__repr__", [](const PyStep& s) {
+        return "<icpbench.Step " + std::to_string(s.step->views.step) + ">";
+      });
+
+  py::class_<PyProblem>(m, "Problem", "A problem's steps, one at a time (an iterator).")
+      .def(py::init<const std::string&, const py::dict&, std::uint64_t>(), py::arg("name"),
+           py::arg("params"), py::arg("seed"))
+      .def_property_readonly("name", &PyProblem::Name)
+      .def_property_readonly("num_steps", &PyProblem::NumSteps)
+      .def_property_readonly("params", &PyProblem::Params, "The effective parameters.")
+      .def("__iter__", [](PyProblem& p) -> PyProblem& { return p; })
+      .def("__next__", &PyProblem::Next);
+
+  py::class_<PyEstimate>(m, "Estimate", "What an estimator returned for one step.")
+      .def_property_readonly("kind", [](const PyEstimate& e) { return std::string(EstimateOf(e).Kind()); })
+      .def_property_readonly("status", [](const PyEstimate& e) { return e.record.status; })
+      .def_property_readonly("lo", [](const PyEstimate& e) { return BoundsOf(EstimateOf(e).Hull())[0]; })
+      .def_property_readonly("hi", [](const PyEstimate& e) { return BoundsOf(EstimateOf(e).Hull())[1]; })
+      .def_property_readonly("centre", [](const PyEstimate& e) { return Array(EstimateOf(e).Centre()); })
+      .def("contains", [](const PyEstimate& e, const std::vector<double>& point) {
+        return EstimateOf(e).Contains(point);
+      }, py::arg("point"))
+      .def_property_readonly("contained", [](const PyEstimate& e) -> py::object {
+        if (e.record.contained < 0) return py::none();
+        return py::bool_(e.record.contained == 1);
+      }, "Whether the truth is in the estimate, as the store records it (None: truth unknown).")
+      .def_property_readonly("area", [](const PyEstimate& e) { return e.record.area; })
+      .def_property_readonly("centre_error", [](const PyEstimate& e) { return e.record.centre_error; })
+      .def_property_readonly("solve_time_s", [](const PyEstimate& e) { return e.result->solve_time_s; })
+      .def_property_readonly("values", [](const PyEstimate& e) {
+        py::dict out;
+        for (const VariableRecord& v : e.record.vars) out[py::str(v.name)] = py::make_tuple(v.lo, v.hi);
+        return out;
+      }, "The reported variables' bounds, {name: (lo, hi)}, as the store's step_values.")
+      .def_property_readonly("properties", [](const PyEstimate& e) {
+        Properties all = e.result->properties;
+        for (const Property& p : EstimateOf(e).Extras()) all.push_back(p);
+        return PropertiesToDict(all);
+      })
+      .def_property_readonly("boxes", [](const PyEstimate& e) -> py::object {
+        const auto* paving = dynamic_cast<const PavingEstimate*>(e.result->estimate.get());
+        if (!paving) return py::none();
+        const int d = paving->Hull().size();
+        py::dict out;
+        out["inner"] = BoxesArray(paving->inner(), d);
+        out["boundary"] = BoxesArray(paving->boundary(), d);
+        return out;
+      }, "A paving's boxes, {'inner', 'boundary'} arrays of shape (boxes, variables, 2); else None.")
+      .def_property_readonly("counts", [](const PyEstimate& e) -> py::object {
+        const auto* acc = dynamic_cast<const AccumulatorEstimate*>(e.result->estimate.get());
+        if (!acc) return py::none();
+        return MatArray<std::int32_t>(acc->counts());
+      }, "An accumulator's counts (rows, columns); else None.")
+      .def_property_readonly("particles", [](const PyEstimate& e) -> py::object {
+        const auto* cloud = dynamic_cast<const ParticleEstimate*>(e.result->estimate.get());
+        if (!cloud) return py::none();
+        return MatArray<double>(cloud->particles());
+      }, "A particle filter's particles (particles, components); else None.")
+      .def_property_readonly("weights", [](const PyEstimate& e) -> py::object {
+        const auto* cloud = dynamic_cast<const ParticleEstimate*>(e.result->estimate.get());
+        if (!cloud) return py::none();
+        return Array(cloud->weights());
+      });
+
+  py::class_<PyEstimator>(m, "Estimator", "An algorithm fed one step at a time.")
+      .def(py::init<const std::string&, const py::dict&, std::uint64_t>(), py::arg("name"),
+           py::arg("params"), py::arg("seed"))
+      .def_property_readonly("params", &PyEstimator::Params, "The effective parameters.")
+      .def_property_readonly("needs", &PyEstimator::Needs)
+      .def("step", &PyEstimator::StepOnce, py::arg("step"),
+           py::arg("timeout_s") = std::numeric_limits<double>::infinity())
+      .def("run_properties", &PyEstimator::RunProperties);
+}
+
+}  // namespace icp::python
