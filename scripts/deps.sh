@@ -15,6 +15,8 @@ packages=(
   # icpbench paper: pdflatex (base; recommended for booktabs), latexmk, and
   # pdftotext for its test; about 150 MB installed, a minute to install.
   texlive-latex-base texlive-latex-recommended latexmk poppler-utils
+  # The Python module (python/, docs/python.md) and its pytest suite.
+  pybind11-dev python3-dev python3-numpy python3-pandas python3-pytest python3-matplotlib
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,128 @@
+"""The module against the command line: same registries, same solve results
+bit for bit, the same boxes stepping by hand as `icpbench run`, sweeps that
+resume, and the command line's messages on bad input."""
+
+import glob
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import icpbench
+
+
+def test_registries_are_the_command_lines(cli):
+    assert icpbench.algorithms() == cli.json("list", "algorithms", "--format", "json")
+    assert icpbench.problems() == cli.json("list", "problems", "--format", "json")
+
+
+def _cli_box(box):
+    return {name: (-math.inf if lo is None else lo, math.inf if hi is None else hi)
+            for name, (lo, hi) in box.items()}
+
+
+@pytest.mark.parametrize("algorithm", ["hc4", "bc4", "3b-bc4"])
+def test_solve_equals_the_command_line_bit_for_bit(cli, source_dir, algorithm):
+    files = sorted(glob.glob(os.path.join(source_dir, "examples", "*.bch")))
+    assert files, "no example Minibex files"
+    for path in files:
+        ours = icpbench.solve(path, algorithm=algorithm)
+        theirs = cli.json("solve", path, "--algorithm", algorithm, "--format", "json")
+        assert ours["status"] == theirs["status"], path
+        assert ours["box"] == _cli_box(theirs["box"]), path  # == on floats: bit for bit
+        if ours["status"] == "nonempty":
+            assert list(ours["lo"]) == [ours["box"][n][0] for n in ours["variables"]]
+            assert list(ours["hi"]) == [ours["box"][n][1] for n in ours["variables"]]
+
+
+def test_solve_takes_text_and_a_relaxed_solvers_fields(cli, tmp_path):
+    text = ("Variables x in [-10, 10]; y in [-10, 10];\n"
+            "Constraints x + y = 2; x - y = 0; x = 1; y = 5; end")
+    path = tmp_path / "lines.bch"
+    path.write_text(text)
+    ours = icpbench.solve(text, algorithm="q-relaxed", q=1)
+    theirs = cli.json("solve", str(path), "--algorithm", "q-relaxed", "--param", "q=1",
+                      "--format", "json")
+    assert ours["q"] == theirs["q"] == 1
+    assert ours["box"] == _cli_box(theirs["box"])
+    assert ours["estimate"] == theirs["estimate"]
+    assert ours["lo"][0] <= 1 <= ours["hi"][0]
+
+
+def test_bad_input_raises_value_error_with_the_command_lines_message(cli, source_dir):
+    path = os.path.join(source_dir, "examples", "paper002_sum.bch")
+    with pytest.raises(ValueError) as error:
+        icpbench.solve(path, algorithm="hc4", ratio=-1)
+    theirs = cli("solve", path, "--algorithm", "hc4", "--param", "ratio=-1", check=False)
+    assert theirs.returncode == 2
+    assert str(error.value) in theirs.stderr
+    with pytest.raises(ValueError, match="unknown algorithm|no algorithm"):
+        icpbench.estimator("no-such-algorithm")
+    with pytest.raises(ValueError):
+        icpbench.solve("Variables x in [0, 1]; Constraints x = ; end")
+
+
+def _car_spec(steps=12):
+    return {"name": "python-test", "seeds": [3], "experiments": [
+        {"name": "window", "algorithms": ["hc4"],
+         "problems": [{"name": "car-track", "params": {"w": 5, "steps": steps}}]}]}
+
+
+def test_stepping_by_hand_gives_the_boxes_of_icpbench_run(tmp_path):
+    summary = icpbench.run(_car_spec(), out=tmp_path)
+    assert summary["ok"] == 1
+    with icpbench.open(tmp_path) as store:
+        run_id = int(store.runs()["id"][0])
+        stored = store.step_values(run_id)
+    estimator = icpbench.estimator("hc4", seed=3)
+    steps = 0
+    for step in icpbench.problem("car-track", seed=3, w=5, steps=12):
+        estimate = estimator.step(step)
+        assert estimate.contained
+        rows = stored[stored["step"] == step.index]
+        for _, row in rows.iterrows():
+            assert estimate.values[row["var"]] == (row["lo"], row["hi"]), (step.index, row["var"])
+        steps += 1
+    assert steps == 12 and len(stored) == 12 * 3
+
+
+def test_a_sweep_from_a_dict_resumes(tmp_path):
+    first = icpbench.run(_car_spec(5), out=tmp_path)
+    assert (first["planned"], first["ok"], first["already_stored"]) == (1, 1, 0)
+    again = icpbench.run(_car_spec(5), out=tmp_path)
+    assert (again["planned"], again["ok"], again["already_stored"]) == (1, 0, 1)
+
+
+def test_a_bad_spec_raises_value_error(tmp_path):
+    spec = _car_spec()
+    spec["experiments"][0]["algorithms"] = ["no-such-algorithm"]
+    with pytest.raises(ValueError, match="no-such-algorithm"):
+        icpbench.run(spec, out=tmp_path)
+    with pytest.raises(ValueError, match="results store"):
+        icpbench.open(tmp_path / "nothing-here")
+
+
+def test_estimates_of_each_kind_expose_their_data():
+    step = next(iter(icpbench.problem("line-intersection", seed=1, lines=20, outliers=7)))
+    paving = icpbench.estimator("q-relaxed", mode="pave", epsilon=0.5).step(step)
+    assert paving.kind == "paving"
+    boxes = paving.boxes["boundary"]
+    assert boxes.ndim == 3 and boxes.shape[2] == 2 and np.all(boxes[:, :, 0] <= boxes[:, :, 1])
+    accumulator = icpbench.estimator("accumulator").step(step)
+    assert accumulator.kind == "accumulator" and accumulator.counts.ndim == 2
+    assert accumulator.counts.max() == accumulator.properties["max_count"]
+    marina = next(iter(icpbench.problem("marina-sonar", seed=1, steps=1)))
+    cloud = icpbench.estimator("particle-filter", seed=1).step(marina)
+    assert cloud.particles.shape[0] == cloud.weights.shape[0] > 0
+    assert math.isclose(cloud.weights.sum(), 1.0, rel_tol=1e-9)
+
+
+def test_the_example_script_runs(source_dir, tmp_path):
+    script = os.path.join(source_dir, "examples", "python", "sweep_and_plot.py")
+    done = subprocess.run([sys.executable, script, str(tmp_path)], capture_output=True, text=True,
+                          env={**os.environ, "MPLBACKEND": "Agg"})
+    assert done.returncode == 0, done.stderr
+    assert (tmp_path / "mean_area.png").stat().st_size > 0
