@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "core/params.h"
+#include "harness/fork_hooks.h"
 #include "harness/runner.h"
 #include "harness/worker_output.h"
 
@@ -153,7 +154,10 @@ bool WorkerPool::Start(const PlannedRun& run) {
   const std::string step_file = StepFilePath(step_dir_, std::to_string(++started_));
   std::fflush(nullptr);
   const pid_t parent = getpid();
+  const ForkHooks& hooks = CurrentForkHooks();
+  if (hooks.before) hooks.before();
   const pid_t pid = fork();
+  if (pid != 0 && hooks.after_in_parent) hooks.after_in_parent();
   if (pid < 0) {
     start_errno_ = errno;
     start_error_ = "cannot start a worker process (fork)";
@@ -162,6 +166,7 @@ bool WorkerPool::Start(const PlannedRun& run) {
     return false;
   }
   if (pid == 0) {
+    if (hooks.after_in_child) hooks.after_in_child();
     SetUpWorker(parent, alarm_s, cpu_limit_s, run.spec.memory_limit_mb);
     close(fds[0]);
     for (int fd : close_in_workers_) close(fd);

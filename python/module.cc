@@ -15,6 +15,7 @@
 #include "harness/results_store.h"
 #include "harness/solve_command.h"
 #include "python/module_internal.h"
+#include "python/module_views.h"
 
 namespace icp::python {
 
@@ -80,6 +81,8 @@ PYBIND11_MODULE(_icpbench, m) {
   m.def("solve_json", &SolveJson, py::arg("file"), py::arg("algorithm"), py::arg("params"),
         py::arg("repeat"), py::arg("timeout_s"),
         "(solve --format json text, variable names) for a Minibex file.");
+  BindViews(m);
   BindRuns(m);
   BindSteps(m);
+  BindAlgorithms(m);
 }

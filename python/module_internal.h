@@ -18,6 +18,7 @@ ParamMap ToParamMap(const py::dict& params);
 
 void BindRuns(py::module_& m);   // module_runs.cc: run_sweep
 void BindSteps(py::module_& m);  // module_steps.cc: Problem, Estimator, Estimate
+void BindAlgorithms(py::module_& m);  // module_algorithms.cc: estimators written in Python
 
 }  // namespace icp::python
 

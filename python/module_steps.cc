@@ -16,6 +16,7 @@
 #include "harness/metrics.h"
 #include "problems/registry.h"
 #include "python/module_internal.h"
+#include "python/module_views.h"
 
 namespace icp::python {
 namespace {
@@ -25,20 +26,6 @@ py::dict PropertiesToDict(const Properties& properties) {
   for (const Property& p : properties)
     std::visit([&](const auto& v) { out[py::str(p.name)] = v; }, p.value);
   return out;
-}
-
-py::array_t<double> Array(const std::vector<double>& values) {
-  return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
-}
-
-// Lower and upper bounds of a box as two arrays (+inf / -inf for an empty one).
-py::tuple BoundsOf(const Box& box) {
-  std::vector<double> lo, hi;
-  for (std::size_t i = 0; i < box.size(); ++i) {
-    lo.push_back(box[i].lo());
-    hi.push_back(box[i].hi());
-  }
-  return py::make_tuple(Array(lo), Array(hi));
 }
 
 // A list of boxes as an array of shape (boxes, variables, 2).
@@ -156,24 +143,11 @@ void BindSteps(py::module_& m) {
       .def_property_readonly("names", [](const PyStep& s) { return s.step->views.space.names; })
       .def_property_readonly("truth", [](const PyStep& s) { return Array(s.step->truth); },
                              "The true state (empty when unknown).")
-      .def_property_readonly("views", [](const PyStep& s) {
-        std::vector<std::string> views;
-        for (View v : {View::kCsp, View::kMeasurementSet, View::kProbabilistic})
-          if (s.step->views.Offers(v)) views.emplace_back(ToString(v));
-        return views;
-      })
       .def_property_readonly("annotations",
                              [](const PyStep& s) { return PropertiesToDict(s.step->annotations); })
-      .def_property_readonly("csp_variables", [](const PyStep& s) {
-        return s.step->views.csp ? s.step->views.csp->csp.names() : std::vector<std::string>{};
-      })
-      .def_property_readonly("csp_domains", [](const PyStep& s) {
-        return s.step->views.csp ? BoundsOf(s.step->views.csp->csp.domains()) : BoundsOf(Box());
-      }, "The CSP view's initial box as (lo, hi) arrays (empty arrays without one).")
-      .def_property_readonly("measurements", [](const PyStep& s) {
-        return s.step->views.measurement_set ? s.step->views.measurement_set->measurements.size()
-                                             : std::size_t{0};
-      })
+      .def_property_readonly("view", [](const PyStep& s) {
+        return PyView{std::shared_ptr<const Views>(s.step, &s.step->views)};
+      }, "What an estimator sees of the step (icpbench.View).")
       .def("__repr__", [](const PyStep& s) {
         return "<icpbench.Step " + std::to_string(s.step->views.step) + ">";
       });
@@ -190,8 +164,12 @@ void BindSteps(py::module_& m) {
   py::class_<PyEstimate>(m, "Estimate", "What an estimator returned for one step.")
       .def_property_readonly("kind", [](const PyEstimate& e) { return std::string(EstimateOf(e).Kind()); })
       .def_property_readonly("status", [](const PyEstimate& e) { return e.record.status; })
-      .def_property_readonly("lo", [](const PyEstimate& e) { return BoundsOf(EstimateOf(e).Hull())[0]; })
-      .def_property_readonly("hi", [](const PyEstimate& e) { return BoundsOf(EstimateOf(e).Hull())[1]; })
+      .def_property_readonly("lo", [](const PyEstimate& e) -> py::object {
+        return BoundsOf(EstimateOf(e).Hull())[0];
+      })
+      .def_property_readonly("hi", [](const PyEstimate& e) -> py::object {
+        return BoundsOf(EstimateOf(e).Hull())[1];
+      })
       .def_property_readonly("centre", [](const PyEstimate& e) { return Array(EstimateOf(e).Centre()); })
       .def("contains", [](const PyEstimate& e, const std::vector<double>& point) {
         return EstimateOf(e).Contains(point);

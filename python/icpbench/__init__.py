@@ -11,6 +11,7 @@ Bad input raises ValueError with the command line's message; the environment
 (disk, processes) raises OSError.
 """
 
+import inspect
 import json
 import math
 import os
@@ -19,11 +20,12 @@ import tempfile
 import numpy as np
 
 from . import _icpbench
-from ._icpbench import Estimate, Estimator, InvalidResult, Problem, Step
+from ._icpbench import Estimate, Estimator, InvalidResult, Problem, Step, View
 from .store import Store, open  # noqa: A001 (icpbench.open reads a results directory)
 
 __all__ = ["algorithms", "problems", "solve", "problem", "estimator", "run", "open",
-           "Store", "Step", "Problem", "Estimator", "Estimate", "InvalidResult"]
+           "register_algorithm", "Store", "Step", "View", "Problem", "Estimator", "Estimate",
+           "InvalidResult"]
 
 
 def algorithms():
@@ -110,3 +112,64 @@ def run(spec, out, jobs=1, force=False, no_retry=False, name="python"):
         raise KeyboardInterrupt(f"sweep interrupted: {summary['stopped']} runs in flight stopped")
     return summary
 
+
+
+_TYPES = {bool: "bool", int: "int", float: "double", str: "string"}
+
+
+def _declared(name, declaration):
+    """A parameter's declaration: default, (default, doc) or (default, doc, choices)."""
+    default, doc, choices = declaration, "", None
+    if isinstance(declaration, tuple):
+        default, doc, *rest = declaration
+        choices = rest[0] if rest else None
+    kind = _TYPES.get(type(default))
+    if kind is None:
+        raise ValueError(f"parameter '{name}': default {default!r} must be a bool, int, float or str")
+    if kind == "bool":
+        text = "true" if default else "false"
+    elif kind == "double":
+        text = repr(float(default))
+    else:
+        text = str(default)
+    if choices is not None and kind != "string":
+        raise ValueError(f"parameter '{name}': choices are for str parameters")
+    # The choices are checked in Python (the registry's string fields are free text).
+    return _icpbench.ParamInfo(name, kind, text, "", doc), kind, choices
+
+
+def register_algorithm(name, cls, needs="csp", params=None, description=""):
+    """Registers an estimator written in Python, to run in sweeps beside the C++ ones.
+
+    cls(**params[, seed=...]) makes the estimator; its step(view) gets an
+    icpbench.View and returns the estimate's box over view.names as (lo, hi),
+    an object with .lo and .hi, or None for an empty estimate; an optional
+    properties() returns a dict stored with the step. needs: the view it
+    needs, "csp", "measurement-set" or "probabilistic". params: name ->
+    default, or (default, doc), or (default, doc, [choices]) for a str; the
+    type is the default's (bool, int, float, str), checked like a C++
+    plugin's. The runs' parameters include `python`, the class's import path.
+    """
+    params = params or {}
+    declared = [_declared(k, v) for k, v in params.items()]
+    kinds = {info.name: (kind, choices) for info, kind, choices in declared}
+    takes_seed = "seed" in inspect.signature(cls).parameters
+
+    def typed(texts):
+        values = {}
+        for key, text in texts.items():
+            kind, choices = kinds[key]
+            value = {"bool": lambda t: t == "true", "int": int, "double": float,
+                     "string": str}[kind](text)
+            if choices is not None and value not in choices:
+                raise ValueError(f"{name}.{key} = {text}: must be one of {'|'.join(choices)}")
+            values[key] = value
+        return values
+
+    def factory(texts, seed):
+        values = typed(texts)
+        return cls(**values, seed=seed) if takes_seed else cls(**values)
+
+    class_path = f"{cls.__module__}.{cls.__qualname__}"
+    _icpbench.register_python_algorithm(name, factory, class_path, needs,
+                                        [info for info, _, _ in declared], description)

@@ -1,0 +1,155 @@
+#include "python/module_views.h"
+
+#include <pybind11/stl.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "algorithms/registry.h"
+#include "algorithms/window/window_estimator.h"
+#include "core/random.h"
+
+namespace icp::python {
+
+py::array_t<double> Array(const std::vector<double>& values) {
+  return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
+}
+
+py::tuple BoundsOf(const Box& box) {
+  std::vector<double> lo, hi;
+  for (std::size_t i = 0; i < box.size(); ++i) {
+    lo.push_back(box[i].lo());
+    hi.push_back(box[i].hi());
+  }
+  return py::make_tuple(Array(lo), Array(hi));
+}
+
+Box BoxFromBounds(const py::handle& lo, const py::handle& hi, std::size_t size) {
+  const auto l = lo.cast<std::vector<double>>();
+  const auto h = hi.cast<std::vector<double>>();
+  if (l.size() != size || h.size() != size)
+    throw py::value_error("a box needs " + std::to_string(size) + " lower and upper bounds, got " +
+                          std::to_string(l.size()) + " and " + std::to_string(h.size()));
+  Box box(size);
+  for (std::size_t i = 0; i < size; ++i) {
+    if (!(l[i] <= h[i])) {  // NaN or crossed: empty
+      box.SetEmpty();
+      return box;
+    }
+    box[i] = Interval(l[i], h[i]);
+  }
+  return box;
+}
+
+namespace {
+
+const Views& Of(const PyView& v) { return *v.views; }
+
+const CspView& CspOf(const PyView& v) {
+  if (!v.views->csp) throw py::value_error("this step offers no csp view");
+  return *v.views->csp;
+}
+
+const MeasurementSetView& MeasurementsOf(const PyView& v) {
+  if (!v.views->measurement_set) throw py::value_error("this step offers no measurement-set view");
+  return *v.views->measurement_set;
+}
+
+const ProbabilisticView& ModelOf(const PyView& v) {
+  if (!v.views->probabilistic) throw py::value_error("this step offers no probabilistic view");
+  return *v.views->probabilistic;
+}
+
+// Contracts (lo, hi) over the CSP's variables with a registered CSP contractor.
+py::tuple ContractCsp(const PyView& v, const py::handle& lo, const py::handle& hi,
+                      const std::string& algorithm, const py::dict& params) {
+  const CspView& view = CspOf(v);
+  const AlgorithmInfo& info = FindAlgorithm(algorithm);
+  if (info.contractor == nullptr)
+    throw py::value_error("'" + algorithm + "' is not a CSP contractor");
+  Box box = BoxFromBounds(lo, hi, static_cast<std::size_t>(view.csp.num_variables()));
+  const ParamMap contractor_params = ContractorParams(ToParamMap(params));
+  {
+    py::gil_scoped_release release;
+    std::unique_ptr<Contractor> contractor = info.contractor(contractor_params, view.csp);
+    ContractContext context;
+    if (!box.IsEmpty()) contractor->Contract(box, context);
+  }
+  return BoundsOf(box);
+}
+
+py::tuple ContractMeasurement(const PyView& v, std::size_t i, const py::handle& lo,
+                              const py::handle& hi) {
+  const MeasurementSetView& view = MeasurementsOf(v);
+  if (i >= view.measurements.size())
+    throw py::index_error("measurement " + std::to_string(i) + " of " +
+                          std::to_string(view.measurements.size()));
+  Box box = BoxFromBounds(lo, hi, view.prior.size());
+  if (!box.IsEmpty()) {
+    ContractContext context;
+    view.measurements[i]->Contract(box, context);
+  }
+  return BoundsOf(box);
+}
+
+py::array_t<double> Samples(const PyView& v, std::size_t n, std::uint64_t seed, bool global) {
+  const ProbabilisticView& model = ModelOf(v);
+  const auto& sample = global && model.sample_global ? model.sample_global : model.sample_prior;
+  RandomEngine engine(seed);
+  const auto d = static_cast<py::ssize_t>(v.views->space.size());
+  py::array_t<double> out({static_cast<py::ssize_t>(n), d});
+  auto a = out.mutable_unchecked<2>();
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::vector<double> s = sample(engine);
+    for (py::ssize_t c = 0; c < d; ++c) a(k, c) = s[c];
+  }
+  return out;
+}
+
+}  // namespace
+
+void BindViews(py::module_& m) {
+  py::class_<PyView>(m, "View", "What an estimator may see of a step (no truth).")
+      .def_property_readonly("index", [](const PyView& v) { return Of(v).step; })
+      .def_property_readonly("names", [](const PyView& v) { return Of(v).space.names; },
+                             "The state's components (an estimate is a box over them).")
+      .def_property_readonly("offers", [](const PyView& v) {
+        std::vector<std::string> views;
+        for (View k : {View::kCsp, View::kMeasurementSet, View::kProbabilistic})
+          if (Of(v).Offers(k)) views.emplace_back(ToString(k));
+        return views;
+      })
+      // csp
+      .def_property_readonly("csp_variables", [](const PyView& v) { return CspOf(v).csp.names(); })
+      .def_property_readonly("csp_domains", [](const PyView& v) { return BoundsOf(CspOf(v).csp.domains()); },
+                             "The CSP's initial box as (lo, hi) arrays.")
+      .def("newest_state", [](const PyView& v, const py::handle& lo, const py::handle& hi) {
+        const CspView& view = CspOf(v);
+        const Box box = BoxFromBounds(lo, hi, static_cast<std::size_t>(view.csp.num_variables()));
+        return BoundsOf(NewestState(view, box, Of(v).space.size()));
+      }, py::arg("lo"), py::arg("hi"), "The newest state's bounds of a box over the CSP's variables.")
+      .def("contract", &ContractCsp, py::arg("lo"), py::arg("hi"), py::arg("algorithm") = "hc4",
+           py::arg("params") = py::dict(),
+           "Contracts a box over the CSP's variables with a registered CSP contractor.")
+      // measurement-set
+      .def_property_readonly("prior", [](const PyView& v) { return BoundsOf(MeasurementsOf(v).prior); })
+      .def_property_readonly("num_measurements",
+                             [](const PyView& v) { return MeasurementsOf(v).measurements.size(); })
+      .def("contract_measurement", &ContractMeasurement, py::arg("i"), py::arg("lo"), py::arg("hi"),
+           "Contracts a box over the state with measurement i's contractor.")
+      // probabilistic
+      .def("sample_prior", [](const PyView& v, std::size_t n, std::uint64_t seed) {
+        return Samples(v, n, seed, false);
+      }, py::arg("n"), py::arg("seed"))
+      .def("sample_global", [](const PyView& v, std::size_t n, std::uint64_t seed) {
+        return Samples(v, n, seed, true);
+      }, py::arg("n"), py::arg("seed"))
+      .def("log_likelihood", [](const PyView& v, const std::vector<double>& state) {
+        return ModelOf(v).log_likelihood(state);
+      }, py::arg("state"))
+      .def("__repr__", [](const PyView& v) {
+        return "<icpbench.View of step " + std::to_string(Of(v).step) + ">";
+      });
+}
+
+}  // namespace icp::python
