@@ -49,7 +49,7 @@ SolveResult Solve(const SolveOptions& options) {
   const AlgorithmInfo& info = FindAlgorithm(options.algorithm);
   SolveResult result;
   result.algorithm = info.name;
-  result.csp = ParseMinibexFile(options.file);
+  result.csp = options.parsed ? *options.parsed : ParseMinibexFile(options.file);
   const ParamMap params = ParseKeyValues(options.params);
   info.resolve(info.name, params);  // every key checked, `carry` included
   std::vector<double> times;

@@ -7,6 +7,7 @@
 #define ICPBENCH_HARNESS_SOLVE_COMMAND_H_
 
 #include <iosfwd>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,10 @@ struct SolveOptions {
   // Seconds each contraction or solve may take (> 0; inf: no limit). Past
   // it the algorithm stops with a sound box, status stopped.
   double timeout_s = kInf;
+  // When set, the system already parsed from `file` (the Python module keeps
+  // the systems it solves, so a notebook's loop does not parse each time);
+  // CSP contractors then do not read the file.
+  std::shared_ptr<const ConstraintSystem> parsed;
 };
 
 struct SolveResult {

@@ -5,6 +5,9 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <filesystem>
+#include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -35,12 +38,30 @@ ParamMap ToParamMap(const py::dict& params) {
 
 namespace {
 
+// The systems solve() parsed, by file (path, size and modification time),
+// so that a loop solving one file parses it once. A few at most.
+std::shared_ptr<const ConstraintSystem> Parsed(const std::string& file) {
+  static std::map<std::string, std::shared_ptr<const ConstraintSystem>> cache;
+  std::error_code error;
+  const auto size = std::filesystem::file_size(file, error);
+  const auto time = std::filesystem::last_write_time(file, error);
+  if (error) return nullptr;  // Solve reads it and says why
+  const std::string key = file + "|" + std::to_string(size) + "|" +
+                          std::to_string(time.time_since_epoch().count());
+  if (auto hit = cache.find(key); hit != cache.end()) return hit->second;
+  if (cache.size() >= 16) cache.clear();
+  auto system = std::make_shared<const ConstraintSystem>(ParseMinibexFile(file));
+  cache.emplace(key, system);
+  return system;
+}
+
 // `solve`: the JSON the command line prints (solve --format json) and the
 // variables' names in order.
 py::tuple SolveJson(const std::string& file, const std::string& algorithm, const py::dict& params,
                     int repeat, double timeout_s) {
   SolveOptions options;
   options.file = file;
+  options.parsed = Parsed(file);
   options.algorithm = algorithm;
   for (const auto& [key, value] : ToParamMap(params)) options.params.push_back(key + "=" + value);
   options.format = "json";
