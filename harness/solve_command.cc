@@ -54,7 +54,10 @@ SolveResult Solve(const SolveOptions& options) {
   info.resolve(info.name, params);  // every key checked, `carry` included
   std::vector<double> times;
   if (info.contractor != nullptr) {
-    std::unique_ptr<Contractor> contractor = info.contractor(ContractorParams(params), result.csp);
+    std::shared_ptr<Contractor> contractor =
+        options.contractor && options.parsed ? options.contractor
+                                             : info.contractor(ContractorParams(params), result.csp);
+    result.contractor = contractor;
     for (int r = 0; r < options.repeat; ++r) {
       Box box = result.csp.domains();
       const StopCondition stop = limit();

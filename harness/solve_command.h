@@ -31,6 +31,10 @@ struct SolveOptions {
   // the systems it solves, so a notebook's loop does not parse each time);
   // CSP contractors then do not read the file.
   std::shared_ptr<const ConstraintSystem> parsed;
+  // When set (with `parsed`), the CSP contractor an earlier Solve of the
+  // same system, algorithm and parameters built (SolveResult::contractor),
+  // contracted again as `--repeat` does instead of being built anew.
+  std::shared_ptr<Contractor> contractor;
 };
 
 struct SolveResult {
@@ -47,6 +51,8 @@ struct SolveResult {
   std::string estimate_kind;
   Properties estimate_extras;
   std::vector<Box> hulls_by_q;
+  // The CSP contractor used (null for the relaxed solvers), for reuse.
+  std::shared_ptr<Contractor> contractor;
 };
 
 // Runs the contraction. Throws std::invalid_argument (bad algorithm,

@@ -38,21 +38,24 @@ ParamMap ToParamMap(const py::dict& params) {
 
 namespace {
 
-// The systems solve() parsed, by file (path, size and modification time),
-// so that a loop solving one file parses it once. A few at most.
-std::shared_ptr<const ConstraintSystem> Parsed(const std::string& file) {
-  static std::map<std::string, std::shared_ptr<const ConstraintSystem>> cache;
+// What solve() parsed and built, by file (path, size and modification
+// time), algorithm and parameters, so that a loop solving one file parses it
+// and builds its contractor once (the contractor is contracted again, as
+// `solve --repeat` does). A few entries at most.
+struct Prepared {
+  std::shared_ptr<const ConstraintSystem> system;
+  std::shared_ptr<Contractor> contractor;
+};
+std::map<std::string, Prepared>& PreparedCache() {
+  static std::map<std::string, Prepared> cache;
+  return cache;
+}
+std::string FileKey(const std::string& file) {
   std::error_code error;
   const auto size = std::filesystem::file_size(file, error);
   const auto time = std::filesystem::last_write_time(file, error);
-  if (error) return nullptr;  // Solve reads it and says why
-  const std::string key = file + "|" + std::to_string(size) + "|" +
-                          std::to_string(time.time_since_epoch().count());
-  if (auto hit = cache.find(key); hit != cache.end()) return hit->second;
-  if (cache.size() >= 16) cache.clear();
-  auto system = std::make_shared<const ConstraintSystem>(ParseMinibexFile(file));
-  cache.emplace(key, system);
-  return system;
+  if (error) return "";  // Solve reads it and says why
+  return file + "|" + std::to_string(size) + "|" + std::to_string(time.time_since_epoch().count());
 }
 
 // `solve`: the JSON the command line prints (solve --format json) and the
@@ -61,7 +64,18 @@ py::tuple SolveJson(const std::string& file, const std::string& algorithm, const
                     int repeat, double timeout_s) {
   SolveOptions options;
   options.file = file;
-  options.parsed = Parsed(file);
+  std::string key = FileKey(file);
+  Prepared* prepared = nullptr;
+  if (!key.empty()) {
+    key += "|" + algorithm;
+    for (const auto& [name, value] : ToParamMap(params)) key += "|" + name + "=" + value;
+    auto& cache = PreparedCache();
+    if (cache.size() >= 16 && !cache.contains(key)) cache.clear();
+    prepared = &cache[key];
+    if (!prepared->system) prepared->system = std::make_shared<const ConstraintSystem>(ParseMinibexFile(file));
+    options.parsed = prepared->system;
+    options.contractor = prepared->contractor;
+  }
   options.algorithm = algorithm;
   for (const auto& [key, value] : ToParamMap(params)) options.params.push_back(key + "=" + value);
   options.format = "json";
@@ -72,6 +86,7 @@ py::tuple SolveJson(const std::string& file, const std::string& algorithm, const
     py::gil_scoped_release release;
     result = Solve(options);
   }
+  if (prepared) prepared->contractor = result.contractor;
   return py::make_tuple(SolveResultToJson(result), result.csp.names());
 }
 

@@ -130,3 +130,23 @@ def test_the_example_script_runs(source_dir, tmp_path):
                           env={**os.environ, "MPLBACKEND": "Agg"})
     assert done.returncode == 0, done.stderr
     assert (tmp_path / "mean_area.png").stat().st_size > 0
+
+
+def test_solving_again_reuses_nothing_stale(cli, tmp_path):
+    # solve() keeps what it parsed and built per file, algorithm and parameters:
+    # a second call gives the same box, a changed file or parameter a new one.
+    path = tmp_path / "sum.bch"
+    path.write_text("Variables x1 in [1, 4]; x2 in [1, 2]; x3 in [5, 7];\n"
+                    "Constraints x3 = x1 + x2; end")
+    first = icpbench.solve(path, algorithm="bc4")
+    assert icpbench.solve(path, algorithm="bc4")["box"] == first["box"]
+    assert first["box"]["x1"] == (3.0, 4.0)
+    path.write_text("Variables x1 in [1, 4]; x2 in [1, 2]; x3 in [5, 5.5];\n"
+                    "Constraints x3 = x1 + x2; end")
+    changed = icpbench.solve(path, algorithm="bc4")
+    theirs = cli.json("solve", str(path), "--algorithm", "bc4", "--format", "json")
+    assert changed["box"] == _cli_box(theirs["box"]) and changed["box"]["x3"][1] == 5.5
+    coarse = icpbench.solve(path, algorithm="bc4", ratio=0.5)
+    theirs = cli.json("solve", str(path), "--algorithm", "bc4", "--param", "ratio=0.5",
+                      "--format", "json")
+    assert coarse["box"] == _cli_box(theirs["box"])
