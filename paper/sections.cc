@@ -193,7 +193,7 @@ std::string Thesis003Tex(const std::vector<RunRecord>& runs, const FigureSet& fi
     out << Paragraph(
         "This store holds no run of experiment marina or marina-*: "
         "icpbench run specs/marina.yaml (or specs/default.yaml, experiment "
-        "marina-short) produces them.");
+        "marina-drive) produces them.");
   } else {
     out << PagedTable(tables.at(1));
     out << FigureTex(figures, "fig6_8_marina_tracks",

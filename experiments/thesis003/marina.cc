@@ -120,7 +120,7 @@ std::vector<const RunRecord*> MarinaFigureRuns(const std::vector<RunRecord>& run
     const auto start = r.spec.problem_params.find("start");
     const bool known = start != r.spec.problem_params.end() && start->second == "known";
     return std::make_tuple(r.steps.empty(), ExperimentOf(r) != kThesis003Marina,
-                           ExperimentOf(r) != kThesis003MarinaShort, !known, r.spec.seed);
+                           ExperimentOf(r) != kThesis003MarinaDrive, !known, r.spec.seed);
   };
   for (const RunRecord& r : runs) {
     if (!drawable(r) || !OfMarina(r)) continue;

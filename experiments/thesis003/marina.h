@@ -1,7 +1,7 @@
 // Thesis 003 chapter 6: set-membership localization in a marina against a
 // particle filter (§6.7). Runs are those of spec experiments `marina` and
 // `marina-<anything>` (specs/marina.yaml: `marina`, the full drive, and
-// `marina-outliers`; the default suite: `marina-short`); they give:
+// `marina-outliers`; the default suite: `marina-drive`); they give:
 //
 //   the table "Thesis 003 ch. 6: marina, set membership vs particle filter":
 //   per configuration (algorithm, problem params: start, outlier rate, ...)
@@ -16,7 +16,7 @@
 //   set-membership boxes and centres and the particle cloud's mean: Figs.
 //   6.8 and 6.9 in one) and fig6_errors (centre error over time, both
 //   methods). They draw one seed: the smallest seed of an ok run of
-//   experiment `marina` (else `marina-short`, else any marina-*), with
+//   experiment `marina` (else `marina-drive`, else any marina-*), with
 //   start=known when there is one, and for each algorithm the ok run of
 //   that experiment with the same problem params and seed whose
 //   configuration has the lowest centre RMSE (each method at its best).
@@ -33,7 +33,7 @@
 namespace icp {
 
 inline constexpr char kThesis003Marina[] = "marina";
-inline constexpr char kThesis003MarinaShort[] = "marina-short";
+inline constexpr char kThesis003MarinaDrive[] = "marina-drive";
 
 // Whether a spec experiment's runs are chapter 6's: `marina` or `marina-*`.
 bool IsMarinaExperiment(const std::string& experiment);

@@ -102,7 +102,7 @@ TEST(MarinaFiguresTest, DrawOneSeedOfBothMethodsPreferringTheFullDriveAndAKnownS
       MarinaRun("q-relaxed", "known", 3, {MarinaStep(0, 0, 0.01)}, {}),
       MarinaRun("particle-filter", "known", 3, {MarinaStep(0, 0, 0.01, "particles")}, {}),
       MarinaRun("particle-filter", "known", 4, {MarinaStep(0, 0, 0.01, "particles")}, {}),
-      MarinaRun("q-relaxed", "known", 1, {MarinaStep(0, 0, 0.01)}, {}, kThesis003MarinaShort),
+      MarinaRun("q-relaxed", "known", 1, {MarinaStep(0, 0, 0.01)}, {}, kThesis003MarinaDrive),
   };
   const std::vector<const RunRecord*> drawn = MarinaFigureRuns(runs);
   ASSERT_EQ(drawn.size(), 2u);
