@@ -32,7 +32,7 @@ Panel ToPanel(const MapPanel& p) {
   Panel panel;
   panel.setup = "set title " + MultiLine(p.title) +
                 " noenhanced\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset size ratio -1\n"
-                "set key outside bottom center horizontal noenhanced\n"
+                "set key outside right top vertical noenhanced\n"
                 "set xrange [" + std::to_string(f.x.lo()) + ":" + std::to_string(f.x.hi()) +
                 "]\nset yrange [" + std::to_string(f.y.lo()) + ":" + std::to_string(f.y.hi()) +
                 "]\n";
@@ -46,7 +46,8 @@ Panel ToPanel(const MapPanel& p) {
     Series s;
     switch (l.kind) {
       case MapLayer::Kind::kBoxes:
-        s.spec = "using 1:2:3:4 with boxxyerror fs empty lw 0.6 " + colour;
+        // Filled see-through, so that small boxes show and overlaps read.
+        s.spec = "using 1:2:3:4 with boxxyerror fs transparent solid 0.25 border lw 1.2 " + colour;
         for (const std::vector<double>& b : l.rows) s.rows.push_back(CentreAndHalves(b));
         break;
       case MapLayer::Kind::kTrack:
@@ -54,7 +55,7 @@ Panel ToPanel(const MapPanel& p) {
         s.rows = l.rows;
         break;
       case MapLayer::Kind::kPoints:
-        s.spec = "using 1:2 with points pt 7 ps 0.15 " + colour;
+        s.spec = "using 1:2 with points pt 7 ps 0.3 " + colour;
         s.rows = l.rows;
         break;
     }
@@ -84,23 +85,21 @@ Interval MapYBounds(const MapFrame& f) {
 void FrameToShow(const std::vector<MapLayer>& layers, double margin, const Interval& x_bounds,
                  const Interval& y_bounds, MapFrame* frame) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  for (const bool boxes_only : {true, false}) {
-    double x0 = kInf, x1 = -kInf, y0 = kInf, y1 = -kInf;
-    for (const MapLayer& l : layers) {
-      if (boxes_only != (l.kind == MapLayer::Kind::kBoxes)) continue;
-      for (const std::vector<double>& r : l.rows) {
-        if (!std::all_of(r.begin(), r.end(), [](double v) { return std::isfinite(v); })) continue;
-        const bool box = l.kind == MapLayer::Kind::kBoxes;
-        x0 = std::min(x0, r[0]), x1 = std::max(x1, box ? r[1] : r[0]);
-        y0 = std::min(y0, box ? r[2] : r[1]), y1 = std::max(y1, box ? r[3] : r[1]);
-      }
+  double x0 = kInf, x1 = -kInf, y0 = kInf, y1 = -kInf;
+  for (const MapLayer& l : layers) {
+    const bool box = l.kind == MapLayer::Kind::kBoxes;
+    for (const std::vector<double>& r : l.rows) {
+      if (!std::all_of(r.begin(), r.end(), [](double v) { return std::isfinite(v); })) continue;
+      x0 = std::min(x0, r[0]), x1 = std::max(x1, box ? r[1] : r[0]);
+      y0 = std::min(y0, box ? r[2] : r[1]), y1 = std::max(y1, box ? r[3] : r[1]);
     }
-    if (x0 > x1) continue;
-    frame->x = Interval(std::max(x_bounds.lo(), x0 - margin), std::min(x_bounds.hi(), x1 + margin));
-    frame->y = Interval(std::max(y_bounds.lo(), y0 - margin), std::min(y_bounds.hi(), y1 + margin));
+  }
+  if (x0 > x1) {
+    frame->x = x_bounds, frame->y = y_bounds;
     return;
   }
-  frame->x = x_bounds, frame->y = y_bounds;
+  frame->x = Interval(std::max(x_bounds.lo(), x0 - margin), std::min(x_bounds.hi(), x1 + margin));
+  frame->y = Interval(std::max(y_bounds.lo(), y0 - margin), std::min(y_bounds.hi(), y1 + margin));
 }
 
 std::vector<std::vector<double>> WallCells(const MapFrame& f, int max_cells) {
@@ -137,8 +136,8 @@ void PlotMapFigure(const FigureText& text, const std::vector<MapPanel>& panels, 
   f.title = panels.size() > 1 ? text.title : "";
   f.cols = std::max(1, std::min(cols, static_cast<int>(panels.size())));
   f.rows = (static_cast<int>(panels.size()) + f.cols - 1) / f.cols;
-  f.width_in = 6.5 * f.cols;
-  f.height_in = 5.5 * f.rows + (panels.size() > 1 ? 0.5 : 0);
+  f.width_in = 11 * f.cols;
+  f.height_in = 3.5 * f.rows + (panels.size() > 1 ? 0.5 : 0);
   for (const MapPanel& p : panels) f.panels.push_back(ToPanel(p));
   Render(f, out_dir, out);
 }

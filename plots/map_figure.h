@@ -1,7 +1,7 @@
 // A figure of estimates drawn on a binary map (the marina's Figs. 6.7-6.9):
 // each panel shows the map's set pixels as the background, then layers of
-// boxes (rectangles), tracks (lines) and points (dots), in a frame chosen to
-// show the boxes. Plots know no problem: the caller gives the map as an
+// boxes (see-through rectangles), tracks (lines) and points (dots), in a
+// frame chosen to show them. Plots know no problem: the caller gives the map as an
 // image with its frame and the layers as numbers.
 #ifndef ICPBENCH_PLOTS_MAP_FIGURE_H_
 #define ICPBENCH_PLOTS_MAP_FIGURE_H_
@@ -43,9 +43,8 @@ struct MapPanel {
   std::vector<MapLayer> layers;
 };
 
-// The frame that shows every box of layers (every point when they hold no
-// box) with margin metres on each side, cut to bounds; bounds when the
-// layers hold nothing finite.
+// The frame that shows every box and point of layers with margin metres on
+// each side, cut to bounds; bounds when the layers hold nothing finite.
 void FrameToShow(const std::vector<MapLayer>& layers, double margin, const Interval& x_bounds,
                  const Interval& y_bounds, MapFrame* frame);
 
@@ -53,7 +52,7 @@ void FrameToShow(const std::vector<MapLayer>& layers, double margin, const Inter
 Interval MapXBounds(const MapFrame& frame);
 Interval MapYBounds(const MapFrame& frame);
 
-// The panels side by side (cols per row), equal scales; skipped with
+// The panels in rows of cols, equal scales; skipped with
 // text.skip_reason when no panel has a layer with a point.
 void PlotMapFigure(const FigureText& text, const std::vector<MapPanel>& panels, int cols,
                    const std::string& out_dir, PlotOutput* out);

@@ -46,7 +46,8 @@ std::string StartOf(const RunRecord& r) {
 }
 
 std::string Setting(const RunRecord& r) {
-  return r.spec.problem + " {" + CompactParams(r.spec.problem_params) + "}, seed " +
+  const std::string params = CompactParams(r.spec.problem_params);
+  return r.spec.problem + (params.empty() ? "" : " {" + params + "}") + ", seed " +
          std::to_string(r.spec.seed);
 }
 
@@ -269,7 +270,7 @@ void MarinaFigures(const std::vector<RunRecord>& runs, const std::string& out_di
               "Fig. 6.8: set-membership boxes and centres against the truth, each start's "
               "configuration with the lowest centre RMSE",
               kNone},
-             named, panels, static_cast<int>(panels.size()), out_dir, out);
+             named, panels, 1, out_dir, out);
   // Fig. 6.9: the particle filter from the thesis' prior (else any start).
   const RunRecord* filter = WithSteps(MarinaFigureRuns(runs, "area"), true);
   if (!filter) filter = WithSteps(drawn, true);
