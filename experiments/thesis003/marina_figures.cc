@@ -28,10 +28,11 @@ constexpr const char* kBoxColour = "#e377c2";  // the thesis' pink boxes
 constexpr const char* kCentreColour = "#d62728";
 constexpr const char* kReckonedColour = "#1f77b4";
 constexpr const char* kParticleColour = "#2ca02c";
-// Boxes drawn: every 10th set-membership step, every 50th dead-reckoning
-// box (they grow, so fewer keep the drawing readable); particles: the whole
-// first cloud, then 60 of every 10th step.
-constexpr int kSetBoxesEvery = 10;
+// Boxes drawn: every set-membership step (about a metre wide, they show as
+// a band along the track, see-through), every 50th dead-reckoning box (they
+// grow, so fewer keep the drawing readable); particles: the whole first
+// cloud, then 60 of every 10th step.
+constexpr int kSetBoxesEvery = 1;
 constexpr int kReckonedBoxesEvery = 50;
 constexpr int kParticlesEvery = 10;
 constexpr int kParticlesPerStep = 60;
@@ -188,7 +189,9 @@ MapPanel DeadReckoningPanel(const RunRecord& run, const std::vector<Box>& reckon
 
 MapPanel SetMembershipPanel(const RunRecord& run, int boxes_every, const MapFrame& map) {
   MapLayer boxes{MapLayer::Kind::kBoxes,
-                 "set-membership box (every " + std::to_string(boxes_every) + "th step)",
+                 boxes_every == 1 ? std::string("set-membership box (every step)")
+                                  : "set-membership box (every " + std::to_string(boxes_every) +
+                                        "th step)",
                  kBoxColour, {}};
   MapLayer centre{MapLayer::Kind::kTrack, "box centre", kCentreColour, {}};
   for (std::size_t k = 0; k < run.steps.size(); ++k) {

@@ -6,7 +6,7 @@
 //                          the reference run's problem (its first prior
 //                          carried by the motion's intervals alone);
 //   fig6_8_marina_tracks   one panel per start (known, area, unknown): the
-//                          set-membership boxes (every 10th step) and their
+//                          set-membership boxes (every step) and their
 //                          centres against the truth, from the stored steps
 //                          of q-relaxed's configuration with the lowest
 //                          centre RMSE, in a frame that shows the boxes;
