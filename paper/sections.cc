@@ -193,12 +193,17 @@ std::string Thesis003Tex(const std::vector<RunRecord>& runs, const FigureSet& fi
     out << Paragraph(
         "This store holds no run of experiment marina or marina-*: "
         "icpbench run specs/marina.yaml (or specs/default.yaml, experiment "
-        "marina-short) produces them.");
+        "marina-drive) produces them.");
   } else {
     out << PagedTable(tables.at(1));
+    out << FigureTex(figures, "fig6_7_dead_reckoning",
+                     "Fig. 6.7: dead-reckoning boxes and their centre against the truth");
     out << FigureTex(figures, "fig6_8_marina_tracks",
-                     "Figs. 6.8 and 6.9: the marina, the truth, the set-membership boxes and "
-                     "the particle filter's mean");
+                     "Fig. 6.8: set-membership boxes and centres against the truth, one panel "
+                     "per start (known, the 10,368 m² area, unknown)");
+    out << FigureTex(figures, "fig6_9_particles",
+                     "Fig. 6.9: 600 particles over the 10,368 m² prior and the filter's mean "
+                     "track");
     out << FigureTex(figures, "fig6_errors", "Centre error over time, both methods");
   }
   out << PagedTable(

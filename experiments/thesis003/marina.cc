@@ -3,11 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <tuple>
-#include <utility>
 
 #include "harness/metrics.h"
-#include "problems/marina_sonar/marina_sonar.h"
 
 namespace icp {
 
@@ -29,22 +26,6 @@ std::optional<double> Restarts(const RunRecord& r) {
 }
 
 std::string Cell(double v) { return std::isnan(v) ? kDash : FormatNumber(v); }
-
-// The centres of the wall pixels of a run's map (the shipped one unless its
-// params name another), for drawing.
-std::vector<std::pair<double, double>> MarinaWallPoints(const ParamMap& problem_params) {
-  const auto p = ParseParams<MarinaSonarParams>("marina-sonar", problem_params);
-  const MarinaMap map = LoadMarinaMap(p.map.empty() ? ShippedMarinaMapPath() : p.map);
-  const BinaryImage& image = *map.image;
-  const ImageFrame& f = image.frame();
-  std::vector<std::pair<double, double>> points;
-  for (int r = 0; r < image.rows(); ++r)
-    for (int c = 0; c < image.cols(); ++c)
-      if (image.IsSet(r, c))
-        points.push_back({f.origin_x + (c + 0.5) * f.pixel_size,
-                          f.origin_y + (image.rows() - r - 0.5) * f.pixel_size});
-  return points;
-}
 
 }  // namespace
 
@@ -107,74 +88,6 @@ TextTable MarinaTable(const std::vector<RunRecord>& runs) {
   if (t.rows.size() == 2)
     t.notes.push_back("No run of experiment marina or marina-* in the store (specs/marina.yaml).");
   return t;
-}
-
-std::vector<const RunRecord*> MarinaFigureRuns(const std::vector<RunRecord>& runs) {
-  // Runs with steps first; runs stored with `record: runs` only where no
-  // run with steps takes their place, so that the figures can name them.
-  auto drawable = [](const RunRecord& r) {
-    return r.status == RunStatus::kOk && (!r.steps.empty() || RecordedRunsOnly(r));
-  };
-  const RunRecord* reference = nullptr;
-  auto rank = [](const RunRecord& r) {
-    const auto start = r.spec.problem_params.find("start");
-    const bool known = start != r.spec.problem_params.end() && start->second == "known";
-    return std::make_tuple(r.steps.empty(), ExperimentOf(r) != kThesis003Marina,
-                           ExperimentOf(r) != kThesis003MarinaShort, !known, r.spec.seed);
-  };
-  for (const RunRecord& r : runs) {
-    if (!drawable(r) || !OfMarina(r)) continue;
-    if (!reference || rank(r) < rank(*reference)) reference = &r;
-  }
-  std::vector<const RunRecord*> out;
-  if (!reference) return out;
-  // One run per algorithm: its configuration with the lowest centre RMSE.
-  for (const RunRecord& r : runs) {
-    if (!drawable(r) || ExperimentOf(r) != ExperimentOf(*reference) ||
-        r.spec.problem != reference->spec.problem ||
-        r.spec.problem_params != reference->spec.problem_params ||
-        r.spec.seed != reference->spec.seed)
-      continue;
-    auto same = std::find_if(out.begin(), out.end(), [&](const RunRecord* o) {
-      return o->spec.algorithm == r.spec.algorithm;
-    });
-    if (same == out.end())
-      out.push_back(&r);
-    else if (std::make_pair(r.steps.empty(), r.metrics.centre_rmse) <
-             std::make_pair((*same)->steps.empty(), (*same)->metrics.centre_rmse))
-      *same = &r;
-  }
-  std::stable_sort(out.begin(), out.end(), [](const RunRecord* a, const RunRecord* b) {
-    return AlgorithmLess(a->spec.algorithm, b->spec.algorithm);
-  });
-  return out;
-}
-
-void MarinaFigures(const std::vector<RunRecord>& runs, const std::string& out_dir,
-                   PlotOutput* out) {
-  const std::string none = "no ok run of experiment marina or marina-*";
-  const std::vector<const RunRecord*> drawn = MarinaFigureRuns(runs);
-  const bool steps = std::any_of(drawn.begin(), drawn.end(),
-                                 [](const RunRecord* r) { return !r->steps.empty(); });
-  if (!steps) {  // none, or stored with `record: runs`: the messages say which
-    SkipFigure({"fig6_8_marina_tracks", "", none}, drawn, out);
-    SkipFigure({"fig6_errors", "", none}, drawn, out);
-    return;
-  }
-  const RunRecord& first = *drawn[0];
-  const std::string setting = first.spec.problem + " {" + CompactParams(first.spec.problem_params) +
-                              "}, seed " + std::to_string(first.spec.seed);
-  std::vector<std::pair<double, double>> walls;
-  std::string title = "Marina: truth, set-membership boxes and particle mean, each method's "
-                      "configuration with the lowest centre RMSE\n(" + setting + ")";
-  try {
-    walls = MarinaWallPoints(first.spec.problem_params);
-  } catch (const std::exception& e) {
-    title += "\n(map not drawn: " + std::string(e.what()) + ")";
-  }
-  PlotTrackFigure({"fig6_8_marina_tracks", title, none}, walls, drawn, 10, out_dir, out);
-  PlotCentreErrorFigure({"fig6_errors", "Marina: centre error over time (" + setting + ")", none},
-                        drawn, out_dir, out);
 }
 
 }  // namespace icp

@@ -1,4 +1,5 @@
 #include "experiments/thesis003/marina.h"
+#include "experiments/thesis003/marina_figures.h"
 
 #include <gtest/gtest.h>
 
@@ -102,7 +103,7 @@ TEST(MarinaFiguresTest, DrawOneSeedOfBothMethodsPreferringTheFullDriveAndAKnownS
       MarinaRun("q-relaxed", "known", 3, {MarinaStep(0, 0, 0.01)}, {}),
       MarinaRun("particle-filter", "known", 3, {MarinaStep(0, 0, 0.01, "particles")}, {}),
       MarinaRun("particle-filter", "known", 4, {MarinaStep(0, 0, 0.01, "particles")}, {}),
-      MarinaRun("q-relaxed", "known", 1, {MarinaStep(0, 0, 0.01)}, {}, kThesis003MarinaShort),
+      MarinaRun("q-relaxed", "known", 1, {MarinaStep(0, 0, 0.01)}, {}, kThesis003MarinaDrive),
   };
   const std::vector<const RunRecord*> drawn = MarinaFigureRuns(runs);
   ASSERT_EQ(drawn.size(), 2u);
@@ -123,11 +124,14 @@ TEST(MarinaFiguresTest, DrawOneSeedOfBothMethodsPreferringTheFullDriveAndAKnownS
   EXPECT_TRUE(MarinaFigureRuns({}).empty());
 }
 
-TEST(MarinaFiguresTest, WritesBothFiguresOrSaysWhyNot) {
+TEST(MarinaFiguresTest, WritesTheFourFiguresOrSaysWhyNot) {
   PlotOutput none;
   MarinaFigures({}, TempDir("marina_figures_none").string(), &none);
-  ASSERT_EQ(none.messages.size(), 2u);
-  EXPECT_NE(none.messages[0].find("fig6_8_marina_tracks: skipped"), std::string::npos);
+  const std::string no_run = ": skipped: no ok run of experiment marina or marina-*";
+  EXPECT_EQ(none.messages,
+            (std::vector<std::string>{"fig6_7_dead_reckoning" + no_run,
+                                      "fig6_8_marina_tracks" + no_run,
+                                      "fig6_9_particles" + no_run, "fig6_errors" + no_run}));
   if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
   const std::vector<RunRecord> runs = {
       MarinaRun("q-relaxed", "known", 1, {MarinaStep(0, 0, 0.01), MarinaStep(1, 0.5, 0.01)}, {}),
@@ -138,12 +142,13 @@ TEST(MarinaFiguresTest, WritesBothFiguresOrSaysWhyNot) {
   std::filesystem::create_directories(dir);
   PlotOutput out;
   MarinaFigures(runs, dir.string(), &out);
-  EXPECT_EQ(out.files, FigureFiles(dir, {"fig6_8_marina_tracks", "fig6_errors"}))
+  EXPECT_EQ(out.files, FigureFiles(dir, {"fig6_7_dead_reckoning", "fig6_8_marina_tracks",
+                                         "fig6_9_particles", "fig6_errors"}))
       << ::testing::PrintToString(out.messages);
 }
 
 // A store of marina runs recorded with `record: runs` has ok runs but no
-// steps to draw: both figures say so, not that there is no run.
+// steps to draw: the figures say so, not that there is no run.
 TEST(MarinaFiguresTest, RunsRecordedWithoutStepsAreNamed) {
   const std::vector<RunRecord> runs = {
       RunsOnly(MarinaRun("q-relaxed", "known", 1, {MarinaStep(0, 0, 0.01)}, {})),
@@ -155,8 +160,9 @@ TEST(MarinaFiguresTest, RunsRecordedWithoutStepsAreNamed) {
   const std::string why =
       ": skipped: it needs step rows, and 2 runs were recorded with `record: runs` (experiment "
       "marina; run metrics only, no step rows; rerun with record: steps to draw them)";
-  EXPECT_EQ(out.messages, (std::vector<std::string>{"fig6_8_marina_tracks" + why,
-                                                    "fig6_errors" + why}));
+  EXPECT_EQ(out.messages,
+            (std::vector<std::string>{"fig6_7_dead_reckoning" + why, "fig6_8_marina_tracks" + why,
+                                      "fig6_9_particles" + why, "fig6_errors" + why}));
   EXPECT_TRUE(out.files.empty());
   // An algorithm whose only run has no steps is left out with a note.
   if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
@@ -167,12 +173,18 @@ TEST(MarinaFiguresTest, RunsRecordedWithoutStepsAreNamed) {
   std::filesystem::create_directories(dir);
   out = {};
   MarinaFigures(mixed, dir.string(), &out);
-  EXPECT_EQ(out.files, FigureFiles(dir, {"fig6_8_marina_tracks", "fig6_errors"}));
-  const std::string note =
-      ": drawn without 1 run recorded with `record: runs` (experiment marina; run metrics "
-      "only, no step rows; rerun with record: steps to draw them)";
-  EXPECT_EQ(out.messages, (std::vector<std::string>{"fig6_8_marina_tracks" + note,
-                                                    "fig6_errors" + note}));
+  // The set-membership figures draw; the particles need the filter's steps.
+  EXPECT_EQ(out.files,
+            FigureFiles(dir, {"fig6_7_dead_reckoning", "fig6_8_marina_tracks", "fig6_errors"}));
+  const std::string one =
+      "1 run recorded with `record: runs` (experiment marina; run metrics only, no step rows; "
+      "rerun with record: steps to draw them)";
+  EXPECT_EQ(out.messages,
+            (std::vector<std::string>{"fig6_9_particles: skipped: it needs step rows, and 1 run "
+                                      "was recorded with `record: runs` (experiment marina; run "
+                                      "metrics only, no step rows; rerun with record: steps to "
+                                      "draw them)",
+                                      "fig6_errors: drawn without " + one}));
   std::filesystem::remove_all(dir);
 }
 

@@ -1,6 +1,7 @@
 #include "experiments/thesis003/thesis003.h"
 
 #include "experiments/thesis003/marina.h"
+#include "experiments/thesis003/marina_figures.h"
 
 #include <algorithm>
 #include <cmath>

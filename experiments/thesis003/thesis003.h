@@ -10,7 +10,7 @@
 //                    ranging beacons, source 0 alone, source 1 alone and
 //                    their sum (fig5_5_robot_a, fig5_6_robot_b, fig5_7_sum).
 //   marina,          chapter 6, set membership vs particle filter in a
-//   marina-short     marina: experiments/thesis003/marina.h.
+//   marina-drive     marina: experiments/thesis003/marina.h.
 //   relaxed-lines,   the table "Thesis 003: relaxed solvers": every
 //   relaxed-beacons  configuration (algorithm, params, problem, params) with
 //                    a run of either experiment, pooled over its ok runs

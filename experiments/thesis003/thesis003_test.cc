@@ -203,7 +203,9 @@ TEST(Thesis003Test, FiguresAreWritten) {
   // Chapter 6's figures have no run here (marina_test.cc draws them).
   EXPECT_EQ(out.messages,
             (std::vector<std::string>{
+                "fig6_7_dead_reckoning: skipped: no ok run of experiment marina or marina-*",
                 "fig6_8_marina_tracks: skipped: no ok run of experiment marina or marina-*",
+                "fig6_9_particles: skipped: no ok run of experiment marina or marina-*",
                 "fig6_errors: skipped: no ok run of experiment marina or marina-*"}));
   EXPECT_EQ(out.files, FigureFiles(dir, {"fig5_2_accumulator", "fig5_5_robot_a", "fig5_6_robot_b",
                                          "fig5_7_sum"}));
@@ -242,7 +244,9 @@ TEST(Thesis003Test, WithoutItsExperimentsTheFiguresSaySo) {
                 "fig5_5_robot_a: skipped: no ok accumulator run of experiment fig5_5",
                 "fig5_6_robot_b: skipped: no ok accumulator run of experiment fig5_5",
                 "fig5_7_sum: skipped: no ok accumulator run of experiment fig5_5",
+                "fig6_7_dead_reckoning: skipped: no ok run of experiment marina or marina-*",
                 "fig6_8_marina_tracks: skipped: no ok run of experiment marina or marina-*",
+                "fig6_9_particles: skipped: no ok run of experiment marina or marina-*",
                 "fig6_errors: skipped: no ok run of experiment marina or marina-*"}));
 }
 

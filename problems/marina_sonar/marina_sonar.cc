@@ -17,9 +17,10 @@ constexpr double kPi = std::numbers::pi;
 
 void Describe(MarinaSonarParams& p, ParamSet& set) {
   set.Add("start", &p.start,
-          "known: track from the true start ± start_error; unknown: global localization, the "
+          "known: track from the true start ± start_error; area: a 144 x 72 m box (10,368 m², "
+          "the thesis' Fig. 6.9 prior) about the true start; unknown: global localization, the "
           "whole map as the first prior",
-          {"known", "unknown"});
+          {"known", "area", "unknown"});
   set.Add("start_error", &p.start_error, "half-width of the known start box on x and y, m",
           Range::Positive(1000));
   set.Add("steps", &p.steps,
@@ -90,6 +91,16 @@ Interval Around(double x, double e) { return Interval(x) + Interval(-e, e); }
 
 }  // namespace
 
+Box MarinaAreaStart(double x, double y, const Box& bounds) {
+  // Centred on the truth, then slid along each axis back into the bounds.
+  auto side = [](double centre, double width, const Interval& in) {
+    double lo = centre - width / 2;
+    if (in.Width() >= width) lo = std::clamp(lo, in.lo(), in.hi() - width);
+    return Interval(lo, lo + width);
+  };
+  return Box({side(x, kMarinaAreaStartX, bounds[0]), side(y, kMarinaAreaStartY, bounds[1])});
+}
+
 Displacement DeadReckoning(const MarinaRecord& r, const Interval& dt) {
   const Interval u = Around(r.dvl_u, r.dvl_error), v = Around(r.dvl_v, r.dvl_error);
   const Interval th = Around(r.heading, r.heading_error);
@@ -111,8 +122,8 @@ void CheckDrive(const MarinaSonarParams& params, const std::vector<MarinaRecord>
                                   FormatDouble(r.truth_x) + ", " + FormatDouble(r.truth_y) +
                                   ") lies outside the map");
   }
-  if (params.start == "known" && (records.empty() || !records[0].has_truth))
-    throw ParamError("marina-sonar.start = known: the first step has no truth");
+  if (params.start != "unknown" && (records.empty() || !records[0].has_truth))
+    throw ParamError("marina-sonar.start = " + params.start + ": the first step has no truth");
 }
 
 }  // namespace
@@ -126,6 +137,8 @@ MarinaSonarProblem::MarinaSonarProblem(const MarinaSonarParams& params, MarinaMa
     start_box_ = Intersect(Box({Around(records_[0].truth_x, params_.start_error),
                                 Around(records_[0].truth_y, params_.start_error)}),
                            map_.bounds);
+  } else if (params_.start == "area") {
+    start_box_ = MarinaAreaStart(records_[0].truth_x, records_[0].truth_y, map_.bounds);
   }
   motion_.resize(num_steps_);
   for (int k = 1; k < num_steps_; ++k)

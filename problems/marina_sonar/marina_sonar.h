@@ -50,7 +50,9 @@
 namespace icp {
 
 struct MarinaSonarParams {
-  // known: position tracking from the true start ± start_error; unknown:
+  // known: position tracking from the true start ± start_error; area: the
+  // thesis' particle prior (Fig. 6.9), a kMarinaAreaStartX x
+  // kMarinaAreaStartY m box (10,368 m²) about the true start; unknown:
   // global localization, the whole map as the first prior.
   std::string start = "known";
   // Half-width of the known start box on x and y, m.
@@ -111,6 +113,13 @@ void Describe(MarinaSonarParams& p, ParamSet& set);
 // straight for dt seconds (the dead-reckoning model), so a longer step would
 // cut the route's corners through the quays or miss the 20 m wide canal.
 inline constexpr double kMarinaMaxStep = 20;
+// The sides of the start=area prior, m: the 10,368 m² over which the
+// thesis spreads its 600 particles (Fig. 6.9).
+inline constexpr double kMarinaAreaStartX = 144;
+inline constexpr double kMarinaAreaStartY = 72;
+// The start=area prior: the sides above centred on the truth (x, y), moved
+// (not cut) to lie inside bounds when they fit, so its area stays 10,368 m².
+Box MarinaAreaStart(double x, double y, const Box& bounds);
 // Parses, validates (map without log), loads the map and reads the log so
 // that bad files fail early; returns the effective parameters.
 ParamMap ResolveMarinaSonar(const std::string& owner, const ParamMap& values);

@@ -55,7 +55,8 @@ std::vector<double> UniformInWater(const Box& box, const BinaryImage& map, Rando
 bool MarinaSonarProblem::Next(Step* step) {
   if (k_ >= num_steps_) return false;
   const int k = k_++;
-  const bool known = params_.start == "known";
+  // known and area start from a box about the truth, unknown from the map.
+  const bool known = params_.start != "unknown";
   const MarinaRecord& r = records_[k];
   *step = Step();
   step->views.step = k;

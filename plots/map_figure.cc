@@ -1,0 +1,151 @@
+// Estimates on a binary map: the map's wall pixels, then boxes, tracks and
+// points (plots/map_figure.h).
+#include "plots/map_figure.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "plots/figures_internal.h"
+
+namespace icp {
+
+namespace {
+
+// Wall cells drawn per side at most: enough to read the quays, few enough
+// that the inline data stays small.
+constexpr int kMaxWallCells = 300;
+
+// {x lo, x hi, y lo, y hi} as {x, y, half width, half height}, what
+// gnuplot's boxxyerror reads.
+std::vector<double> CentreAndHalves(const std::vector<double>& b) {
+  return {Finite((b[0] + b[1]) / 2), Finite((b[2] + b[3]) / 2), Finite((b[1] - b[0]) / 2),
+          Finite((b[3] - b[2]) / 2)};
+}
+
+std::string Title(const std::string& t) { return t.empty() ? "notitle" : "title " + Quote(t); }
+
+Panel ToPanel(const MapPanel& p) {
+  const MapFrame& f = p.frame;
+  Panel panel;
+  panel.setup = "set title " + MultiLine(p.title) +
+                " noenhanced\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset size ratio -1\n"
+                "set key outside right top vertical noenhanced\n"
+                "set xrange [" + std::to_string(f.x.lo()) + ":" + std::to_string(f.x.hi()) +
+                "]\nset yrange [" + std::to_string(f.y.lo()) + ":" + std::to_string(f.y.hi()) +
+                "]\n";
+  Series walls{"using 1:2:3:4 with boxxyerror fs solid 1.0 noborder lc rgb '#c8c8c8' title 'map'",
+               {}, ""};
+  for (const std::vector<double>& c : WallCells(f, kMaxWallCells))
+    walls.rows.push_back(CentreAndHalves(c));
+  if (HasPoint(walls)) panel.series.push_back(std::move(walls));
+  for (const MapLayer& l : p.layers) {
+    const std::string colour = "lc rgb " + Quote(l.colour) + " " + Title(l.title);
+    Series s;
+    switch (l.kind) {
+      case MapLayer::Kind::kBoxes:
+        // Filled see-through, so that small boxes show and overlaps read.
+        s.spec = "using 1:2:3:4 with boxxyerror fs transparent solid 0.25 border lw 1.2 " + colour;
+        for (const std::vector<double>& b : l.rows) s.rows.push_back(CentreAndHalves(b));
+        break;
+      case MapLayer::Kind::kTrack:
+        s.spec = "using 1:2 with lines lw 1.5 " + colour;
+        s.rows = l.rows;
+        break;
+      case MapLayer::Kind::kPoints:
+        s.spec = "using 1:2 with points pt 7 ps 0.3 " + colour;
+        s.rows = l.rows;
+        break;
+    }
+    if (HasPoint(s)) panel.series.push_back(std::move(s));
+  }
+  return panel;
+}
+
+bool HasLayerPoint(const MapPanel& p) {
+  return std::any_of(p.layers.begin(), p.layers.end(), [](const MapLayer& l) {
+    return std::any_of(l.rows.begin(), l.rows.end(), [](const std::vector<double>& r) {
+      return std::all_of(r.begin(), r.end(), [](double v) { return std::isfinite(v); });
+    });
+  });
+}
+
+}  // namespace
+
+Interval MapXBounds(const MapFrame& f) {
+  return Interval(f.origin_x, f.origin_x + f.walls.cols * f.pixel_size);
+}
+
+Interval MapYBounds(const MapFrame& f) {
+  return Interval(f.origin_y, f.origin_y + f.walls.rows * f.pixel_size);
+}
+
+void FrameToShow(const std::vector<MapLayer>& layers, double margin, const Interval& x_bounds,
+                 const Interval& y_bounds, MapFrame* frame) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  double x0 = kInf, x1 = -kInf, y0 = kInf, y1 = -kInf;
+  for (const MapLayer& l : layers) {
+    const bool box = l.kind == MapLayer::Kind::kBoxes;
+    for (const std::vector<double>& r : l.rows) {
+      if (!std::all_of(r.begin(), r.end(), [](double v) { return std::isfinite(v); })) continue;
+      x0 = std::min(x0, r[0]), x1 = std::max(x1, box ? r[1] : r[0]);
+      y0 = std::min(y0, box ? r[2] : r[1]), y1 = std::max(y1, box ? r[3] : r[1]);
+    }
+  }
+  if (x0 > x1) {
+    frame->x = x_bounds, frame->y = y_bounds;
+    return;
+  }
+  frame->x = Interval(std::max(x_bounds.lo(), x0 - margin), std::min(x_bounds.hi(), x1 + margin));
+  frame->y = Interval(std::max(y_bounds.lo(), y0 - margin), std::min(y_bounds.hi(), y1 + margin));
+}
+
+std::vector<std::vector<double>> WallCells(const MapFrame& f, int max_cells) {
+  std::vector<std::vector<double>> cells;
+  if (f.walls.empty() || f.pixel_size <= 0) return cells;
+  // The pixel columns and rows (row 0 at the top) that meet the frame.
+  const int rows = f.walls.rows, cols = f.walls.cols;
+  auto col_of = [&](double x) { return static_cast<int>(std::floor((x - f.origin_x) / f.pixel_size)); };
+  auto row_of = [&](double y) {
+    return rows - 1 - static_cast<int>(std::floor((y - f.origin_y) / f.pixel_size));
+  };
+  const int c0 = std::max(0, col_of(f.x.lo())), c1 = std::min(cols - 1, col_of(f.x.hi()));
+  const int r0 = std::max(0, row_of(f.y.hi())), r1 = std::min(rows - 1, row_of(f.y.lo()));
+  if (c0 > c1 || r0 > r1) return cells;
+  const int side = std::max(c1 - c0 + 1, r1 - r0 + 1);
+  const int block = std::max(1, (side + max_cells - 1) / max_cells);
+  for (int r = r0; r <= r1; r += block) {
+    for (int c = c0; c <= c1; c += block) {
+      const int re = std::min(r1 + 1, r + block), ce = std::min(c1 + 1, c + block);
+      if (cv::countNonZero(f.walls(cv::Range(r, re), cv::Range(c, ce))) == 0) continue;
+      cells.push_back({f.origin_x + c * f.pixel_size, f.origin_x + ce * f.pixel_size,
+                       f.origin_y + (rows - re) * f.pixel_size,
+                       f.origin_y + (rows - r) * f.pixel_size});
+    }
+  }
+  return cells;
+}
+
+void PlotMapFigure(const FigureText& text, const std::vector<MapPanel>& panels, int cols,
+                   const std::string& out_dir, PlotOutput* out) {
+  if (std::none_of(panels.begin(), panels.end(), HasLayerPoint)) return Skip(text, out);
+  Figure f;
+  f.name = text.name;
+  f.title = panels.size() > 1 ? text.title : "";
+  f.cols = std::max(1, std::min(cols, static_cast<int>(panels.size())));
+  f.rows = (static_cast<int>(panels.size()) + f.cols - 1) / f.cols;
+  f.width_in = 11 * f.cols;
+  f.height_in = 3.5 * f.rows + (panels.size() > 1 ? 0.5 : 0);
+  for (const MapPanel& p : panels) f.panels.push_back(ToPanel(p));
+  Render(f, out_dir, out);
+}
+
+void PlotMapFigure(const FigureText& text, const MapFrame& frame,
+                   const std::vector<MapLayer>& layers, const std::string& out_dir,
+                   PlotOutput* out) {
+  PlotMapFigure(text, {{text.title, frame, layers}}, 1, out_dir, out);
+}
+
+}  // namespace icp
