@@ -107,7 +107,15 @@ PYBIND11_MODULE(_icpbench, m) {
       PyErr_SetString(PyExc_OSError, e.what());
     } catch (const icp::StoreError& e) {  // the command line's exit 2, too
       PyErr_SetString(PyExc_ValueError, e.what());
-    } catch (const icp::MinibexError& e) {
+    } catch (const std::filesystem::filesystem_error& e) {  // creating an output
+      const int code = e.code().value();
+      if (icp::IsEnvironmentErrno(code)) {
+        const std::string message = std::string(e.what()) + " (" + icp::EnvironmentAdvice(code) + ")";
+        PyErr_SetObject(PyExc_OSError, py::make_tuple(code, message).ptr());
+      } else {
+        PyErr_SetString(PyExc_ValueError, e.what());
+      }
+    } catch (const std::runtime_error& e) {  // a malformed file: the command line's exit 2
       PyErr_SetString(PyExc_ValueError, e.what());
     }
   });

@@ -150,3 +150,15 @@ def test_solving_again_reuses_nothing_stale(cli, tmp_path):
     theirs = cli.json("solve", str(path), "--algorithm", "bc4", "--param", "ratio=0.5",
                       "--format", "json")
     assert coarse["box"] == _cli_box(theirs["box"])
+
+
+@pytest.mark.parametrize("out", ["/sys/icpbench-not-here", "/dev/null/icpbench-not-here"])
+def test_errors_are_classed_as_the_command_lines_exit_codes(cli, source_dir, out):
+    # exit 3 (the environment) is OSError, exit 2 (bad input) is ValueError.
+    spec = os.path.join(source_dir, "specs", "tour.yaml")
+    theirs = cli("run", spec, "--out", out, check=False)
+    expected = {2: ValueError, 3: OSError}[theirs.returncode]
+    with pytest.raises(expected) as error:
+        icpbench.run(spec, out=out)
+    assert type(error.value) is expected
+    assert str(error.value).split(" (")[0] in theirs.stderr
