@@ -115,6 +115,8 @@ PYBIND11_MODULE(_icpbench, m) {
       } else {
         PyErr_SetString(PyExc_ValueError, e.what());
       }
+    } catch (const py::builtin_exception& e) {  // StopIteration, IndexError, ...: as raised
+      e.set_error();
     } catch (const std::runtime_error& e) {  // a malformed file: the command line's exit 2
       PyErr_SetString(PyExc_ValueError, e.what());
     }
