@@ -11,6 +11,7 @@
 #include "algorithms/relaxed/relaxed_testing.h"
 #include "core/accumulate.h"
 #include "core/box_polynomial.h"
+#include "core/box_polynomial_testing.h"
 #include "core/random.h"
 #include "core/relaxed_intersection.h"
 
@@ -55,24 +56,10 @@ BENCHMARK(BM_PolynomialHorner)->DenseRange(4, 16, 4)->Arg(64)->Complexity(benchm
 // Coefficient j as the hull, over the subsets of j measurements, of their
 // composition applied to the prior: what the Horner scheme avoids.
 void BM_PolynomialBruteForce(benchmark::State& state) {
-  const int m = static_cast<int>(state.range(0));
-  const auto c = testing::Lines(3, m, 2);
-  const auto& ms = c.views.measurement_set->measurements;
-  for (auto _ : state) {
-    std::vector<Box> coefficients(m + 1, Box(2));
-    for (Box& b : coefficients) b.SetEmpty();
-    for (std::uint32_t mask = 0; mask < (1u << m); ++mask) {
-      Box box = c.views.measurement_set->prior;
-      for (int i = 0; i < m && !box.IsEmpty(); ++i)
-        if (mask & (1u << i)) {
-          ContractContext context;
-          ms[i]->Contract(box, context);
-        }
-      Box& k = coefficients[__builtin_popcount(mask)];
-      k = Hull(k, box);
-    }
-    benchmark::DoNotOptimize(coefficients);
-  }
+  const auto c = testing::Lines(3, static_cast<int>(state.range(0)), 2);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        testing::ExpandedSortTransform(c.views.measurement_set->prior, c.views.measurement_set->measurements));
 }
 BENCHMARK(BM_PolynomialBruteForce)->DenseRange(4, 16, 4);
 
