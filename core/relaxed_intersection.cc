@@ -52,105 +52,129 @@ class MaxAddTree {
   std::vector<int> max_, add_;
 };
 
-// A box's extent along the sweep dimension, negated for a downward sweep so
-// that every sweep runs upwards: it enters at `enter`, leaves past `leave`.
-struct Extent {
-  double enter, leave;
+// The live boxes' bounds, flat (box i, dimension d at i * n + d).
+struct Bounds {
+  std::size_t n;
+  std::vector<double> lo, hi;
+  double Lo(int i, std::size_t d) const { return lo[i * n + d]; }
+  double Hi(int i, std::size_t d) const { return hi[i * n + d]; }
 };
-Extent ExtentOf(const Interval& x, bool downward) {
-  return downward ? Extent{-x.hi(), -x.lo()} : Extent{x.lo(), x.hi()};
+
+// The sweeps along dimension d with one other dimension r: the boxes by
+// lower and by upper bound along d, and their bounds along r as ranks among
+// the sorted bounds of r (the points a max-add tree counts over).
+struct SweepPlan {
+  std::vector<int> by_lo, by_hi;
+  std::vector<int> rank_lo, rank_hi;  // indexed by box
+  int points = 0;
+};
+
+std::vector<int> SortedBy(const std::vector<int>& live, const std::vector<double>& key, std::size_t n,
+                          std::size_t d) {
+  std::vector<int> out = live;
+  std::sort(out.begin(), out.end(), [&](int a, int b) { return key[a * n + d] < key[b * n + d]; });
+  return out;
 }
 
-class Sweep {
- public:
-  Sweep(std::span<const Box> boxes, int need) : boxes_(boxes), need_(need) {}
-
-  // The lowest t (negated when downward: the highest) such that some point
-  // with x_d = t lies in `need` of the boxes `live` (indices into boxes),
-  // the other coordinates ranging over the dimensions `rest`; kInf if none.
-  // Such a point, when it exists, is the corner of an intersection of closed
-  // boxes, so t is a box bound: only those are tried, in ascending order.
-  double FirstCovered(const std::vector<int>& live, std::size_t d, bool downward,
-                      std::span<const std::size_t> rest) const {
-    if (static_cast<int>(live.size()) < need_) return kInf;
-    std::vector<double> enters, leaves;
-    if (rest.empty()) {
-      for (int i : live) {
-        const Extent e = ExtentOf(boxes_[i][d], downward);
-        enters.push_back(e.enter);
-        leaves.push_back(e.leave);
-      }
-      std::sort(enters.begin(), enters.end());
-      std::sort(leaves.begin(), leaves.end());
-      return LowestCovered(enters, leaves, need_);
-    }
-    std::vector<int> by_enter = live, by_leave = live;
-    std::sort(by_enter.begin(), by_enter.end(), [&](int a, int b) {
-      return ExtentOf(boxes_[a][d], downward).enter < ExtentOf(boxes_[b][d], downward).enter;
-    });
-    std::sort(by_leave.begin(), by_leave.end(), [&](int a, int b) {
-      return ExtentOf(boxes_[a][d], downward).leave < ExtentOf(boxes_[b][d], downward).leave;
-    });
-    return rest.size() == 1 ? SweepOverOne(by_enter, by_leave, d, downward, rest[0])
-                            : SweepOverMany(by_enter, by_leave, d, downward, rest);
+SweepPlan Plan(const Bounds& b, const std::vector<int>& live, std::size_t d, std::size_t r, int boxes) {
+  SweepPlan plan;
+  plan.by_lo = SortedBy(live, b.lo, b.n, d);
+  plan.by_hi = SortedBy(live, b.hi, b.n, d);
+  std::vector<double> coords;
+  coords.reserve(2 * live.size());
+  for (int i : live) {
+    coords.push_back(b.Lo(i, r));
+    coords.push_back(b.Hi(i, r));
   }
-
- private:
-  // One dimension r left: the boxes open at t as ranges over the sorted
-  // bounds of r, the deepest point read from a max-add tree.
-  double SweepOverOne(const std::vector<int>& by_enter, const std::vector<int>& by_leave, std::size_t d,
-                      bool downward, std::size_t r) const {
-    std::vector<double> coords;
-    coords.reserve(2 * by_enter.size());
-    for (int i : by_enter) {
-      coords.push_back(boxes_[i][r].lo());
-      coords.push_back(boxes_[i][r].hi());
-    }
-    std::sort(coords.begin(), coords.end());
-    coords.erase(std::unique(coords.begin(), coords.end()), coords.end());
-    auto index = [&](double v) {
-      return static_cast<int>(std::lower_bound(coords.begin(), coords.end(), v) - coords.begin());
-    };
-    MaxAddTree tree(static_cast<int>(coords.size()));
-    auto add = [&](int i, int value) { tree.Add(index(boxes_[i][r].lo()), index(boxes_[i][r].hi()), value); };
-    std::size_t next = 0, closed = 0;
-    while (next < by_enter.size()) {
-      const double t = ExtentOf(boxes_[by_enter[next]][d], downward).enter;
-      // A box whose extent ends below t entered earlier: t is past its enter.
-      for (; closed < by_leave.size() && ExtentOf(boxes_[by_leave[closed]][d], downward).leave < t; ++closed)
-        add(by_leave[closed], -1);
-      for (; next < by_enter.size() && ExtentOf(boxes_[by_enter[next]][d], downward).enter == t; ++next)
-        add(by_enter[next], +1);
-      if (tree.Max() >= need_) return t;
-    }
-    return kInf;
+  std::sort(coords.begin(), coords.end());
+  coords.erase(std::unique(coords.begin(), coords.end()), coords.end());
+  auto rank = [&](double v) {
+    return static_cast<int>(std::lower_bound(coords.begin(), coords.end(), v) - coords.begin());
+  };
+  plan.rank_lo.resize(boxes);
+  plan.rank_hi.resize(boxes);
+  for (int i : live) {
+    plan.rank_lo[i] = rank(b.Lo(i, r));
+    plan.rank_hi[i] = rank(b.Hi(i, r));
   }
+  plan.points = static_cast<int>(coords.size());
+  return plan;
+}
 
-  // Several dimensions left: at each candidate t, whether the open boxes
-  // share a point of depth `need` in the others, by the same sweep one
-  // dimension down.
-  double SweepOverMany(const std::vector<int>& by_enter, const std::vector<int>& by_leave, std::size_t d,
-                       bool downward, std::span<const std::size_t> rest) const {
-    std::vector<char> open(boxes_.size(), 0);
-    std::vector<int> live;
-    std::size_t next = 0, closed = 0;
-    while (next < by_enter.size()) {
-      const double t = ExtentOf(boxes_[by_enter[next]][d], downward).enter;
-      for (; closed < by_leave.size() && ExtentOf(boxes_[by_leave[closed]][d], downward).leave < t; ++closed)
-        open[by_leave[closed]] = 0;
-      for (; next < by_enter.size() && ExtentOf(boxes_[by_enter[next]][d], downward).enter == t; ++next)
-        open[by_enter[next]] = 1;
-      live.clear();
-      for (int i : by_enter)
-        if (open[i]) live.push_back(i);
-      if (FirstCovered(live, rest[0], false, rest.subspan(1)) < kInf) return t;
-    }
-    return kInf;
+// The lowest box bound t along d (the highest, when downward) at which
+// `need` boxes share a point: upward, a box enters at its lower bound and
+// has left once t is past its upper bound; downward the reverse.
+double SweepOne(const Bounds& b, const SweepPlan& plan, std::size_t d, bool downward, int need) {
+  const std::size_t m = plan.by_lo.size();
+  MaxAddTree tree(plan.points);
+  auto enter_box = [&](std::size_t k) { return downward ? plan.by_hi[m - 1 - k] : plan.by_lo[k]; };
+  auto leave_box = [&](std::size_t k) { return downward ? plan.by_lo[m - 1 - k] : plan.by_hi[k]; };
+  auto enter_at = [&](int i) { return downward ? -b.Hi(i, d) : b.Lo(i, d); };
+  auto leave_at = [&](int i) { return downward ? -b.Lo(i, d) : b.Hi(i, d); };
+  auto add = [&](int i, int value) { tree.Add(plan.rank_lo[i], plan.rank_hi[i], value); };
+  std::size_t next = 0, closed = 0;
+  while (next < m) {
+    const double t = enter_at(enter_box(next));
+    // A box whose extent ends below t entered earlier: t is past its enter.
+    for (; closed < m && leave_at(leave_box(closed)) < t; ++closed) add(leave_box(closed), -1);
+    for (; next < m && enter_at(enter_box(next)) == t; ++next) add(enter_box(next), +1);
+    if (tree.Max() >= need) return downward ? -t : t;
   }
+  return downward ? -kInf : kInf;
+}
 
-  std::span<const Box> boxes_;
-  int need_;
-};
+// Whether `need` of the boxes `live` share a point, the coordinates ranging
+// over the dimensions `dims` (at least two): a sweep along the first that
+// stops at the first candidate where the open boxes reach that depth in the
+// others. The general path for n > 2.
+bool ReachDepth(const Bounds& b, const std::vector<int>& live, std::span<const std::size_t> dims, int need,
+                int boxes) {
+  if (static_cast<int>(live.size()) < need) return false;
+  const std::size_t d = dims[0];
+  if (dims.size() == 2) return SweepOne(b, Plan(b, live, d, dims[1], boxes), d, false, need) < kInf;
+  const std::vector<int> by_lo = SortedBy(live, b.lo, b.n, d), by_hi = SortedBy(live, b.hi, b.n, d);
+  std::vector<char> open(boxes, 0);
+  std::vector<int> active;
+  std::size_t next = 0, closed = 0;
+  while (next < by_lo.size()) {
+    const double t = b.Lo(by_lo[next], d);
+    for (; closed < by_hi.size() && b.Hi(by_hi[closed], d) < t; ++closed) open[by_hi[closed]] = 0;
+    for (; next < by_lo.size() && b.Lo(by_lo[next], d) == t; ++next) open[by_lo[next]] = 1;
+    active.clear();
+    for (int i : by_lo)
+      if (open[i]) active.push_back(i);
+    if (ReachDepth(b, active, dims.subspan(1), need, boxes)) return true;
+  }
+  return false;
+}
+
+// The bound of the hull along d, lowest or highest, for n > 2: the first
+// candidate t (in sweep order) where the boxes that hold x_d = t reach depth
+// `need` in the other dimensions.
+double FirstCovered(const Bounds& b, const std::vector<int>& live, std::size_t d, bool downward,
+                    std::span<const std::size_t> rest, int need, int boxes) {
+  std::vector<int> by_lo = SortedBy(live, b.lo, b.n, d), by_hi = SortedBy(live, b.hi, b.n, d);
+  if (downward) {
+    std::reverse(by_lo.begin(), by_lo.end());
+    std::reverse(by_hi.begin(), by_hi.end());
+    std::swap(by_lo, by_hi);  // enter by upper bound, leave by lower
+  }
+  auto enter_at = [&](int i) { return downward ? -b.Hi(i, d) : b.Lo(i, d); };
+  auto leave_at = [&](int i) { return downward ? -b.Lo(i, d) : b.Hi(i, d); };
+  std::vector<char> open(boxes, 0);
+  std::vector<int> active;
+  std::size_t next = 0, closed = 0;
+  while (next < by_lo.size()) {
+    const double t = enter_at(by_lo[next]);
+    for (; closed < by_hi.size() && leave_at(by_hi[closed]) < t; ++closed) open[by_hi[closed]] = 0;
+    for (; next < by_lo.size() && enter_at(by_lo[next]) == t; ++next) open[by_lo[next]] = 1;
+    active.clear();
+    for (int i : by_lo)
+      if (open[i]) active.push_back(i);
+    if (ReachDepth(b, active, rest, need, boxes)) return downward ? -t : t;
+  }
+  return downward ? -kInf : kInf;
+}
 }  // namespace
 
 Interval RelaxedIntersection(std::span<const Interval> intervals, int q) {
@@ -185,21 +209,46 @@ Box RelaxedIntersection(std::span<const Box> boxes, int q, std::size_t n) {
   const int m = static_cast<int>(boxes.size());
   Box out(n);
   if (q >= m) return out;
+  const int need = m - q;
   std::vector<int> live;
-  for (int i = 0; i < m; ++i)
-    if (!boxes[i].IsEmpty()) live.push_back(i);
-  const Sweep sweep(boxes, m - q);
+  Bounds b{n, std::vector<double>(m * n), std::vector<double>(m * n)};
+  for (int i = 0; i < m; ++i) {
+    if (boxes[i].IsEmpty()) continue;
+    live.push_back(i);
+    for (std::size_t d = 0; d < n; ++d) {
+      b.lo[i * n + d] = boxes[i][d].lo();
+      b.hi[i * n + d] = boxes[i][d].hi();
+    }
+  }
+  if (static_cast<int>(live.size()) < need) {
+    out.SetEmpty();
+    return out;
+  }
+  if (n == 1) {
+    std::vector<Interval> xs;
+    for (int i : live) xs.push_back(boxes[i][0]);
+    out[0] = RelaxedIntersection(xs, static_cast<int>(live.size()) - need);
+    return out;
+  }
   std::vector<std::size_t> rest;
   for (std::size_t d = 0; d < n; ++d) {
-    rest.clear();
-    for (std::size_t r = 0; r < n; ++r)
-      if (r != d) rest.push_back(r);
-    const double lo = sweep.FirstCovered(live, d, false, rest);
+    double lo = kInf, hi = -kInf;
+    if (n == 2) {
+      const SweepPlan plan = Plan(b, live, d, 1 - d, m);
+      lo = SweepOne(b, plan, d, false, need);
+      if (lo != kInf) hi = SweepOne(b, plan, d, true, need);
+    } else {
+      rest.clear();
+      for (std::size_t r = 0; r < n; ++r)
+        if (r != d) rest.push_back(r);
+      lo = FirstCovered(b, live, d, false, rest, need, m);
+      if (lo != kInf) hi = FirstCovered(b, live, d, true, rest, need, m);
+    }
     if (lo == kInf) {
       out.SetEmpty();
       return out;
     }
-    out[d] = Interval(lo, -sweep.FirstCovered(live, d, true, rest));
+    out[d] = Interval(lo, hi);
   }
   return out;
 }

@@ -67,12 +67,12 @@ TEST(RelaxedIntersectionTest, BoxesThatOnlyTouchShareTheirFace) {
 }
 
 // Random boxes with integer bounds (frequent ties, touching and degenerate
-// boxes) against the brute-force grid, in 1 to 3 dimensions.
+// boxes) against the brute-force grid, in 1 to 4 dimensions.
 TEST(RelaxedIntersectionTest, BoxesMatchTheGridOnRandomBoxes) {
   RandomEngine rng(11);
   for (int trial = 0; trial < 400; ++trial) {
-    const std::size_t n = 1 + trial % 3;
-    const int m = UniformInt(rng, 1, n == 3 ? 8 : 14);
+    const std::size_t n = 1 + trial % 4;
+    const int m = UniformInt(rng, 1, n >= 3 ? 7 : 14);
     std::vector<Box> boxes;
     for (int i = 0; i < m; ++i) {
       Box b(n);
