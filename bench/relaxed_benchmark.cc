@@ -2,7 +2,7 @@
 // of the plane (algorithms/relaxed/relaxed_testing.h):
 //   BM_AccumulatorLines/1000     20 lines, 1000 x 1000 cells (target <= 50 ms on 2 cores)
 //   BM_RelaxedIntersectionBoxes  q-relaxed intersection of m 2-D boxes, m up to 10^4
-//                                (O(n m log m))
+//                                (the exact hull, O(m log m))
 //   BM_PolynomialHorner vs BM_PolynomialBruteForce: the Horner scheme (m(m+1)/2
 //                                contractions) against the union over all subsets (2^m)
 //   BM_LineContractorOnACell     one measurement contractor on one grid cell
