@@ -31,7 +31,12 @@ double LowestCovered(const std::vector<double>& los, const std::vector<double>& 
 // Counts over a range of points: add to a range, read the maximum.
 class MaxAddTree {
  public:
-  explicit MaxAddTree(int points) : points_(points), max_(4 * points, 0), add_(4 * points, 0) {}
+  // All counts zero over `points` points (the storage is reused).
+  void Reset(int points) {
+    points_ = points;
+    max_.assign(4 * points, 0);
+    add_.assign(4 * points, 0);
+  }
   void Add(int first, int last, int value) { Add(1, 0, points_ - 1, first, last, value); }
   int Max() const { return max_[1]; }
 
@@ -48,7 +53,7 @@ class MaxAddTree {
     Add(2 * node + 1, mid + 1, r, first, last, value);
     max_[node] = add_[node] + std::max(max_[2 * node], max_[2 * node + 1]);
   }
-  int points_;
+  int points_ = 0;
   std::vector<int> max_, add_;
 };
 
@@ -66,22 +71,30 @@ struct Bounds {
 struct SweepPlan {
   std::vector<int> by_lo, by_hi;
   std::vector<int> rank_lo, rank_hi;  // indexed by box
+  std::vector<double> coords;         // the sorted distinct bounds along r
   int points = 0;
 };
 
+void SortBy(const std::vector<int>& live, const std::vector<double>& key, std::size_t n, std::size_t d,
+            std::vector<int>& out) {
+  out.assign(live.begin(), live.end());
+  std::sort(out.begin(), out.end(), [&](int a, int b) { return key[a * n + d] < key[b * n + d]; });
+}
+
 std::vector<int> SortedBy(const std::vector<int>& live, const std::vector<double>& key, std::size_t n,
                           std::size_t d) {
-  std::vector<int> out = live;
-  std::sort(out.begin(), out.end(), [&](int a, int b) { return key[a * n + d] < key[b * n + d]; });
+  std::vector<int> out;
+  SortBy(live, key, n, d, out);
   return out;
 }
 
-SweepPlan Plan(const Bounds& b, const std::vector<int>& live, std::size_t d, std::size_t r, int boxes) {
-  SweepPlan plan;
-  plan.by_lo = SortedBy(live, b.lo, b.n, d);
-  plan.by_hi = SortedBy(live, b.hi, b.n, d);
-  std::vector<double> coords;
-  coords.reserve(2 * live.size());
+// Fills plan (its storage reused) for the sweeps along d over r.
+void Plan(const Bounds& b, const std::vector<int>& live, std::size_t d, std::size_t r, int boxes,
+          SweepPlan& plan) {
+  SortBy(live, b.lo, b.n, d, plan.by_lo);
+  SortBy(live, b.hi, b.n, d, plan.by_hi);
+  std::vector<double>& coords = plan.coords;
+  coords.clear();
   for (int i : live) {
     coords.push_back(b.Lo(i, r));
     coords.push_back(b.Hi(i, r));
@@ -98,15 +111,15 @@ SweepPlan Plan(const Bounds& b, const std::vector<int>& live, std::size_t d, std
     plan.rank_hi[i] = rank(b.Hi(i, r));
   }
   plan.points = static_cast<int>(coords.size());
-  return plan;
 }
 
 // The lowest box bound t along d (the highest, when downward) at which
 // `need` boxes share a point: upward, a box enters at its lower bound and
 // has left once t is past its upper bound; downward the reverse.
-double SweepOne(const Bounds& b, const SweepPlan& plan, std::size_t d, bool downward, int need) {
+double SweepOne(const Bounds& b, const SweepPlan& plan, std::size_t d, bool downward, int need,
+                MaxAddTree& tree) {
   const std::size_t m = plan.by_lo.size();
-  MaxAddTree tree(plan.points);
+  tree.Reset(plan.points);
   auto enter_box = [&](std::size_t k) { return downward ? plan.by_hi[m - 1 - k] : plan.by_lo[k]; };
   auto leave_box = [&](std::size_t k) { return downward ? plan.by_lo[m - 1 - k] : plan.by_hi[k]; };
   auto enter_at = [&](int i) { return downward ? -b.Hi(i, d) : b.Lo(i, d); };
@@ -131,7 +144,12 @@ bool ReachDepth(const Bounds& b, const std::vector<int>& live, std::span<const s
                 int boxes) {
   if (static_cast<int>(live.size()) < need) return false;
   const std::size_t d = dims[0];
-  if (dims.size() == 2) return SweepOne(b, Plan(b, live, d, dims[1], boxes), d, false, need) < kInf;
+  if (dims.size() == 2) {
+    SweepPlan plan;
+    MaxAddTree tree;
+    Plan(b, live, d, dims[1], boxes, plan);
+    return SweepOne(b, plan, d, false, need, tree) < kInf;
+  }
   const std::vector<int> by_lo = SortedBy(live, b.lo, b.n, d), by_hi = SortedBy(live, b.hi, b.n, d);
   std::vector<char> open(boxes, 0);
   std::vector<int> active;
@@ -210,8 +228,15 @@ Box RelaxedIntersection(std::span<const Box> boxes, int q, std::size_t n) {
   Box out(n);
   if (q >= m) return out;
   const int need = m - q;
-  std::vector<int> live;
-  Bounds b{n, std::vector<double>(m * n), std::vector<double>(m * n)};
+  // The fixpoints call this for every round: the storage is kept per thread.
+  thread_local Bounds b;
+  thread_local std::vector<int> live;
+  thread_local SweepPlan plan;
+  thread_local MaxAddTree tree;
+  b.n = n;
+  b.lo.resize(m * n);
+  b.hi.resize(m * n);
+  live.clear();
   for (int i = 0; i < m; ++i) {
     if (boxes[i].IsEmpty()) continue;
     live.push_back(i);
@@ -234,9 +259,9 @@ Box RelaxedIntersection(std::span<const Box> boxes, int q, std::size_t n) {
   for (std::size_t d = 0; d < n; ++d) {
     double lo = kInf, hi = -kInf;
     if (n == 2) {
-      const SweepPlan plan = Plan(b, live, d, 1 - d, m);
-      lo = SweepOne(b, plan, d, false, need);
-      if (lo != kInf) hi = SweepOne(b, plan, d, true, need);
+      Plan(b, live, d, 1 - d, m, plan);
+      lo = SweepOne(b, plan, d, false, need, tree);
+      if (lo != kInf) hi = SweepOne(b, plan, d, true, need, tree);
     } else {
       rest.clear();
       for (std::size_t r = 0; r < n; ++r)

@@ -13,7 +13,6 @@
 #include <vector>
 
 #include "algorithms/relaxed/relaxed_testing.h"
-#include "core/constraint_contractor.h"
 #include "core/minibex_parser.h"
 #include "core/random.h"
 #include "problems/registry.h"
@@ -36,7 +35,8 @@ inline std::string Number(double v) {
 // A Minibex text over x, y in [-10, 10]: m measurements, the last
 // `outliers` of them moved away from the truth; lines
 // c x + s y = [o - 0.05, o + 0.05] and squared ranges to a beacon
-// (x - bx)^2 + (y - by)^2 = [r2 - 0.3, r2 + 0.3], alternating.
+// (x - bx)^2 + (y - by)^2 = [r2 - 0.3, r2 + 0.3] (r2 the squared distance
+// within 0.1), alternating.
 inline QRelaxedCase MinibexCase(std::uint64_t seed, int m, int outliers) {
   RandomEngine rng(seed);
   QRelaxedCase out;
@@ -45,7 +45,7 @@ inline QRelaxedCase MinibexCase(std::uint64_t seed, int m, int outliers) {
   out.outliers = outliers;
   const double x = out.truth[0], y = out.truth[1];
   std::string text = "Variables\n  x in [-10, 10];\n  y in [-10, 10];\nConstraints\n";
-  MeasurementSetView view;
+  std::vector<bool> is_outlier;
   for (int i = 0; i < m; ++i) {
     const bool outlier = i >= m - outliers;
     const double miss = outlier ? (UniformInt(rng, 0, 1) ? 1 : -1) * UniformReal(rng, 1.5, 5) : 0;
@@ -56,21 +56,16 @@ inline QRelaxedCase MinibexCase(std::uint64_t seed, int m, int outliers) {
               ", " + Number(o + 0.05) + "];\n";
     } else {
       const double bx = UniformReal(rng, -10, 10), by = UniformReal(rng, -10, 10);
-      const double r = std::hypot(x - bx, y - by) + UniformReal(rng, -0.01, 0.01) + miss;
-      const double r2 = std::max(0.0, r) * std::max(0.0, r);
+      const double d = std::hypot(x - bx, y - by);
+      const double r = d + miss < 0 ? d - miss : d + miss;  // an outlier's range stays a range
+      const double r2 = r * r + UniformReal(rng, -0.1, 0.1);
       text += "  (x - " + Number(bx) + ")^2 + (y - " + Number(by) + ")^2 = [" + Number(r2 - 0.3) + ", " +
               Number(r2 + 0.3) + "];\n";
     }
-    view.outliers.push_back(outlier);
+    is_outlier.push_back(outlier);
   }
   text += "end\n";
-  const ConstraintSystem csp = ParseMinibex(text, out.name);
-  view.prior = csp.domains();
-  view.measurements = ConstraintContractors(csp);
-  out.views.space.names = {"x", "y"};
-  out.views.space.x = 0;
-  out.views.space.y = 1;
-  out.views.measurement_set = std::move(view);
+  out.views = PlaneMeasurementViews(ParseMinibex(text, out.name), std::move(is_outlier));
   return out;
 }
 

@@ -39,7 +39,9 @@ TEST(QRelaxedFixpointTest, NeverWiderThanTheReferenceAndKeepsTheTruth) {
       const Box ours = r.estimate->Hull();
       const Box reference = testing::ReferenceQRelaxedFixpoint(set.prior, set.measurements, q);
       EXPECT_TRUE(ours.IsSubsetOf(reference)) << c.name << " q=" << q << ": " << Show(ours) << " vs " << Show(reference);
-      if (q >= c.outliers) EXPECT_TRUE(r.estimate->Contains(c.truth)) << c.name << " q=" << q;
+      if (q >= c.outliers) {
+        EXPECT_TRUE(r.estimate->Contains(c.truth)) << c.name << " q=" << q;
+      }
       ++compared;
       equal += ours == reference ? 1 : 0;
     }
