@@ -2,7 +2,7 @@
 // of the plane (algorithms/relaxed/relaxed_testing.h):
 //   BM_AccumulatorLines/1000     20 lines, 1000 x 1000 cells (target <= 50 ms on 2 cores)
 //   BM_RelaxedIntersectionBoxes  q-relaxed intersection of m 2-D boxes, m up to 10^4
-//                                (O(n m log m))
+//                                (the exact hull, O(m log m))
 //   BM_PolynomialHorner vs BM_PolynomialBruteForce: the Horner scheme (m(m+1)/2
 //                                contractions) against the union over all subsets (2^m)
 //   BM_LineContractorOnACell     one measurement contractor on one grid cell
@@ -11,6 +11,7 @@
 #include "algorithms/relaxed/relaxed_testing.h"
 #include "core/accumulate.h"
 #include "core/box_polynomial.h"
+#include "core/box_polynomial_testing.h"
 #include "core/random.h"
 #include "core/relaxed_intersection.h"
 
@@ -55,24 +56,10 @@ BENCHMARK(BM_PolynomialHorner)->DenseRange(4, 16, 4)->Arg(64)->Complexity(benchm
 // Coefficient j as the hull, over the subsets of j measurements, of their
 // composition applied to the prior: what the Horner scheme avoids.
 void BM_PolynomialBruteForce(benchmark::State& state) {
-  const int m = static_cast<int>(state.range(0));
-  const auto c = testing::Lines(3, m, 2);
-  const auto& ms = c.views.measurement_set->measurements;
-  for (auto _ : state) {
-    std::vector<Box> coefficients(m + 1, Box(2));
-    for (Box& b : coefficients) b.SetEmpty();
-    for (std::uint32_t mask = 0; mask < (1u << m); ++mask) {
-      Box box = c.views.measurement_set->prior;
-      for (int i = 0; i < m && !box.IsEmpty(); ++i)
-        if (mask & (1u << i)) {
-          ContractContext context;
-          ms[i]->Contract(box, context);
-        }
-      Box& k = coefficients[__builtin_popcount(mask)];
-      k = Hull(k, box);
-    }
-    benchmark::DoNotOptimize(coefficients);
-  }
+  const auto c = testing::Lines(3, static_cast<int>(state.range(0)), 2);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        testing::ExpandedSortTransform(c.views.measurement_set->prior, c.views.measurement_set->measurements));
 }
 BENCHMARK(BM_PolynomialBruteForce)->DenseRange(4, 16, 4);
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/box_polynomial_testing.h"
 #include "core/contractor_testing.h"
 
 #include <atomic>
@@ -14,25 +15,7 @@ namespace icp {
 namespace {
 
 using testing::ClipTo;
-
-// Coefficient j of the expanded sort transform (eq. 5.7): the hull over the
-// subsets of j contractors of their composition applied to x.
-std::vector<Box> BruteForce(const Box& x, const SharedContractors& cs) {
-  const int n = static_cast<int>(cs.size());
-  std::vector<Box> out(n + 1, Box(x.size()));
-  for (Box& b : out) b.SetEmpty();
-  for (int mask = 0; mask < (1 << n); ++mask) {
-    Box box = x;
-    for (int i = 0; i < n && !box.IsEmpty(); ++i)
-      if (mask & (1 << i)) {
-        ContractContext context;
-        cs[i]->Contract(box, context);
-      }
-    const int j = __builtin_popcount(mask);
-    out[j] = Hull(out[j], box);
-  }
-  return out;
-}
+using testing::ExpandedSortTransform;
 
 Box RandomBoxAround(RandomEngine& rng, const std::vector<double>& centre, double spread) {
   Box b(centre.size());
@@ -65,7 +48,7 @@ TEST(BoxPolynomialTest, EqualsTheBruteForceUnionWhenTheSetsShareAPoint) {
     for (int i = 0; i < n; ++i)
       cs.push_back(std::make_shared<ClipTo>(RandomBoxAround(rng, {1.0, -2.0}, 3)));
     const Box x{{-10, 10}, {-10, 10}};
-    EXPECT_EQ(HornerSortTransform(x, cs, StopCondition()), BruteForce(x, cs)) << trial;
+    EXPECT_EQ(HornerSortTransform(x, cs, StopCondition()), ExpandedSortTransform(x, cs)) << trial;
   }
 }
 
@@ -79,7 +62,7 @@ TEST(BoxPolynomialTest, EnclosesTheBruteForceUnionAlways) {
           RandomBoxAround(rng, {UniformReal(rng, -5, 5), UniformReal(rng, -5, 5)}, 2)));
     const Box x{{-10, 10}, {-10, 10}};
     const std::vector<Box> horner = HornerSortTransform(x, cs, StopCondition());
-    const std::vector<Box> brute = BruteForce(x, cs);
+    const std::vector<Box> brute = ExpandedSortTransform(x, cs);
     for (int j = 0; j <= n; ++j) EXPECT_TRUE(brute[j].IsSubsetOf(horner[j])) << trial << " " << j;
   }
 }

@@ -1,6 +1,8 @@
 #include "core/contractor_algebra.h"
 
 #include <stdexcept>
+#include <utility>
+#include <vector>
 #include <string>
 
 #include "core/relaxed_intersection.h"
@@ -19,17 +21,25 @@ bool Absorb(const ContractSummary& part, Box& box, ContractSummary& total) {
   return true;
 }
 
-// Each part applied to its own copy of box; a part the stop condition cut
-// short, or never reached, leaves its copy as it was (sound). Sets
-// *stopped when that happened.
-std::vector<Box> ApplyEach(const SharedContractors& parts, const Box& box,
-                           ContractContext& context, WorkCounters& work, bool* stopped) {
-  std::vector<Box> out(parts.size(), box);
+// Each part applied to its own copy of box, into out (reused across calls,
+// so its boxes keep their storage); a part the stop condition cut short, or
+// never reached, leaves its copy as it was (sound). A part marked in
+// `known_empty` is not applied: its box is left empty. Sets *stopped when
+// the stop condition cut the pass short.
+void ApplyEach(const SharedContractors& parts, const Box& box, ContractContext& context, WorkCounters& work,
+               bool* stopped, std::vector<Box>& out, const std::vector<char>* known_empty = nullptr) {
+  out.resize(parts.size());
   *stopped = false;
   for (std::size_t i = 0; i < parts.size(); ++i) {
+    if (known_empty && (*known_empty)[i]) {
+      out[i].SetEmpty();
+      continue;
+    }
+    out[i] = box;
+    if (*stopped) continue;
     if (context.stop().ShouldStop()) {
       *stopped = true;
-      break;
+      continue;
     }
     ContractContext fresh(context.stop());
     const ContractSummary s = parts[i]->Contract(out[i], fresh);
@@ -37,16 +47,15 @@ std::vector<Box> ApplyEach(const SharedContractors& parts, const Box& box,
     if (s.status == ContractStatus::kEmpty) out[i].SetEmpty();
     if (s.status == ContractStatus::kStopped) *stopped = true;
   }
-  return out;
 }
 
 // Writes result (a subset of box, by construction) into box and sets the
 // summary's status.
-void Finish(const Box& result, bool stopped, Box& box, ContractSummary& summary) {
-  const Box before = box;
-  box = result;
-  if (box.IsEmpty()) box.SetEmpty();
-  summary.status = stopped && !box.IsEmpty() ? ContractStatus::kStopped : StatusOf(before, box);
+void Finish(Box result, bool stopped, Box& box, ContractSummary& summary) {
+  if (result.IsEmpty()) result.SetEmpty();
+  const ContractStatus status = StatusOf(box, result);
+  box = std::move(result);
+  summary.status = stopped && !box.IsEmpty() ? ContractStatus::kStopped : status;
   if (summary.status == ContractStatus::kStopped) summary.message = "stopped before every part ran";
 }
 }  // namespace
@@ -82,8 +91,9 @@ ContractSummary IntersectionContractor::Contract(Box& box, ContractContext& cont
   if (box.IsEmpty()) return {ContractStatus::kEmpty, "", {}};
   bool stopped = false;
   Box result = box;
-  for (const Box& b : ApplyEach(parts_, box, context, summary.work, &stopped))
-    result = Intersect(result, b);
+  std::vector<Box> contracted;
+  ApplyEach(parts_, box, context, summary.work, &stopped, contracted);
+  for (const Box& b : contracted) result = Intersect(result, b);
   Finish(result, stopped, box, summary);
   return summary;
 }
@@ -94,7 +104,9 @@ ContractSummary UnionContractor::Contract(Box& box, ContractContext& context) {
   bool stopped = false;
   Box result(box.size());
   result.SetEmpty();
-  for (const Box& b : ApplyEach(parts_, box, context, summary.work, &stopped)) result = Hull(result, b);
+  std::vector<Box> contracted;
+  ApplyEach(parts_, box, context, summary.work, &stopped, contracted);
+  for (const Box& b : contracted) result = Hull(result, b);
   Finish(result, stopped, box, summary);
   return summary;
 }
@@ -108,9 +120,19 @@ ContractSummary QIntersectionContractor::Contract(Box& box, ContractContext& con
   ContractSummary summary;
   if (box.IsEmpty()) return {ContractStatus::kEmpty, "", {}};
   if (q_ >= static_cast<int>(parts_.size())) return summary;
+  // A part that emptied a box holding this one has no point in it either:
+  // its box stays empty (the repeated q-intersection of a fixpoint calls
+  // it on ever smaller boxes, and an outlier's box empties early).
+  const bool inside_last = contracted_.size() == parts_.size() && last_input_.size() == box.size() &&
+                           !last_input_.IsEmpty() && box.IsSubsetOf(last_input_);
+  known_empty_.assign(parts_.size(), 0);
+  if (inside_last)
+    for (std::size_t i = 0; i < parts_.size(); ++i) known_empty_[i] = contracted_[i].IsEmpty() ? 1 : 0;
   bool stopped = false;
-  const std::vector<Box> contracted = ApplyEach(parts_, box, context, summary.work, &stopped);
-  Finish(Intersect(RelaxedIntersection(contracted, q_, box.size()), box), stopped, box, summary);
+  ApplyEach(parts_, box, context, summary.work, &stopped, contracted_, &known_empty_);
+  last_input_ = box;
+  if (stopped) last_input_.SetEmpty();  // the parts not applied left their copies whole
+  Finish(Intersect(RelaxedIntersection(contracted_, q_, box.size()), box), stopped, box, summary);
   return summary;
 }
 

@@ -93,6 +93,9 @@ class QIntersectionContractor : public Contractor {
  private:
   SharedContractors parts_;
   int q_;
+  Box last_input_;                // the box of the last contraction (empty: none)
+  std::vector<Box> contracted_;   // the parts' boxes of the last contraction
+  std::vector<char> known_empty_;
 };
 
 }  // namespace icp

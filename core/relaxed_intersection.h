@@ -4,10 +4,10 @@
 // CtcQInter(list, q) and Codac count the sets that must hold instead, so
 // their q is m minus ours.
 //
-// Of intervals it is computed exactly as the hull of that union of pieces
-// (sorted bounds, O(m log m)); of boxes, per dimension (the hull of the
-// q-relaxed intersection of the components, which may hold points that lie
-// in fewer than m - q boxes: Fig. 3.5's pessimism, sound).
+// Both overloads return the exact hull of that set, for intervals and for
+// boxes (what IBEX's qinter computes), not the thesis' per-dimension hull of
+// Fig. 3.5, which may hold points that lie in fewer than m - q boxes. Every
+// bound returned is one of the inputs' bounds: no arithmetic, no rounding.
 #ifndef ICPBENCH_CORE_RELAXED_INTERSECTION_H_
 #define ICPBENCH_CORE_RELAXED_INTERSECTION_H_
 
@@ -17,14 +17,18 @@
 
 namespace icp {
 
-// The hull of the points that lie in at least m - q of the m intervals (an
-// empty interval holds no point). q >= m: every point qualifies, the result
-// is the entire line; q < 0 is std::invalid_argument.
+// The hull of the points that lie in at least m - q of the m closed
+// intervals (an empty interval holds no point): sorted bounds, O(m log m).
+// q >= m: every point qualifies, the result is the entire line; q < 0 is
+// std::invalid_argument.
 Interval RelaxedIntersection(std::span<const Interval> intervals, int q);
 
-// The per-dimension q-relaxed intersection of m boxes of one dimension n (an
-// empty box holds no point in any dimension); empty in every component when
-// some component is. With m = 0 or q >= m, the entire space of dimension n.
+// The hull of the points that lie in at least m - q of m closed boxes of one
+// dimension n (an empty box holds no point). Each bound is found by a sweep
+// along its dimension that stops at the first box bound where m - q boxes
+// share a point: O(m log m) per bound for n = 2 (a max-add segment tree over
+// the other coordinate), O(m^(n-1) log m) for larger n. With m = 0 or
+// q >= m, the entire space of dimension n; q < 0 is std::invalid_argument.
 Box RelaxedIntersection(std::span<const Box> boxes, int q, std::size_t n);
 
 }  // namespace icp

@@ -9,6 +9,7 @@
 #include "algorithms/q_relaxed/q_relaxed.h"
 #include "algorithms/relaxed/relaxed_testing.h"
 #include "core/box_polynomial.h"
+#include "core/box_polynomial_testing.h"
 #include "core/contractor_testing.h"
 
 namespace icp {
@@ -33,15 +34,27 @@ TEST(PolynomialTest, EveryApproximationKeepsTheTruthForEveryQ) {
 }
 
 TEST(PolynomialTest, RelaxedCompositionNestsInsideTheRelaxedIntersection) {
-  // Prop. 21: one pass of the relaxed composition (c2, p = 1) is inside one
-  // q-relaxed intersection (c1, p = 1), for every q.
+  // Prop. 21 (eq. 4.37): the relaxed composition by its definition (the hull
+  // over the subsets of m - q measurements of their composition) is inside
+  // one q-relaxed intersection (c1, p = 1), for every q. c2's Horner scheme
+  // encloses that definition but may exceed c1 (it is an outer
+  // approximation of the composition, not the composition).
   const auto c = Lines(6, 10, 3);
-  const StepResult composed =
+  const MeasurementSetView& set = *c.views.measurement_set;
+  const std::vector<Box> composed = testing::ExpandedSortTransform(set.prior, set.measurements);
+  const StepResult horner =
       MakePolynomial({{"approximation", "c2"}, {"p", "1"}}, 0)->Step(c.views, StopCondition());
   const StepResult intersected =
       MakePolynomial({{"approximation", "c1"}, {"p", "1"}}, 0)->Step(c.views, StopCondition());
-  for (int q = 0; q <= 10; ++q)
-    EXPECT_TRUE(composed.hulls_by_q[q].IsSubsetOf(intersected.hulls_by_q[q])) << q;
+  int strictly_inside = 0;
+  for (int q = 0; q <= 10; ++q) {
+    const Box& definition = composed[10 - q];
+    EXPECT_TRUE(definition.IsSubsetOf(intersected.hulls_by_q[q])) << q;
+    EXPECT_TRUE(definition.IsSubsetOf(horner.hulls_by_q[q])) << q;
+    strictly_inside += definition != intersected.hulls_by_q[q] ? 1 : 0;
+  }
+  // Composition narrows where intersection cannot: a strict inclusion somewhere.
+  EXPECT_GT(strictly_inside, 0);
 }
 
 TEST(PolynomialTest, AutoQFindsTheFirstNonEmptyCoefficient) {

@@ -6,8 +6,11 @@
 // tighter than the hull where the solution set has several pieces.
 //
 // Sound: every point of the prior that satisfies at least m - q measurements
-// is kept (the hull may also hold points that satisfy fewer: the q-relaxed
-// intersection of boxes is taken per dimension, Fig. 3.5).
+// is kept. Each round's q-relaxed intersection of the contracted boxes is the
+// exact hull of the points in at least m - q of them (core/
+// relaxed_intersection.h), so the fixpoint box is never wider than that of
+// IBEX's CtcFixPoint(CtcQInter) over the same contractors
+// (tests/q_relaxed_fixpoint_test.cc).
 #ifndef ICPBENCH_ALGORITHMS_Q_RELAXED_Q_RELAXED_H_
 #define ICPBENCH_ALGORITHMS_Q_RELAXED_Q_RELAXED_H_
 

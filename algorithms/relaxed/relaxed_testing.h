@@ -19,6 +19,21 @@ struct LinesCase {
   int outliers = 0;
 };
 
+// The measurement-set view of a CSP over (x, y): one contractor per
+// constraint, the domains as the prior, which measurements are outliers.
+inline Views PlaneMeasurementViews(const ConstraintSystem& csp, std::vector<bool> outliers) {
+  Views views;
+  MeasurementSetView view;
+  view.prior = csp.domains();
+  view.measurements = ConstraintContractors(csp);
+  view.outliers = std::move(outliers);
+  views.space.names = {"x", "y"};
+  views.space.x = 0;
+  views.space.y = 1;
+  views.measurement_set = std::move(view);
+  return views;
+}
+
 // Lines cos(a) x + sin(a) y in [c - 0.05, c + 0.05] over [-10, 10]^2; an
 // outlier's offset is moved 1 to 5 away from the truth's.
 inline LinesCase Lines(std::uint64_t seed, int m, int outliers) {
@@ -28,21 +43,16 @@ inline LinesCase Lines(std::uint64_t seed, int m, int outliers) {
   out.outliers = outliers;
   ConstraintSystem csp;
   Expr x = csp.AddVariable("x", {-10, 10}), y = csp.AddVariable("y", {-10, 10});
-  MeasurementSetView view;
+  std::vector<bool> is_outlier;
   for (int i = 0; i < m; ++i) {
     const double a = UniformReal(rng, 0, M_PI);
     double c = std::cos(a) * out.truth[0] + std::sin(a) * out.truth[1] + UniformReal(rng, -0.02, 0.02);
     const bool outlier = i >= m - outliers;
     if (outlier) c += (UniformInt(rng, 0, 1) ? 1 : -1) * UniformReal(rng, 1, 5);
     csp.AddConstraint(std::cos(a) * x + std::sin(a) * y, Interval(c - 0.05, c + 0.05));
-    view.outliers.push_back(outlier);
+    is_outlier.push_back(outlier);
   }
-  view.prior = csp.domains();
-  view.measurements = ConstraintContractors(csp);
-  out.views.space.names = {"x", "y"};
-  out.views.space.x = 0;
-  out.views.space.y = 1;
-  out.views.measurement_set = std::move(view);
+  out.views = PlaneMeasurementViews(csp, std::move(is_outlier));
   return out;
 }
 
