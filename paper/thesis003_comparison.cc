@@ -133,8 +133,8 @@ const GroupSummary* Best(const std::vector<GroupSummary>& groups, bool particle_
   return best;
 }
 
-// Chapter 6's set-membership group at a known start, of experiment marina
-// or marina-short: without auto_q (the guaranteed configuration; the one
+// Chapter 6's set-membership group at a known start, of a marina experiment
+// other than marina-outliers: without auto_q (the guaranteed configuration; the one
 // whose assumption held on most steps), or with it (the highest
 // consistency); nullptr when there is none.
 const GroupSummary* Guaranteed(const std::vector<GroupSummary>& groups, bool auto_q) {
@@ -143,7 +143,7 @@ const GroupSummary* Guaranteed(const std::vector<GroupSummary>& groups, bool aut
   for (const GroupSummary& g : groups) {
     if (g.ok == 0 || IsParticleFilter(g) || ProblemParam(g, "start") != "known") continue;
     const bool of_marina = std::any_of(g.ok_runs.begin(), g.ok_runs.end(), [](const RunRecord* r) {
-      return ExperimentOf(*r) == kThesis003Marina || ExperimentOf(*r) == kThesis003MarinaShort;
+      return IsMarinaExperiment(ExperimentOf(*r)) && ExperimentOf(*r) != "marina-outliers";
     });
     const auto given = g.algorithm_params.find("auto_q");
     const bool uses_auto_q =
