@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "harness/runner.h"
+
 namespace icp {
 namespace {
 
@@ -109,6 +111,35 @@ TEST(GuaranteeTest, RunRestartsReadsTheSolversOrTheFiltersCount) {
   EXPECT_EQ(RunRestarts(relaxed), 4);
   EXPECT_EQ(RunRestarts(filter), 2);
   EXPECT_FALSE(RunRestarts(other));
+}
+
+TEST(MarinaGuaranteeTest, TheGuaranteedConfigurationHoldsTheTruthWhereverItsAssumptionHeld) {
+  // 150 steps of the drive; the assumption of at most max(8, floor(0.2 m))
+  // wrong returns fails on some steps (and, for the filter, from then on).
+  for (std::uint64_t seed : {1, 2}) {
+    const RunRecord r = ExecuteRun(RunSpec{
+        "q-relaxed",
+        {{"mode", "pave"}, {"epsilon", "2"}, {"auto_q", "false"}, {"q", "8"}, {"outlier_share", "0.2"}},
+        "marina-sonar",
+        {{"steps", "150"}},
+        seed,
+        0});
+    ASSERT_EQ(r.status, RunStatus::kOk) << r.reason;
+    int held = 0, violated = 0;
+    for (const StepRecord& s : r.steps) {
+      const std::optional<double> h = NumberProperty(s.properties, "assumption_held");
+      ASSERT_TRUE(h) << s.step;
+      if (*h == 1) {
+        ++held;
+        EXPECT_EQ(s.contained, 1) << "seed " << seed << ", step " << s.step;
+      } else {
+        ++violated;
+      }
+    }
+    EXPECT_GT(held, 100) << seed;
+    EXPECT_GT(violated, 0) << seed;
+    EXPECT_TRUE(NumberProperty(r.properties, "loss_episodes")) << seed;
+  }
 }
 
 }  // namespace
