@@ -52,8 +52,8 @@ void GuaranteeJudge::Judge(StepRecord* step) {
     detail = "at an earlier step since the last restart";
   } else {
     category = "unexplained";
-    detail = "assumption held, q=" + (q ? Count(*q) : std::string("?")) + " >= true " +
-             Count(*truth);
+    detail =
+        "assumption held, q=" + (q ? Count(*q) : std::string("?")) + " >= true " + Count(*truth);
   }
   if (!was_lost) {
     episode_category_ = category;

@@ -68,8 +68,8 @@ TEST(GuaranteeTest, MissReasonsNameTheCauseAndALossCarriesItsFirstReason) {
   GuaranteeJudge judge;
   std::vector<StepRecord> steps = {
       RelaxedStep(0, 2, 13, false, 2, 1),
-      RelaxedStep(1, 9, 13, true, 10, 0),   // auto_q took fewer than the truth
-      RelaxedStep(2, 10, 13, true, 10, 0),  // carries step 1's loss
+      RelaxedStep(1, 9, 13, true, 10, 0),    // auto_q took fewer than the truth
+      RelaxedStep(2, 10, 13, true, 10, 0),   // carries step 1's loss
       RelaxedStep(3, 13, 13, false, 15, 0),  // violated
       RelaxedStep(4, 13, 13, false, 2, 0),   // held, q enough: the episode's reason
   };
@@ -117,13 +117,16 @@ TEST(MarinaGuaranteeTest, TheGuaranteedConfigurationHoldsTheTruthWhereverItsAssu
   // 150 steps of the drive; the assumption of at most max(8, floor(0.2 m))
   // wrong returns fails on some steps (and, for the filter, from then on).
   for (std::uint64_t seed : {1, 2}) {
-    const RunRecord r = ExecuteRun(RunSpec{
-        "q-relaxed",
-        {{"mode", "pave"}, {"epsilon", "2"}, {"auto_q", "false"}, {"q", "8"}, {"outlier_share", "0.2"}},
-        "marina-sonar",
-        {{"steps", "150"}},
-        seed,
-        0});
+    const RunRecord r = ExecuteRun(RunSpec{"q-relaxed",
+                                           {{"mode", "pave"},
+                                            {"epsilon", "2"},
+                                            {"auto_q", "false"},
+                                            {"q", "8"},
+                                            {"outlier_share", "0.2"}},
+                                           "marina-sonar",
+                                           {{"steps", "150"}},
+                                           seed,
+                                           0});
     ASSERT_EQ(r.status, RunStatus::kOk) << r.reason;
     int held = 0, violated = 0;
     for (const StepRecord& s : r.steps) {

@@ -30,7 +30,8 @@ int QBound(int q, double share, int m) {
   // the decimal the spec wrote. Beyond 18 decimals (no spec writes those)
   // the double's own product is floored.
   char text[400];
-  const auto [end, error] = std::to_chars(text, text + sizeof text, share, std::chars_format::fixed);
+  const auto [end, error] =
+      std::to_chars(text, text + sizeof text, share, std::chars_format::fixed);
   const std::string_view digits(text, error == std::errc() ? end - text : 0);
   const std::size_t point = digits.find('.');
   const std::size_t decimals = point == std::string_view::npos ? 0 : digits.size() - point - 1;

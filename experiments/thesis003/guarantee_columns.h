@@ -14,13 +14,13 @@
 namespace icp {
 
 struct GuaranteeSummary {
-  int judged = 0;              // steps with assumption_held
-  int held = 0;                // ... equal to 1
-  int held_contained = 0;      // ... whose estimate holds the truth
-  int misses = 0;              // steps with a miss_reason
-  std::string dominant;        // the most frequent miss category
+  int judged = 0;          // steps with assumption_held
+  int held = 0;            // ... equal to 1
+  int held_contained = 0;  // ... whose estimate holds the truth
+  int misses = 0;          // steps with a miss_reason
+  std::string dominant;    // the most frequent miss category
   int dominant_count = 0;
-  double median_reacquire = 0;  // NaN when no loss episode ended
+  double median_reacquire = 0;          // NaN when no loss episode ended
   double ConsistencyWhereHeld() const;  // NaN when it never held
 };
 GuaranteeSummary SummariseGuarantee(const GroupSummary& g);
