@@ -97,7 +97,7 @@ TextTable MarinaTable(const std::vector<RunRecord>& runs) {
       "ok runs (every seed). Consistency: share of the steps whose estimate holds the truth (the "
       "particle filter's region, its weighted 95% box or hull, is not a guaranteed enclosure). "
       "Centre error: distance from the box centre (the filter: its weighted mean) to the truth. "
-      "Restarts: the set-membership solver's global searches after an empty tracked solution "
+      "Restarts: the set-membership solver's global searches after a detected inconsistency "
       "(run property resets), the filter's reinitialisations after every particle lost all "
       "weight. Time per run: the estimator's solve time summed over the steps. Published: paper "
       "003 §6.7, one core of a Centrino Duo T2500 at 2 GHz (1 h 10 min) and Matlab on a Core2 at "
