@@ -8,6 +8,7 @@ namespace icp {
 
 void LossEpisodes::Add(int contained) {
   if (contained < 0) return;
+  ++judged_;
   if (contained == 0) {
     if (!lost_) ++episodes_, length_ = 0;
     lost_ = true;
@@ -64,7 +65,9 @@ void GuaranteeJudge::Judge(StepRecord* step) {
 }
 
 Properties GuaranteeJudge::RunProperties() const {
-  Properties out = {{"loss_episodes", std::int64_t{episodes_.episodes()}}};
+  Properties out;
+  if (episodes_.judged() == 0) return out;
+  out.push_back({"loss_episodes", std::int64_t{episodes_.episodes()}});
   if (!episodes_.reacquire_steps().empty())
     out.push_back({"reacquire_steps_median", Quantile(episodes_.reacquire_steps(), 0.5)});
   return out;

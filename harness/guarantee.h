@@ -27,11 +27,13 @@ class LossEpisodes {
   // The length of each episode that ended, in order.
   const std::vector<double>& reacquire_steps() const { return reacquire_steps_; }
   bool lost() const { return lost_; }
+  int judged() const { return judged_; }  // steps whose truth is known
 
  private:
   bool lost_ = false;
   int length_ = 0;
   int episodes_ = 0;
+  int judged_ = 0;
   std::vector<double> reacquire_steps_;
 };
 
@@ -46,7 +48,8 @@ class LossEpisodes {
 class GuaranteeJudge {
  public:
   void Judge(StepRecord* step);
-  // loss_episodes, and reacquire_steps_median when an episode ended.
+  // loss_episodes, when a step's truth was known, and reacquire_steps_median
+  // when an episode ended.
   Properties RunProperties() const;
 
  private:

@@ -57,6 +57,7 @@ TEST(GuaranteeTest, WithoutTheTruthOrAnAssumptionNothingIsJudged) {
   StepRecord unknown = RelaxedStep(0, 3, 3, false, 2, -1);
   judge.Judge(&unknown);
   EXPECT_FALSE(Held(unknown));
+  EXPECT_TRUE(judge.RunProperties().empty());  // no loss to count without a truth
   StepRecord filter;  // a particle filter's step: no q_bound
   filter.contained = 0;
   judge.Judge(&filter);
@@ -90,6 +91,7 @@ TEST(GuaranteeTest, CountsLossEpisodesAndTheStepsToReacquire) {
   LossEpisodes e;
   for (int c : {1, 0, 0, 1, -1, 1, 0, 1, 0, 0, 0}) e.Add(c);
   EXPECT_EQ(e.episodes(), 3);
+  EXPECT_EQ(e.judged(), 10);
   EXPECT_EQ(e.reacquire_steps(), (std::vector<double>{2, 1}));  // the last has not ended
   EXPECT_TRUE(e.lost());
   // The same through the judge's run properties.

@@ -75,7 +75,8 @@ class RelaxedEstimator : public Estimator {
   // The solution over prior (the step's search box, filtered) from the
   // view's measurements, with least_q outliers (the least, with params().auto_q).
   virtual RelaxedSolution Solve(const Box& prior, const MeasurementSetView& view,
-                                const StateSpace& space, int least_q, const StopCondition& stop) = 0;
+                                const StateSpace& space, int least_q,
+                                const StopCondition& stop) = 0;
   const RelaxedParams& params() const { return params_; }
   WorkCounters& total_work() { return total_work_; }
 
