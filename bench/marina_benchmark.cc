@@ -35,7 +35,7 @@ void RunDrive(benchmark::State& state, const std::string& algorithm, const Param
 }
 
 void BM_MarinaSetMembership(benchmark::State& state) {
-  RunDrive(state, "q-relaxed", {{"mode", "pave"}, {"epsilon", "2"}, {"max_outlier_share", "0.3"}});
+  RunDrive(state, "q-relaxed", {{"mode", "pave"}, {"epsilon", "2"}, {"outlier_share", "0.3"}});
 }
 BENCHMARK(BM_MarinaSetMembership)->Arg(0)->Arg(1)->Unit(benchmark::kSecond)->UseRealTime();
 

@@ -8,6 +8,7 @@
 #include "algorithms/registry.h"
 #include "core/memory_budget.h"
 #include "harness/environment_error.h"
+#include "harness/guarantee.h"
 #include "harness/metrics.h"
 #include "harness/sweep_recorder.h"
 #include "harness/worker_pool.h"
@@ -36,6 +37,7 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
   RunRecord record;
   MetricsAccumulator metrics;
   PostStateJudge post_states;
+  GuaranteeJudge guarantee;
   record.spec = spec;
   const auto start = Clock::now();
   int step_index = 0;
@@ -67,6 +69,7 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
       for (const Property& p : step.annotations) r.properties.push_back(p);
       for (Property& p : result.estimate->Extras()) r.properties.push_back(std::move(p));
       if (!result.summary.message.empty()) r.properties.push_back({"message", result.summary.message});
+      guarantee.Judge(&r);
       sink(r);  // first: a step the sink could not take is not counted
       metrics.Add(r);
       if (result.summary.status == ContractStatus::kStopped && stop.ShouldStop()) {
@@ -97,6 +100,7 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
     record.reason = "exception of unknown type";
   }
   if (estimator) record.properties = estimator->RunProperties();
+  for (Property& p : guarantee.RunProperties()) record.properties.push_back(std::move(p));
   record.wall_time_s = Seconds(Clock::now() - start);
   record.metrics = metrics.Finish(spec.seed);
   return record;

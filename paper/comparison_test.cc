@@ -159,6 +159,46 @@ TEST(ComparisonTest, Paper004ConsistencyFollowsTheSteps) {
   EXPECT_NE(r.measured.find("lowest 0.5"), std::string::npos) << r.measured;
 }
 
+// A marina run of q-relaxed: steps that hold the truth (1) or miss it (0),
+// with the assumption held (1) or not (0) on each, and a miss reason.
+RunRecord MarinaRelaxed(ParamMap params, const std::vector<int>& contained,
+                        const std::vector<int>& held) {
+  RunRecord r = InExperiment(MakeRun("q-relaxed", std::move(params), {{"start", "known"}}, 1,
+                                     std::vector<double>(contained.size(), 1e-3)),
+                             "marina");
+  r.spec.problem = "marina-sonar";
+  for (std::size_t i = 0; i < contained.size(); ++i) {
+    StepRecord& s = r.steps[i];
+    s.contained = contained[i];
+    s.properties.push_back({"assumption_held", std::int64_t{held[i]}});
+    if (contained[i] == 0)
+      s.properties.push_back(
+          {"miss_reason", std::string("auto_q under-counted outliers (q=1, true 2)")});
+  }
+  r.metrics = ComputeMetrics(r.steps);
+  return r;
+}
+
+TEST(ComparisonTest, TheMarinaGuaranteeIsJudgedOverTheStepsWhereTheAssumptionHeld) {
+  const std::string item = "§6.7.2: set membership holds the truth (start known)";
+  const ParamMap guaranteed = {{"auto_q", "false"}, {"q", "13"}, {"outlier_share", "0.3"}};
+  // A miss where the assumption failed does not count against it; auto_q's
+  // misses stand beside it.
+  std::vector<RunRecord> runs = {
+      MarinaRelaxed(guaranteed, {1, 0, 1}, {1, 0, 1}),
+      MarinaRelaxed({{"outlier_share", "1"}}, {1, 0, 0, 1}, {1, 1, 1, 1})};
+  ComparisonRow r = Row(Thesis003Comparison(runs), item);
+  EXPECT_EQ(r.verdict, Verdict::kMatch) << r.measured;
+  EXPECT_NE(r.measured.find("1 over 2 of 3 steps"), std::string::npos) << r.measured;
+  EXPECT_NE(r.measured.find("auto_q: 0.5 overall"), std::string::npos) << r.measured;
+  EXPECT_NE(r.measured.find("auto_q under-counted outliers on 2 of 2"), std::string::npos)
+      << r.measured;
+  // A miss where it held breaks the guarantee.
+  runs[0] = MarinaRelaxed(guaranteed, {1, 0, 1}, {1, 1, 1});
+  r = Row(Thesis003Comparison(runs), item);
+  EXPECT_EQ(r.verdict, Verdict::kDiffers) << r.measured;
+}
+
 TEST(ComparisonTest, TheTableNumbersRowsAndListsReasons) {
   const TextTable t =
       ComparisonTable("T", {{"a", "1", "1", "equal", Verdict::kMatch, ""},

@@ -76,7 +76,7 @@ class AccumulatorEstimator : public RelaxedEstimator {
 
  protected:
   RelaxedSolution Solve(const Box& prior, const MeasurementSetView& view, const StateSpace& space,
-                        const StopCondition& stop) override {
+                        int least_q, const StopCondition& stop) override {
     RelaxedSolution out;
     const Grid grid = AccumulatorGrid(prior, view.prior, space, p_.cells);
     bool stopped = false;
@@ -86,7 +86,7 @@ class AccumulatorEstimator : public RelaxedEstimator {
     double max_count = 0;
     cv::minMaxLoc(counts.back(), nullptr, &max_count);
     // The cells counting m - q' are non-empty exactly when q' >= m - max.
-    out.q = ChooseQ(params().q, params().auto_q, m,
+    out.q = ChooseQ(least_q, params().auto_q, m,
                     [&](int q) { return m - q <= static_cast<int>(max_count); });
     if (counts.size() > 2)
       for (std::size_t s = 0; s + 1 < counts.size(); ++s) {

@@ -25,11 +25,11 @@ class PolynomialEstimator : public RelaxedEstimator {
 
  protected:
   RelaxedSolution Solve(const Box& prior, const MeasurementSetView& view, const StateSpace&,
-                        const StopCondition& stop) override {
+                        int least_q, const StopCondition& stop) override {
     RelaxedSolution out;
     out.hulls_by_q = ByQ(prior, view.measurements, stop, &out.summary);
     const int m = static_cast<int>(view.measurements.size());
-    out.q = ChooseQ(params().q, params().auto_q, m,
+    out.q = ChooseQ(least_q, params().auto_q, m,
                     [&](int q) { return !out.hulls_by_q[q].IsEmpty(); });
     out.estimate = std::make_unique<BoxEstimate>(out.hulls_by_q[std::min(out.q, m)]);
     return out;

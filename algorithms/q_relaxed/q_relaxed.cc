@@ -34,7 +34,7 @@ class QRelaxedEstimator : public RelaxedEstimator {
 
  protected:
   RelaxedSolution Solve(const Box& prior, const MeasurementSetView& view, const StateSpace&,
-                        const StopCondition& stop) override {
+                        int least_q, const StopCondition& stop) override {
     const int m = static_cast<int>(view.measurements.size());
     RelaxedSolution out;
     int contracted_q = -1;
@@ -57,7 +57,7 @@ class QRelaxedEstimator : public RelaxedEstimator {
       contracted = box;
       return box;
     };
-    out.q = ChooseQ(params().q, params().auto_q, m, [&](int q) { return !contract(q).IsEmpty(); });
+    out.q = ChooseQ(least_q, params().auto_q, m, [&](int q) { return !contract(q).IsEmpty(); });
     if (p_.mode == "contract") {
       out.estimate = std::make_unique<BoxEstimate>(contract(out.q));
       return out;

@@ -110,13 +110,13 @@ TEST(QRelaxedTest, WithAutoQATrackedSearchNeedingTooManyOutliersRestarts) {
     for (std::size_t d = 0; d < out.size(); ++d) out[d] = out[d] + Interval(-0.5, 0.5);
     return out;
   };
-  auto stays = MakeQRelaxed({{"mode", "pave"}}, 0);
+  auto stays = MakeQRelaxed({{"mode", "pave"}, {"outlier_share", "1"}}, 0);
   stays->Step(first.views, StopCondition());
   const StepResult kept = stays->Step(second.views, StopCondition());
   EXPECT_EQ(IntProperty(kept.properties, "reset").value(), 0);
   EXPECT_GT(IntProperty(kept.properties, "q").value(), 5);
   EXPECT_FALSE(kept.estimate->Contains(second.truth));
-  auto restarts = MakeQRelaxed({{"mode", "pave"}, {"max_outlier_share", "0.3"}}, 0);
+  auto restarts = MakeQRelaxed({{"mode", "pave"}, {"outlier_share", "0.3"}}, 0);
   restarts->Step(first.views, StopCondition());
   const StepResult r = restarts->Step(second.views, StopCondition());
   EXPECT_EQ(IntProperty(r.properties, "reset").value(), 1);
@@ -149,12 +149,66 @@ TEST(QRelaxedTest, APavingStoppedByTheTimeLimitSaysSo) {
   EXPECT_NE(full.summary.message.find("max_boxes"), std::string::npos) << full.summary.message;
 }
 
+TEST(QBoundTest, FloorsTheDecimalShareExactly) {
+  // As doubles, 0.7 * 90 is 62.99999999999999 and 0.35 * 180 is
+  // 62.99999999999999: the floor must read 0.7 as 7/10, 0.35 as 35/100.
+  EXPECT_EQ(QBound(0, 0.7, 90), 63);
+  EXPECT_EQ(QBound(0, 0.35, 180), 63);
+  for (int m = 0; m <= 2000; ++m) {
+    EXPECT_EQ(QBound(0, 0.3, m), 3 * m / 10) << m;
+    EXPECT_EQ(QBound(0, 0.7, m), 7 * m / 10) << m;
+    EXPECT_EQ(QBound(0, 0.35, m), 35 * m / 100) << m;
+  }
+  EXPECT_EQ(QBound(0, 1, 17), 17);
+  EXPECT_EQ(QBound(0, 0, 17), 0);
+  EXPECT_EQ(QBound(13, 0.3, 20), 13);  // q is the least bound
+  EXPECT_EQ(QBound(13, 0.3, 50), 15);
+}
+
+TEST(QRelaxedTest, WithoutAutoQTheShareSetsQAndTheTruthIsKept) {
+  // 7 outliers of 20: a share of 0.35 allows exactly them.
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const auto c = Lines(seed, 20, 7);
+    const StepResult r = MakeQRelaxed({{"auto_q", "false"}, {"outlier_share", "0.35"}}, 0)
+                             ->Step(c.views, StopCondition());
+    EXPECT_EQ(IntProperty(r.properties, "q").value(), 7);
+    EXPECT_EQ(IntProperty(r.properties, "q_bound").value(), 7);
+    EXPECT_EQ(IntProperty(r.properties, "tracked").value(), 0);
+    EXPECT_EQ(IntProperty(r.properties, "inconsistent").value(), 0);
+    EXPECT_TRUE(r.estimate->Contains(c.truth)) << seed;
+  }
+}
+
+TEST(QRelaxedTest, AutoQAboveTheBoundIsAnInconsistency) {
+  // The default share 0 with auto_q: a global step that needs outliers
+  // says so, and a tracked step restarts.
+  auto c = Lines(4, 10, 2);
+  c.views.measurement_set->predict = [](const Box& previous) { return previous; };
+  auto solver = MakeQRelaxed({{"mode", "pave"}}, 0);
+  const StepResult first = solver->Step(c.views, StopCondition());
+  EXPECT_GT(IntProperty(first.properties, "q").value(), 0);
+  EXPECT_EQ(IntProperty(first.properties, "q_bound").value(), 0);
+  EXPECT_EQ(IntProperty(first.properties, "inconsistent").value(), 1);
+  EXPECT_EQ(IntProperty(first.properties, "reset").value(), 0);
+  const StepResult second = solver->Step(c.views, StopCondition());
+  EXPECT_EQ(IntProperty(second.properties, "tracked").value(), 0);
+  EXPECT_EQ(IntProperty(second.properties, "reset").value(), 1);
+  // With a share that allows them, the second step follows the first.
+  auto allowed = MakeQRelaxed({{"mode", "pave"}, {"outlier_share", "0.3"}}, 0);
+  const StepResult started = allowed->Step(c.views, StopCondition());
+  EXPECT_EQ(IntProperty(started.properties, "inconsistent").value(), 0);
+  const StepResult followed = allowed->Step(c.views, StopCondition());
+  EXPECT_EQ(IntProperty(followed.properties, "tracked").value(), 1);
+  EXPECT_EQ(IntProperty(followed.properties, "inconsistent").value(), 0);
+  EXPECT_TRUE(followed.estimate->Contains(c.truth));
+}
+
 TEST(QRelaxedTest, RejectsBadParameters) {
   EXPECT_THROW(MakeQRelaxed({{"q", "-1"}}, 0), ParamError);
   EXPECT_THROW(MakeQRelaxed({{"mode", "sivia"}}, 0), ParamError);
   EXPECT_THROW(MakeQRelaxed({{"epsilon", "0"}}, 0), ParamError);
-  EXPECT_THROW(MakeQRelaxed({{"max_outlier_share", "0"}}, 0), ParamError);
-  EXPECT_THROW(MakeQRelaxed({{"max_outlier_share", "1.5"}}, 0), ParamError);
+  EXPECT_THROW(MakeQRelaxed({{"outlier_share", "-0.1"}}, 0), ParamError);
+  EXPECT_THROW(MakeQRelaxed({{"outlier_share", "1.5"}}, 0), ParamError);
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <optional>
 
+#include "experiments/thesis003/guarantee_columns.h"
+#include "harness/guarantee.h"
 #include "harness/metrics.h"
 
 namespace icp {
@@ -16,13 +18,6 @@ bool OfMarina(const RunRecord& r) { return IsMarinaExperiment(ExperimentOf(r)); 
 
 bool HasMarinaRun(const GroupSummary& g) {
   return std::any_of(g.runs.begin(), g.runs.end(), [](const RunRecord* r) { return OfMarina(*r); });
-}
-
-// Restarts of a run: the relaxed solvers' static recoveries, or the
-// filter's reinitialisations; nullopt when the estimator reports neither.
-std::optional<double> Restarts(const RunRecord& r) {
-  if (auto n = NumberProperty(r.properties, "resets")) return n;
-  return NumberProperty(r.properties, "reinitialisations");
 }
 
 std::string Cell(double v) { return std::isnan(v) ? kDash : FormatNumber(v); }
@@ -41,6 +36,8 @@ TextTable MarinaTable(const std::vector<RunRecord>& runs) {
                "median error (m)",  "restarts per run", "median time per step (ms)",
                "mean time per run (s)"};
   t.numeric = {false, false, true, true, true, true, true, true, true, true};
+  for (const std::string& h : GuaranteeHeaders()) t.headers.push_back(h);
+  for (bool n : GuaranteeNumeric()) t.numeric.push_back(n);
   for (const GroupSummary& g : SummariseGroups(runs)) {
     if (!HasMarinaRun(g)) continue;
     int steps = 0, known = 0, contained = 0;
@@ -58,13 +55,14 @@ TextTable MarinaTable(const std::vector<RunRecord>& runs) {
         run_time += s.solve_time_s;
       }
       run_times.push_back(run_time);
-      if (const std::optional<double> n = Restarts(*r)) restarts.push_back(*n);
+      if (const std::optional<double> n = RunRestarts(*r)) restarts.push_back(*n);
     }
     t.rows.push_back({WithParams(DisplayOf(g.algorithm).label, g.algorithm_params),
                       WithParams(g.problem, g.problem_params), OkRunsCell(g), std::to_string(steps),
                       FormatRatio(contained, known), Cell(std::sqrt(Mean(squared))),
                       Cell(Quantile(errors, 0.5)), Cell(Mean(restarts)),
                       Cell(Quantile(times, 0.5) * 1e3), Cell(Mean(run_times))});
+    for (std::string& c : GuaranteeCells(g)) t.rows.back().push_back(std::move(c));
     for (const std::string& p : g.problems) t.items.push_back(ProblemItem(g, p));
   }
   // The thesis' own figures for its 600 m run (§6.7), for comparison.
@@ -74,17 +72,19 @@ TextTable MarinaTable(const std::vector<RunRecord>& runs) {
   t.rows.push_back({"published: particle filter, 600 particles, Matlab",
                     "the Girona marina data set, 600 m", kDash, kDash, kDash, kDash, kDash, kDash,
                     kDash, FormatNumber(kThesis003ParticleFilterRunS)});
+  for (std::vector<std::string>& row : t.rows) row.resize(t.headers.size(), kDash);
   t.notes.push_back(
       "Every configuration with a run of experiment marina or marina-*, over the steps of its "
       "ok runs (every seed). Consistency: share of the steps whose estimate holds the truth (the "
       "particle filter's region, its weighted 95% box or hull, is not a guaranteed enclosure). "
       "Centre error: distance from the box centre (the filter: its weighted mean) to the truth. "
-      "Restarts: the set-membership solver's global searches after an empty tracked solution "
+      "Restarts: the set-membership solver's global searches after a detected inconsistency "
       "(run property resets), the filter's reinitialisations after every particle lost all "
       "weight. Time per run: the estimator's solve time summed over the steps. Published: paper "
       "003 §6.7, one core of a Centrino Duo T2500 at 2 GHz (1 h 10 min) and Matlab on a Core2 at "
       "2.2 GHz (31 min), on the real data set, which is not available here: the rows above are "
       "the simulated marina of problems/marina_sonar.");
+  t.notes.push_back(GuaranteeNote());
   if (t.rows.size() == 2)
     t.notes.push_back("No run of experiment marina or marina-* in the store (specs/marina.yaml).");
   return t;

@@ -10,7 +10,8 @@
 //   run (the relaxed solvers' static recovery, run property `resets`; the
 //   filter's reinitialisations, `reinitialisations`), and the time per step and
 //   per run, beside the thesis' 1 h 10 min (C/C++) and 31 min (Matlab, 600
-//   particles) for its 600 m run;
+//   particles) for its 600 m run, then the guarantee's columns
+//   (guarantee_columns.h);
 //
 //   the figures of experiments/thesis003/marina_figures.h.
 #ifndef ICPBENCH_EXPERIMENTS_THESIS003_MARINA_H_

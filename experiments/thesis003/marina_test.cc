@@ -79,17 +79,18 @@ TEST(MarinaTableTest, PoolsSeedsAndReportsErrorsRestartsAndTimes) {
   // per run (0.05 + 0.03) / 2 s.
   EXPECT_EQ(MarkdownRow(md, "q-relaxed"),
             "| q-relaxed | marina-sonar {start=known} | 2 | 4 | 0.75 | " +
-                FormatNumber(std::sqrt(5.25 / 4)) + " | 0.75 | 2 | 20 | 0.04 |")
+                FormatNumber(std::sqrt(5.25 / 4)) + " | 0.75 | 2 | 20 | 0.04 | — | — | — | — |")
       << md;
   const std::string filter = DisplayOf("particle-filter").label;
   EXPECT_EQ(MarkdownRow(md, filter),
-            "| " + filter + " | marina-sonar {start=known} | 1 | 1 | 0 | 3 | 3 | 0 | 2 | 0.002 |")
+            "| " + filter +
+                " | marina-sonar {start=known} | 1 | 1 | 0 | 3 | 3 | 0 | 2 | 0.002 | — | — | — | — |")
       << md;
   EXPECT_EQ(MarkdownRow(md, "HC4"), "");
   // The thesis' figures stand beside them.
   EXPECT_EQ(MarkdownRow(md, "published: set membership, C/C++"),
             "| published: set membership, C/C++ | the Girona marina data set, 600 m | — | — | — | — "
-            "| — | — | — | 4200 |");
+            "| — | — | — | 4200 | — | — | — | — |");
   EXPECT_NE(MarkdownRow(md, "published: particle filter, 600 particles, Matlab"), "");
 }
 
