@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "plots/figures_internal.h"
 
@@ -28,6 +30,27 @@ constexpr char kWhiteBox[] =
     "using 1:2:3:4 with boxxyerror fs solid 1.0 border lc rgb '#d62728' lw 1.5 lc rgb 'white' "
     "title 'coefficient n - q'";
 
+// The coefficients drawn as boxes {x, y, half width, half height} of
+// row_of(coefficient k, k): the grey ones, then the white one.
+template <typename RowOf>
+void AddCoefficients(const BoxPolynomialPanel& p, RowOf row_of, Panel* panel) {
+  const int n = static_cast<int>(p.coefficients.size()) - 1;
+  Series grey{kGreyBoxes, {}, ""}, white{kWhiteBox, {}, ""};
+  for (int k = 0; k <= n; ++k) {
+    const Box& b = p.coefficients[k];
+    if (b.IsEmpty() || b.size() < 2) continue;
+    std::vector<double> row = row_of(b, k);
+    if (k == p.white) {
+      white.rows.push_back(std::move(row));
+    } else {
+      row.push_back(Grey(k, n));
+      grey.rows.push_back(std::move(row));
+    }
+  }
+  panel->series.push_back(std::move(grey));
+  panel->series.push_back(std::move(white));
+}
+
 // The x-y boxes, the lines and the truth.
 Panel Boxes(const BoxPolynomialPanel& p, const Interval& x, const Interval& y,
             const std::vector<std::array<double, 4>>& segments, const std::vector<double>& truth) {
@@ -36,22 +59,13 @@ Panel Boxes(const BoxPolynomialPanel& p, const Interval& x, const Interval& y,
                 " noenhanced\nunset grid\nset size ratio -1\nset xlabel 'x'\nset ylabel 'y'\n"
                 "set xrange " + Range(x) + "\nset yrange " + Range(y) +
                 "\nset key outside bottom center horizontal noenhanced\n";
-  const int n = static_cast<int>(p.coefficients.size()) - 1;
-  Series grey{kGreyBoxes, {}, ""}, white{kWhiteBox, {}, ""};
-  for (int k = 0; k <= n; ++k) {
-    const Box& b = p.coefficients[k];
-    if (b.IsEmpty() || b.size() < 2) continue;
-    const std::vector<double> row = {Finite(b[0].Mid()), Finite(b[1].Mid()),
-                                     Finite(b[0].Width() / 2), Finite(b[1].Width() / 2)};
-    if (k == p.white) {
-      white.rows.push_back(row);
-    } else {
-      grey.rows.push_back(row);
-      grey.rows.back().push_back(Grey(k, n));
-    }
-  }
-  panel.series.push_back(std::move(grey));
-  panel.series.push_back(std::move(white));
+  AddCoefficients(
+      p,
+      [](const Box& b, int) {
+        return std::vector<double>{Finite(b[0].Mid()), Finite(b[1].Mid()),
+                                   Finite(b[0].Width() / 2), Finite(b[1].Width() / 2)};
+      },
+      &panel);
   Series lines{"using 1:2:($3-$1):($4-$2) with vectors nohead lw 0.8 lc rgb '#1f77b4' notitle",
                {}, ""};
   for (const auto& [x0, y0, x1, y1] : segments) lines.rows.push_back({x0, y0, x1, y1});
@@ -71,21 +85,13 @@ Panel Projection(const BoxPolynomialPanel& p, const Interval& x) {
                                          ": projection on x") +
                 " noenhanced\nunset grid\nset xlabel 'x'\nset ylabel 'degree'\nset xrange " +
                 Range(x) + "\nset yrange [-0.5:" + std::to_string(n) + ".5]\nunset key\n";
-  Series grey{kGreyBoxes, {}, ""}, white{kWhiteBox, {}, ""};
-  for (int k = 0; k <= n; ++k) {
-    const Box& b = p.coefficients[k];
-    if (b.IsEmpty() || b.size() < 1) continue;
-    const std::vector<double> row = {Finite(b[0].Mid()), static_cast<double>(k),
-                                     Finite(b[0].Width() / 2), 0.5};
-    if (k == p.white) {
-      white.rows.push_back(row);
-    } else {
-      grey.rows.push_back(row);
-      grey.rows.back().push_back(Grey(k, n));
-    }
-  }
-  panel.series.push_back(std::move(grey));
-  panel.series.push_back(std::move(white));
+  AddCoefficients(
+      p,
+      [](const Box& b, int k) {
+        return std::vector<double>{Finite(b[0].Mid()), static_cast<double>(k),
+                                   Finite(b[0].Width() / 2), 0.5};
+      },
+      &panel);
   return panel;
 }
 

@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <memory>
 #include <stdexcept>
 
 #include "algorithms/polynomial/polynomial.h"
+#include "experiments/thesis003/thesis003.h"
 #include "plots/box_polynomial_figure.h"
 #include "problems/line_intersection/line_intersection.h"
-#include "problems/registry.h"
 #include "report/report.h"
 
 namespace icp {
@@ -74,12 +73,7 @@ double WidestSide(const Box& box) {
 RecomputedPolynomial RecomputePolynomial(const RunRecord& run, bool repeated) {
   const PolynomialParams params =
       ParseParams<PolynomialParams>("polynomial", run.spec.algorithm_params);
-  std::unique_ptr<Problem> problem =
-      FindProblem(run.spec.problem).make(run.spec.problem_params, run.spec.seed);
-  Step step;
-  if (!problem->Next(&step)) throw std::invalid_argument(run.spec.problem + ": no step");
-  if (!step.views.measurement_set)
-    throw std::invalid_argument(run.spec.problem + ": no measurement-set view to evaluate");
+  const Step step = FirstMeasurementSetStep(run);
   const MeasurementSetView& view = *step.views.measurement_set;
   RecomputedPolynomial out;
   out.prior = view.prior;

@@ -226,15 +226,20 @@ const RunRecord* Thesis003FigureRun(const std::vector<RunRecord>& runs,
   return best;
 }
 
-RecomputedAccumulator RecomputeAccumulator(const RunRecord& run) {
-  const AccumulatorParams params =
-      ParseParams<AccumulatorParams>("accumulator", run.spec.algorithm_params);
+Step FirstMeasurementSetStep(const RunRecord& run) {
   std::unique_ptr<Problem> problem =
       FindProblem(run.spec.problem).make(run.spec.problem_params, run.spec.seed);
   Step step;
   if (!problem->Next(&step)) throw std::invalid_argument(run.spec.problem + ": no step");
   if (!step.views.measurement_set)
-    throw std::invalid_argument(run.spec.problem + ": no measurement-set view to accumulate");
+    throw std::invalid_argument(run.spec.problem + ": no measurement-set view to recompute from");
+  return step;
+}
+
+RecomputedAccumulator RecomputeAccumulator(const RunRecord& run) {
+  const AccumulatorParams params =
+      ParseParams<AccumulatorParams>("accumulator", run.spec.algorithm_params);
+  const Step step = FirstMeasurementSetStep(run);
   const MeasurementSetView& view = *step.views.measurement_set;
   const StateSpace& space = step.views.space;
   const Grid grid = AccumulatorGrid(view.prior, view.prior, space, params.cells);

@@ -37,6 +37,7 @@
 #include "core/box.h"
 #include "harness/run_record.h"
 #include "plots/figures.h"
+#include "problems/problem.h"
 #include "report/report.h"
 
 namespace icp {
@@ -67,6 +68,11 @@ struct AccumulatorPublished {
 // robot B's 4 with 2 outliers several, their sum a single maximum where 4 of
 // the 7 agree).
 const std::vector<AccumulatorPublished>& Thesis003PublishedAccumulators();
+
+// The first step of a run's problem (made from its definition), which must
+// offer the measurement-set view; throws std::invalid_argument (or
+// ParamError) otherwise. What the figures recompute from.
+Step FirstMeasurementSetStep(const RunRecord& run);
 
 // An accumulator recomputed from a run's definition (see the top).
 struct RecomputedAccumulator {
