@@ -10,6 +10,7 @@
 #include "algorithms/registry.h"
 #include "experiments/paper000/paper000.h"
 #include "experiments/paper004/paper004.h"
+#include "experiments/thesis003/city_roads.h"
 #include "experiments/thesis003/fig5_2.h"
 #include "experiments/thesis003/marina.h"
 #include "experiments/thesis003/thesis003.h"
@@ -94,6 +95,7 @@ bool IsRelaxedExperiment(const std::string& e) {
          e == kThesis003RelaxedLines || e == kThesis003RelaxedBeacons;
 }
 bool IsMarina(const std::string& e) { return IsMarinaExperiment(e); }
+bool IsCityRoads(const std::string& e) { return e == kThesis003CityRoads; }
 
 }  // namespace
 
@@ -192,6 +194,20 @@ std::string Thesis003Tex(const std::vector<RunRecord>& runs, const FigureSet& fi
     out << FigureTex(figures, "fig5_5_robot_a", "Fig. 5.5: robot A alone");
     out << FigureTex(figures, "fig5_6_robot_b", "Fig. 5.6: robot B alone");
     out << FigureTex(figures, "fig5_7_sum", "Fig. 5.7: the sum of both robots");
+  }
+  out << "\\subsection{The city without GPS: Fig. 4.17}\n";
+  if (!HasRunOf(runs, IsCityRoads)) {
+    out << Paragraph(
+        "This store holds no run of experiment city-roads: icpbench run specs/default.yaml "
+        "produces them.");
+  } else {
+    out << Paragraph(
+        "A car localized from its speed and compass alone (dead reckoning), then with the road "
+        "map through the image contractor, by every ICP algorithm (the map as an extra "
+        "contractor beside the CSP), the relaxed solver and the particle filter; the runs of "
+        "experiment city-roads, whose areas and consistency are in the report's tables.");
+    out << FigureTex(figures, "fig4_17_city_roads",
+                     "Fig. 4.17: dead-reckoning boxes (a) against the boxes on the roads (b)");
   }
   out << "\\subsection{Chapter 6: set membership against the particle filter}\n";
   if (!marina) {

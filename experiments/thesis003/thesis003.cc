@@ -1,5 +1,6 @@
 #include "experiments/thesis003/thesis003.h"
 
+#include "experiments/thesis003/city_roads.h"
 #include "experiments/thesis003/fig5_2.h"
 #include "experiments/thesis003/marina.h"
 
@@ -313,6 +314,7 @@ void Thesis003Figures(const std::vector<RunRecord>& runs, const std::string& out
   LinesAccumulator(runs, out_dir, out);
   Fig55To57(runs, out_dir, out);
   MarinaFigures(runs, out_dir, out);
+  CityRoadsFigure(runs, out_dir, out);
 }
 
 }  // namespace icp

@@ -14,6 +14,7 @@
 //   fig5_5           Figs. 5.5-5.7 (§5.2.3): the accumulators of two robots
 //                    ranging beacons, source 0 alone, source 1 alone and
 //                    their sum (fig5_5_robot_a, fig5_6_robot_b, fig5_7_sum).
+//   city-roads       Fig. 4.17 (§4.8.7): experiments/thesis003/city_roads.h.
 //   marina,          chapter 6, set membership vs particle filter in a
 //   marina-short     marina: experiments/thesis003/marina.h.
 //   relaxed-lines,   the table "Thesis 003: relaxed solvers": every
@@ -107,7 +108,8 @@ AccumulatorMaximum FindMaximum(const cv::Mat& counts);
 std::vector<TextTable> Thesis003Tables(const std::vector<RunRecord>& runs);
 
 // The figures fig5_2_box_polynomials (fig5_2.h), fig_lines_accumulator,
-// fig5_5_robot_a, fig5_6_robot_b and fig5_7_sum, then chapter 6's; each
+// fig5_5_robot_a, fig5_6_robot_b and fig5_7_sum, chapter 6's, then
+// fig4_17_city_roads (city_roads.h); each
 // skipped with a message when its experiment has no ok run to draw.
 void Thesis003Figures(const std::vector<RunRecord>& runs, const std::string& out_dir,
                       PlotOutput* out);

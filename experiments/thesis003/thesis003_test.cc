@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/grid.h"
+#include "experiments/thesis003/city_roads.h"
 #include "experiments/thesis003/fig5_2.h"
 #include "experiments/registry.h"
 #include "plots/figures_testing.h"
@@ -29,6 +30,9 @@ using testing::StderrOf;
 using testing::TempDir;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr char kCityRoadsMissing[] =
+    "fig4_17_city_roads: skipped: no ok HC4 run of experiment city-roads with roads=false and "
+    "roads=true";
 constexpr char kFig52Missing[] =
     "fig5_2_box_polynomials: skipped: no ok polynomial run of experiment fig5_2 with ";
 
@@ -129,6 +133,32 @@ TEST(Thesis003Test, Fig52FigureIsDrawn) {
               dir.string(), &out);
   EXPECT_TRUE(out.messages.empty()) << ::testing::PrintToString(out.messages);
   EXPECT_EQ(out.files, FigureFiles(dir, {"fig5_2_box_polynomials"}));
+  fs::remove_all(dir);
+}
+
+TEST(Thesis003Test, CityRoadsFigureDrawsTheHc4RunsWithAndWithoutTheRoads) {
+  const std::vector<StepRecord> steps = {MakeStep(1, 4, std::nullopt, std::nullopt, 1e-3),
+                                         MakeStep(1, 8, std::nullopt, std::nullopt, 1e-3)};
+  const std::vector<RunRecord> runs = {
+      MakeRun("bc4", {}, "city-roads", {{"roads", "false"}}, 1, steps, kThesis003CityRoads),
+      MakeRun("hc4", {}, "city-roads", {{"roads", "false"}}, 2, steps, kThesis003CityRoads),
+      MakeRun("hc4", {}, "city-roads", {}, 1, steps, kThesis003CityRoads),
+      MakeRun("hc4", {}, "city-roads", {{"roads", "false"}}, 1, steps, "other"),
+  };
+  EXPECT_EQ(CityRoadsRun(runs, false), &runs[1]);
+  EXPECT_EQ(CityRoadsRun(runs, true), &runs[2]);
+  if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
+  const fs::path dir = TempDir("thesis003_city");
+  fs::create_directories(dir);
+  PlotOutput out;
+  CityRoadsFigure(runs, dir.string(), &out);
+  EXPECT_TRUE(out.messages.empty()) << ::testing::PrintToString(out.messages);
+  EXPECT_EQ(out.files, FigureFiles(dir, {"fig4_17_city_roads"}));
+  PlotOutput none;
+  CityRoadsFigure({runs[2]}, dir.string(), &none);
+  EXPECT_EQ(none.messages,
+            std::vector<std::string>{"fig4_17_city_roads: skipped: no ok HC4 run of experiment "
+                                     "city-roads with roads=false"});
   fs::remove_all(dir);
 }
 
@@ -257,7 +287,8 @@ TEST(Thesis003Test, FiguresAreWritten) {
                 std::string(kFig52Missing) + "approximation=c3 p=1, approximation=c3 p=10, "
                                              "approximation=c1 p=30",
                 "fig6_8_marina_tracks: skipped: no ok run of experiment marina or marina-*",
-                "fig6_errors: skipped: no ok run of experiment marina or marina-*"}));
+                "fig6_errors: skipped: no ok run of experiment marina or marina-*",
+                kCityRoadsMissing}));
   EXPECT_EQ(out.files, FigureFiles(dir, {"fig_lines_accumulator", "fig5_5_robot_a",
                                          "fig5_6_robot_b", "fig5_7_sum"}));
   for (const std::string& f : out.files) EXPECT_GT(fs::file_size(f), 0u) << f;
@@ -299,7 +330,8 @@ TEST(Thesis003Test, WithoutItsExperimentsTheFiguresSaySo) {
                 "fig5_6_robot_b: skipped: no ok accumulator run of experiment fig5_5",
                 "fig5_7_sum: skipped: no ok accumulator run of experiment fig5_5",
                 "fig6_8_marina_tracks: skipped: no ok run of experiment marina or marina-*",
-                "fig6_errors: skipped: no ok run of experiment marina or marina-*"}));
+                "fig6_errors: skipped: no ok run of experiment marina or marina-*",
+                kCityRoadsMissing}));
 }
 
 TEST(Thesis003Test, IsRegistered) {
