@@ -19,13 +19,13 @@ namespace icp {
 void Describe(CityRoadsParams& p, ParamSet& set) {
   set.Add("steps", &p.steps, "number of steps (the 1500 m route takes about 150 at 10 m/s)",
           Range::Closed(1, 100000));
-  set.Add("dt", &p.dt, "time step, s", Range::Positive(10));
+  set.Add("dt", &p.dt, "time step, s", Range::Positive(20));
   set.Add("speed", &p.speed, "mean speed of the car, m/s, varying by ±10 %",
           Range{0.1, 50, false, false});
   set.Add("speed_error", &p.speed_error, "half-width of the speed reading, m/s",
           Range::Positive(10));
   set.Add("compass_error", &p.compass_error, "half-width of the compass reading, rad",
-          Range::Positive(0.5));
+          Range::Positive(1));
   set.Add("start_error", &p.start_error, "half-width of the known start box on x and y, m",
           Range::Positive(300));
   set.Add("w", &p.w, "window length of the CSP view in steps (2w motion constraints)",
