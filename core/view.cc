@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "core/contractor_algebra.h"
+
 namespace icp {
 
 std::string_view ToString(View view) {
@@ -26,6 +28,15 @@ Box NewestState(const CspView& view, const Box& box, int size) {
   if (std::find(found.begin(), found.end(), false) != found.end())
     throw std::invalid_argument("the CSP view lacks a variable for some component of the newest state");
   return newest;
+}
+
+std::unique_ptr<Contractor> ComposeWithCspView(std::unique_ptr<Contractor> csp_contractor,
+                                               const CspView& view) {
+  if (view.extra_contractors.empty()) return csp_contractor;
+  SharedContractors parts = {std::shared_ptr<Contractor>(std::move(csp_contractor))};
+  parts.insert(parts.end(), view.extra_contractors.begin(), view.extra_contractors.end());
+  return std::make_unique<FixpointContractor>(
+      std::make_shared<SequenceContractor>(std::move(parts)), 0.01, kCspViewFixpointIterations);
 }
 
 bool Views::Offers(View view) const {

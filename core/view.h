@@ -47,7 +47,21 @@ struct CspView {
   std::vector<StateRef> states;
   // The time step whose state the step estimates (the window's newest).
   int newest = 0;
+  // Constraints that are not expressions (a road map through the image
+  // contractor), as contractors over csp's variables, each sound for its
+  // constraint. An ICP algorithm contracts the CSP and these in turn to a
+  // fixpoint (ComposeWithCspView); empty for most problems.
+  std::vector<std::shared_ptr<Contractor>> extra_contractors;
 };
+
+// The contractor an ICP algorithm runs on a CSP view: csp_contractor alone
+// when the view has no extra contractors, else the fixpoint of csp_contractor
+// followed by each extra one (a component shrinking by less than 1 % of its
+// width stops it; at most kCspViewFixpointIterations rounds). Sound when
+// every part is.
+inline constexpr int kCspViewFixpointIterations = 50;
+std::unique_ptr<Contractor> ComposeWithCspView(std::unique_ptr<Contractor> csp_contractor,
+                                               const CspView& view);
 
 // The newest state's components of box, a box over view.csp's variables:
 // one interval per component of a `size`-component state space. Throws

@@ -10,6 +10,8 @@
 #include "algorithms/registry.h"
 #include "experiments/paper000/paper000.h"
 #include "experiments/paper004/paper004.h"
+#include "experiments/thesis003/city_roads.h"
+#include "experiments/thesis003/fig5_2.h"
 #include "experiments/thesis003/marina.h"
 #include "experiments/thesis003/thesis003.h"
 #include "paper/comparison.h"
@@ -88,11 +90,12 @@ std::string Distinct(const std::vector<RunRecord>& runs, std::string Provenance:
 bool IsPaper000Experiment(const std::string& e) {
   return e == kPaper000Table1 || e == kPaper000Window;
 }
-bool IsAccumulatorExperiment(const std::string& e) {
-  return e == kThesis003Fig52 || e == kThesis003Fig55 || e == kThesis003RelaxedLines ||
-         e == kThesis003RelaxedBeacons;
+bool IsRelaxedExperiment(const std::string& e) {
+  return e == kThesis003Fig52 || e == kThesis003LinesAccumulator || e == kThesis003Fig55 ||
+         e == kThesis003RelaxedLines || e == kThesis003RelaxedBeacons;
 }
 bool IsMarina(const std::string& e) { return IsMarinaExperiment(e); }
+bool IsCityRoads(const std::string& e) { return e == kThesis003CityRoads; }
 
 }  // namespace
 
@@ -172,21 +175,39 @@ std::string Paper000Tex(const std::vector<RunRecord>& runs, const FigureSet& fig
 
 std::string Thesis003Tex(const std::vector<RunRecord>& runs, const FigureSet& figures) {
   std::ostringstream out;
-  const bool relaxed = HasRunOf(runs, IsAccumulatorExperiment);
+  const bool relaxed = HasRunOf(runs, IsRelaxedExperiment);
   const bool marina = HasRunOf(runs, IsMarina);
   const std::vector<TextTable> tables = Thesis003Tables(runs);  // relaxed, then marina
   out << "\\subsection{Relaxed solvers: Figs. 5.2 and 5.5 to 5.7}\n";
   if (!relaxed) {
     out << Paragraph(
-        "This store holds no run of experiments fig5_2, fig5_5, relaxed-lines or "
-        "relaxed-beacons: icpbench run specs/default.yaml (a short sweep) or "
+        "This store holds no run of experiments fig5_2, lines-accumulator, fig5_5, "
+        "relaxed-lines or relaxed-beacons: icpbench run specs/default.yaml (a short sweep) or "
         "specs/relaxed.yaml (the whole one) produces them.");
   } else {
     out << PagedTable(tables.at(0));
-    out << FigureTex(figures, "fig5_2_accumulator", "Fig. 5.2: accumulator of lines with outliers");
+    out << FigureTex(figures, "fig5_2_box_polynomials",
+                     "Fig. 5.2: box polynomials of 20 lines, 7 of them outliers, and their "
+                     "projections on x");
+    out << FigureTex(figures, "fig_lines_accumulator",
+                     "The accumulator of the same lines (not a figure of the thesis)");
     out << FigureTex(figures, "fig5_5_robot_a", "Fig. 5.5: robot A alone");
     out << FigureTex(figures, "fig5_6_robot_b", "Fig. 5.6: robot B alone");
     out << FigureTex(figures, "fig5_7_sum", "Fig. 5.7: the sum of both robots");
+  }
+  out << "\\subsection{The city without GPS: Fig. 4.17}\n";
+  if (!HasRunOf(runs, IsCityRoads)) {
+    out << Paragraph(
+        "This store holds no run of experiment city-roads: icpbench run specs/default.yaml "
+        "produces them.");
+  } else {
+    out << Paragraph(
+        "A car localized from its speed and compass alone (dead reckoning), then with the road "
+        "map through the image contractor, by every ICP algorithm (the map as an extra "
+        "contractor beside the CSP), the relaxed solver and the particle filter; the runs of "
+        "experiment city-roads, whose areas and consistency are in the report's tables.");
+    out << FigureTex(figures, "fig4_17_city_roads",
+                     "Fig. 4.17: dead-reckoning boxes (a) against the boxes on the roads (b)");
   }
   out << "\\subsection{Chapter 6: set membership against the particle filter}\n";
   if (!marina) {

@@ -110,6 +110,16 @@ void PlotCentreErrorFigure(const FigureText& text, const std::vector<const RunRe
 void PlotTrackFigure(const FigureText& text, const std::vector<std::pair<double, double>>& wall_points,
                      const std::vector<const RunRecord*>& runs, int boxes_every,
                      const std::string& out_dir, PlotOutput* out);
+// Runs side by side on their map (equal scales, the rectangle x by y), one
+// panel per (title, run): the map's set pixels as grey dots (map_points, the
+// pixels' centres), the run's x-y box at every step in its algorithm's
+// colour, and its true trajectory in black. Skipped when a run has no step
+// rows.
+void PlotBoxTrackFigure(const FigureText& text,
+                        const std::vector<std::pair<double, double>>& map_points,
+                        const std::vector<std::pair<std::string, const RunRecord*>>& panels,
+                        const Interval& x, const Interval& y, const std::string& out_dir,
+                        PlotOutput* out);
 // Solve time per CSP, one box per group, pooling its ok runs' steps.
 void PlotTimingFigure(const FigureText& text, const std::vector<const GroupSummary*>& groups,
                       const std::string& out_dir, PlotOutput* out);

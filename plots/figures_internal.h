@@ -5,6 +5,7 @@
 
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "harness/run_record.h"
@@ -87,16 +88,26 @@ void Skip(const FigureText& text, PlotOutput* out, const std::vector<const RunRe
 void NoteRunsOnly(const FigureText& text, const std::vector<const RunRecord*>& runs,
                   PlotOutput* out);
 
+// What figures on a map draw (track_figure.cc): the map's pixels as grey
+// dots titled 'map'; a run's true x-y trajectory in black titled 'truth';
+// the x-y hull of every every-th step of a run (not the empty ones) as
+// rectangles in its algorithm's colour, titled title ("": none).
+Series MapSeries(const std::vector<std::pair<double, double>>& points);
+Series TruthSeries(const RunRecord& run);
+Series BoxesSeries(const RunRecord& run, int every, const std::string& title);
+
 }  // namespace icp::detail::plots
 
 // The files of plots/, the only includers, use these names as they are.
 // They are declared in detail::plots so that their symbols cannot clash with
 // another library's.
 namespace icp {
+using detail::plots::BoxesSeries;
 using detail::plots::Colour;
 using detail::plots::CountRunsOnly;
 using detail::plots::Figure;
 using detail::plots::Finite;
+using detail::plots::MapSeries;
 using detail::plots::HasPoint;
 using detail::plots::kNaN;
 using detail::plots::MultiLine;
@@ -112,6 +123,7 @@ using detail::plots::RunCount;
 using detail::plots::RunsOnlyText;
 using detail::plots::Series;
 using detail::plots::Skip;
+using detail::plots::TruthSeries;
 }  // namespace icp
 
 #endif  // ICPBENCH_PLOTS_FIGURES_INTERNAL_H_

@@ -5,6 +5,7 @@
 #include "problems/beacon_ranges/beacon_ranges.h"
 #include "problems/car_track/car_track.h"
 #include "problems/chain/chain.h"
+#include "problems/city_roads/city_roads.h"
 #include "problems/line_intersection/line_intersection.h"
 #include "problems/marina_sonar/marina_sonar.h"
 #include "problems/minibex_file/minibex_file.h"
@@ -30,6 +31,9 @@ std::vector<ProblemInfo>& Table() {
        {View::kCsp, View::kMeasurementSet, View::kProbabilistic}},
       {"marina-sonar", "an AUV in a marina with DVL, compass and a sector-scan sonar on a binary map, paper 003 ch. 6 (eq. 6.8)",
        &MakeMarinaSonar, &DefaultParams<MarinaSonarParams>, &ResolveMarinaSonar,
+       {View::kCsp, View::kMeasurementSet, View::kProbabilistic}},
+      {"city-roads", "a car in a city without GPS: speed, compass and the road map through the image contractor, paper 003 §4.8.7 (Fig. 4.17)",
+       &MakeCityRoads, &DefaultParams<CityRoadsParams>, &ResolveCityRoads,
        {View::kCsp, View::kMeasurementSet, View::kProbabilistic}},
   };
   return table;

@@ -75,7 +75,7 @@ class PaperCliTest : public ::testing::Test {
                   "  - name: window\n"
                   "    algorithms: [hc4, {name: hc4, params: {carry: none}}]\n"
                   "    problems: [{name: car-track, params: {w: [1, 2, 3], steps: 40}}]\n"
-                  "  - name: fig5_2\n"
+                  "  - name: lines-accumulator\n"
                   "    algorithms: [accumulator]\n"
                   "    problems: [{name: line-intersection, params: {lines: 20, outliers: 7}}]\n");
     run_ = Icpbench("run " + spec + " --out " + dir_ + " --jobs 2");

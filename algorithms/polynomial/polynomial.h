@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "algorithms/relaxed/relaxed_estimator.h"
 
@@ -30,6 +31,21 @@ struct PolynomialParams {
   int p = 10;
 };
 void Describe(PolynomialParams& p, ParamSet& set);
+
+// C^(p*)(s)(prior) of eq. 5.10: the Horner evaluation (prop. 31) over the
+// measurements repeated p times, coefficients 0..p m by degree; c3 keeps
+// every p-th. Stops as HornerSortTransform does.
+std::vector<Box> RepeatedSortTransform(const Box& prior, const SharedContractors& measurements,
+                                       int p, const StopCondition& stop,
+                                       WorkCounters* work = nullptr, bool* stopped = nullptr);
+
+// The approximation's coefficients on prior, by q = 0..m (the coefficient
+// of degree m - q; an empty one set empty): what the estimator solves with,
+// and what Fig. 5.2 draws. summary gets the work, and kStopped with its
+// message when stop fired.
+std::vector<Box> PolynomialHullsByQ(const PolynomialParams& params, const Box& prior,
+                                    const SharedContractors& measurements,
+                                    const StopCondition& stop, ContractSummary* summary);
 
 std::unique_ptr<Estimator> MakePolynomial(const ParamMap& params, std::uint64_t seed);
 

@@ -120,7 +120,8 @@ StepResult WindowEstimator::Step(const Views& views, const StopCondition& stop) 
   const CspView& view = *views.csp;
   Box box = InitialBox(view, views.space);
   const Box initial = box;
-  std::unique_ptr<Contractor> contractor = make_contractor_(contractor_params_, view.csp);
+  std::unique_ptr<Contractor> contractor =
+      ComposeWithCspView(make_contractor_(contractor_params_, view.csp), view);
   StepResult result;
   const auto start = std::chrono::steady_clock::now();
   ContractContext context(stop);

@@ -1,5 +1,7 @@
 #include "experiments/thesis003/thesis003.h"
 
+#include "experiments/thesis003/city_roads.h"
+#include "experiments/thesis003/fig5_2.h"
 #include "experiments/thesis003/marina.h"
 #include "experiments/thesis003/marina_figures.h"
 
@@ -128,10 +130,11 @@ void Missing(const FigureText& text, const std::string& out_dir, PlotOutput* out
   PlotAccumulatorFigure(text, cv::Mat(), Interval(0, 1), Interval(0, 1), {}, out_dir, out);
 }
 
-void Fig52(const std::vector<RunRecord>& runs, const std::string& out_dir, PlotOutput* out) {
-  FigureText text{"fig5_2_accumulator", "",
-                  std::string("no ok accumulator run of experiment ") + kThesis003Fig52};
-  const RunRecord* run = Thesis003FigureRun(runs, kThesis003Fig52);
+void LinesAccumulator(const std::vector<RunRecord>& runs, const std::string& out_dir, PlotOutput* out) {
+  FigureText text{"fig_lines_accumulator", "",
+                  std::string("no ok accumulator run of experiment ") +
+                      kThesis003LinesAccumulator};
+  const RunRecord* run = Thesis003FigureRun(runs, kThesis003LinesAccumulator);
   if (!run) return Missing(text, out_dir, out);
   RecomputedAccumulator a;
   try {
@@ -206,7 +209,6 @@ void Fig55To57(const std::vector<RunRecord>& runs, const std::string& out_dir, P
 
 const std::vector<AccumulatorPublished>& Thesis003PublishedAccumulators() {
   static const std::vector<AccumulatorPublished> kFigures = {
-      {"fig5_2_accumulator", "Fig. 5.2", -1, 1, 13, 20},
       {"fig5_5_robot_a", "Fig. 5.5", 0, 3, 0, 3},
       {"fig5_6_robot_b", "Fig. 5.6", 1, 0, 0, 4},
       {"fig5_7_sum", "Fig. 5.7", -1, 1, 4, 7},
@@ -226,15 +228,20 @@ const RunRecord* Thesis003FigureRun(const std::vector<RunRecord>& runs,
   return best;
 }
 
-RecomputedAccumulator RecomputeAccumulator(const RunRecord& run) {
-  const AccumulatorParams params =
-      ParseParams<AccumulatorParams>("accumulator", run.spec.algorithm_params);
+Step FirstMeasurementSetStep(const RunRecord& run) {
   std::unique_ptr<Problem> problem =
       FindProblem(run.spec.problem).make(run.spec.problem_params, run.spec.seed);
   Step step;
   if (!problem->Next(&step)) throw std::invalid_argument(run.spec.problem + ": no step");
   if (!step.views.measurement_set)
-    throw std::invalid_argument(run.spec.problem + ": no measurement-set view to accumulate");
+    throw std::invalid_argument(run.spec.problem + ": no measurement-set view to recompute from");
+  return step;
+}
+
+RecomputedAccumulator RecomputeAccumulator(const RunRecord& run) {
+  const AccumulatorParams params =
+      ParseParams<AccumulatorParams>("accumulator", run.spec.algorithm_params);
+  const Step step = FirstMeasurementSetStep(run);
   const MeasurementSetView& view = *step.views.measurement_set;
   const StateSpace& space = step.views.space;
   const Grid grid = AccumulatorGrid(view.prior, view.prior, space, params.cells);
@@ -304,9 +311,11 @@ std::vector<TextTable> Thesis003Tables(const std::vector<RunRecord>& runs) {
 
 void Thesis003Figures(const std::vector<RunRecord>& runs, const std::string& out_dir,
                       PlotOutput* out) {
-  Fig52(runs, out_dir, out);
+  Fig52Figure(runs, out_dir, out);
+  LinesAccumulator(runs, out_dir, out);
   Fig55To57(runs, out_dir, out);
   MarinaFigures(runs, out_dir, out);
+  CityRoadsFigure(runs, out_dir, out);
 }
 
 }  // namespace icp

@@ -4,11 +4,17 @@
 // file "<spec>#<name>", any spec file), never by their parameters;
 // specs/relaxed.yaml is the reference:
 //
-//   fig5_2           Fig. 5.2 (§5.1.4): the accumulator of m lines over the
-//                    x-y plane (figure fig5_2_accumulator).
+//   fig5_2           Fig. 5.2 (§5.1.4): the box polynomials of the
+//                    `polynomial` solver, a p sweep (figure
+//                    fig5_2_box_polynomials): experiments/thesis003/fig5_2.h.
+//   lines-accumulator
+//                    the accumulator of the same lines over the x-y plane
+//                    (figure fig_lines_accumulator; not a figure of the
+//                    thesis, which draws box polynomials there).
 //   fig5_5           Figs. 5.5-5.7 (§5.2.3): the accumulators of two robots
 //                    ranging beacons, source 0 alone, source 1 alone and
 //                    their sum (fig5_5_robot_a, fig5_6_robot_b, fig5_7_sum).
+//   city-roads       Fig. 4.17 (§4.8.7): experiments/thesis003/city_roads.h.
 //   marina,          chapter 6, set membership vs particle filter in a
 //   marina-drive     marina: experiments/thesis003/marina.h.
 //   relaxed-lines,   the table "Thesis 003: relaxed solvers": every
@@ -32,11 +38,12 @@
 #include "core/box.h"
 #include "harness/run_record.h"
 #include "plots/figures.h"
+#include "problems/problem.h"
 #include "report/report.h"
 
 namespace icp {
 
-inline constexpr char kThesis003Fig52[] = "fig5_2";
+inline constexpr char kThesis003LinesAccumulator[] = "lines-accumulator";
 inline constexpr char kThesis003Fig55[] = "fig5_5";
 inline constexpr char kThesis003RelaxedLines[] = "relaxed-lines";
 inline constexpr char kThesis003RelaxedBeacons[] = "relaxed-beacons";
@@ -51,18 +58,22 @@ const RunRecord* Thesis003FigureRun(const std::vector<RunRecord>& runs,
 // separate regions of highest count; 0: "several", at least two) and, for a
 // single maximum, its count out of the measurements, at the truth.
 struct AccumulatorPublished {
-  const char* figure;   // the plot's name, e.g. "fig5_2_accumulator"
+  const char* figure;   // the plot's name, e.g. "fig5_5_robot_a"
   const char* caption;  // the thesis' figure
   int source;           // the accumulator drawn: a source, or -1 for the sum
   int maxima;
   int count;            // of the single maximum; 0 when several
   int measurements;
 };
-// Fig. 5.2 (§5.1.4: 20 lines, 7 not through the common point: one peak
-// where the 13 others cross), Figs. 5.5-5.7 (§5.2.3: robot A's 3 ranges with
-// 1 outlier give 3 maxima, robot B's 4 with 2 outliers several, their sum a
-// single maximum where 4 of the 7 agree).
+// Figs. 5.5-5.7 (§5.2.3: robot A's 3 ranges with 1 outlier give 3 maxima,
+// robot B's 4 with 2 outliers several, their sum a single maximum where 4 of
+// the 7 agree).
 const std::vector<AccumulatorPublished>& Thesis003PublishedAccumulators();
+
+// The first step of a run's problem (made from its definition), which must
+// offer the measurement-set view; throws std::invalid_argument (or
+// ParamError) otherwise. What the figures recompute from.
+Step FirstMeasurementSetStep(const RunRecord& run);
 
 // An accumulator recomputed from a run's definition (see the top).
 struct RecomputedAccumulator {
@@ -96,9 +107,10 @@ AccumulatorMaximum FindMaximum(const cv::Mat& counts);
 // The report's table "Thesis 003: relaxed solvers" (see the top).
 std::vector<TextTable> Thesis003Tables(const std::vector<RunRecord>& runs);
 
-// The figures fig5_2_accumulator, fig5_5_robot_a, fig5_6_robot_b and
-// fig5_7_sum; each skipped with a message when its experiment has no ok
-// accumulator run.
+// The figures fig5_2_box_polynomials (fig5_2.h), fig_lines_accumulator,
+// fig5_5_robot_a, fig5_6_robot_b and fig5_7_sum, chapter 6's, then
+// fig4_17_city_roads (city_roads.h); each
+// skipped with a message when its experiment has no ok run to draw.
 void Thesis003Figures(const std::vector<RunRecord>& runs, const std::string& out_dir,
                       PlotOutput* out);
 

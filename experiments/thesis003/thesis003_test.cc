@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "core/grid.h"
+#include "experiments/thesis003/city_roads.h"
+#include "experiments/thesis003/fig5_2.h"
 #include "experiments/registry.h"
 #include "plots/figures_testing.h"
 #include "report/report_testing.h"
@@ -28,6 +30,11 @@ using testing::StderrOf;
 using testing::TempDir;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr char kCityRoadsMissing[] =
+    "fig4_17_city_roads: skipped: no ok HC4 run of experiment city-roads with roads=false and "
+    "roads=true";
+constexpr char kFig52Missing[] =
+    "fig5_2_box_polynomials: skipped: no ok polynomial run of experiment fig5_2 with ";
 
 // The report's Markdown from the table's title on (the generic table comes
 // first).
@@ -71,14 +78,88 @@ RunRecord MakeRun(const std::string& algorithm, ParamMap algorithm_params,
   return InExperiment(std::move(r), experiment);
 }
 
-// The fig5_2 run of specs/relaxed.yaml at a small resolution.
-RunRecord Fig52Run(std::uint64_t seed, int cells = 100) {
+// The lines-accumulator run of specs/relaxed.yaml at a small resolution.
+RunRecord LinesAccumulatorRun(std::uint64_t seed, int cells = 100) {
   return MakeRun("accumulator", {{"cells", std::to_string(cells)}}, "line-intersection",
-                 {{"lines", "20"}, {"outliers", "7"}}, seed, {}, kThesis003Fig52);
+                 {{"lines", "20"}, {"outliers", "7"}}, seed, {}, kThesis003LinesAccumulator);
 }
 RunRecord Fig55Run(int cells = 100) {
   return MakeRun("accumulator", {{"cells", std::to_string(cells)}}, "beacon-ranges",
                  {{"scenario", "two-robots"}}, 1, {}, kThesis003Fig55);
+}
+
+// A polynomial run of experiment fig5_2 on Fig. 5.2's 20 lines.
+RunRecord PolynomialRun(const std::string& approximation, int p, std::uint64_t seed = 1) {
+  return MakeRun("polynomial", {{"approximation", approximation}, {"p", std::to_string(p)}},
+                 "line-intersection", {{"lines", "20"}, {"outliers", "7"}}, seed, {},
+                 kThesis003Fig52);
+}
+
+TEST(Thesis003Test, Fig52RunIsTheSmallestOkSeedOfItsApproximationAndP) {
+  const std::vector<RunRecord> runs = {PolynomialRun("c3", 10, 2), PolynomialRun("c3", 10, 1),
+                                       PolynomialRun("c3", 1), PolynomialRun("c1", 10)};
+  EXPECT_EQ(Fig52PolynomialRun(runs, "c3", 10), &runs[1]);
+  EXPECT_EQ(Fig52PolynomialRun(runs, "c3", 1), &runs[2]);
+  EXPECT_EQ(Fig52PolynomialRun(runs, "c1", 30), nullptr);
+}
+
+// The white coefficient (degree n - q = 13) encloses the truth whatever p,
+// narrows as p grows, and C*(3) at p = 10 is every 10th coefficient of
+// C^(p*).
+TEST(Thesis003Test, Fig52WhiteCoefficientHoldsTheTruthAndNarrowsWithP) {
+  const RecomputedPolynomial a = RecomputePolynomial(PolynomialRun("c3", 1));
+  const RecomputedPolynomial b = RecomputePolynomial(PolynomialRun("c3", 10), true);
+  const RecomputedPolynomial d = RecomputePolynomial(PolynomialRun("c1", 30));
+  EXPECT_EQ(a.white, 13);
+  ASSERT_EQ(a.coefficients.size(), 21u);
+  ASSERT_EQ(b.repeated.size(), 201u);
+  EXPECT_EQ(a.lines.size(), 20u);
+  ASSERT_EQ(a.truth.size(), 2u);
+  for (const RecomputedPolynomial* r : {&a, &b, &d}) {
+    const Box& white = r->coefficients[r->white];
+    EXPECT_TRUE(white[0].Contains(r->truth[0]) && white[1].Contains(r->truth[1]));
+  }
+  for (int k = 0; k <= 20; ++k) EXPECT_EQ(b.coefficients[k], b.repeated[10 * k]) << k;
+  EXPECT_LT(WidestSide(b.coefficients[13]), WidestSide(a.coefficients[13]));
+  EXPECT_LT(WidestSide(d.coefficients[13]), WidestSide(a.coefficients[13]));
+}
+
+TEST(Thesis003Test, Fig52FigureIsDrawn) {
+  if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
+  const fs::path dir = TempDir("thesis003_fig5_2");
+  fs::create_directories(dir);
+  PlotOutput out;
+  Fig52Figure({PolynomialRun("c3", 1), PolynomialRun("c3", 10), PolynomialRun("c1", 30)},
+              dir.string(), &out);
+  EXPECT_TRUE(out.messages.empty()) << ::testing::PrintToString(out.messages);
+  EXPECT_EQ(out.files, FigureFiles(dir, {"fig5_2_box_polynomials"}));
+  fs::remove_all(dir);
+}
+
+TEST(Thesis003Test, CityRoadsFigureDrawsTheHc4RunsWithAndWithoutTheRoads) {
+  const std::vector<StepRecord> steps = {MakeStep(1, 4, std::nullopt, std::nullopt, 1e-3),
+                                         MakeStep(1, 8, std::nullopt, std::nullopt, 1e-3)};
+  const std::vector<RunRecord> runs = {
+      MakeRun("bc4", {}, "city-roads", {{"roads", "false"}}, 1, steps, kThesis003CityRoads),
+      MakeRun("hc4", {}, "city-roads", {{"roads", "false"}}, 2, steps, kThesis003CityRoads),
+      MakeRun("hc4", {}, "city-roads", {}, 1, steps, kThesis003CityRoads),
+      MakeRun("hc4", {}, "city-roads", {{"roads", "false"}}, 1, steps, "other"),
+  };
+  EXPECT_EQ(CityRoadsRun(runs, false), &runs[1]);
+  EXPECT_EQ(CityRoadsRun(runs, true), &runs[2]);
+  if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
+  const fs::path dir = TempDir("thesis003_city");
+  fs::create_directories(dir);
+  PlotOutput out;
+  CityRoadsFigure(runs, dir.string(), &out);
+  EXPECT_TRUE(out.messages.empty()) << ::testing::PrintToString(out.messages);
+  EXPECT_EQ(out.files, FigureFiles(dir, {"fig4_17_city_roads"}));
+  PlotOutput none;
+  CityRoadsFigure({runs[2]}, dir.string(), &none);
+  EXPECT_EQ(none.messages,
+            std::vector<std::string>{"fig4_17_city_roads: skipped: no ok HC4 run of experiment "
+                                     "city-roads with roads=false"});
+  fs::remove_all(dir);
 }
 
 TEST(Thesis003Test, TableFromHandMadeRuns) {
@@ -125,20 +206,20 @@ TEST(Thesis003Test, TableWithoutItsExperimentsSaysSo) {
 
 TEST(Thesis003Test, FigureRunIsTheSmallestOkSeedOfTheExperiment) {
   std::vector<RunRecord> runs = {
-      Fig52Run(3),
-      Fig52Run(2),
-      MakeRun("accumulator", {}, "line-intersection", {}, 1, {}, kThesis003Fig52,
+      LinesAccumulatorRun(3),
+      LinesAccumulatorRun(2),
+      MakeRun("accumulator", {}, "line-intersection", {}, 1, {}, kThesis003LinesAccumulator,
               RunStatus::kFailed),
       // The same parameters in another experiment, or another algorithm.
       MakeRun("accumulator", {{"cells", "100"}}, "line-intersection", {}, 1, {}, "relaxed-lines"),
-      MakeRun("q-relaxed", {}, "line-intersection", {}, 1, {}, kThesis003Fig52),
+      MakeRun("q-relaxed", {}, "line-intersection", {}, 1, {}, kThesis003LinesAccumulator),
   };
-  EXPECT_EQ(Thesis003FigureRun(runs, kThesis003Fig52), &runs[1]);
+  EXPECT_EQ(Thesis003FigureRun(runs, kThesis003LinesAccumulator), &runs[1]);
   EXPECT_EQ(Thesis003FigureRun(runs, kThesis003Fig55), nullptr);
 }
 
-TEST(Thesis003Test, RecomputedFig52MaximumHoldsTheTruth) {
-  const RecomputedAccumulator a = RecomputeAccumulator(Fig52Run(1));
+TEST(Thesis003Test, RecomputedLinesAccumulatorMaximumHoldsTheTruth) {
+  const RecomputedAccumulator a = RecomputeAccumulator(LinesAccumulatorRun(1));
   ASSERT_EQ(a.counts.size(), 2u);  // one source and the sum
   const cv::Mat& sum = a.counts.back();
   EXPECT_EQ(sum.rows, 100);
@@ -199,21 +280,24 @@ TEST(Thesis003Test, FiguresAreWritten) {
   const fs::path dir = TempDir("thesis003_all");
   fs::create_directories(dir);
   PlotOutput out;
-  Thesis003Figures({Fig52Run(2), Fig52Run(1), Fig55Run()}, dir.string(), &out);
+  Thesis003Figures({LinesAccumulatorRun(2), LinesAccumulatorRun(1), Fig55Run()}, dir.string(), &out);
   // Chapter 6's figures have no run here (marina_test.cc draws them).
   EXPECT_EQ(out.messages,
             (std::vector<std::string>{
+                std::string(kFig52Missing) + "approximation=c3 p=1, approximation=c3 p=10, "
+                                             "approximation=c1 p=30",
                 "fig6_7_dead_reckoning: skipped: no ok run of experiment marina or marina-*",
                 "fig6_8_marina_tracks: skipped: no ok run of experiment marina or marina-*",
                 "fig6_9_particles: skipped: no ok run of experiment marina or marina-*",
-                "fig6_errors: skipped: no ok run of experiment marina or marina-*"}));
-  EXPECT_EQ(out.files, FigureFiles(dir, {"fig5_2_accumulator", "fig5_5_robot_a", "fig5_6_robot_b",
-                                         "fig5_7_sum"}));
+                "fig6_errors: skipped: no ok run of experiment marina or marina-*",
+                kCityRoadsMissing}));
+  EXPECT_EQ(out.files, FigureFiles(dir, {"fig_lines_accumulator", "fig5_5_robot_a",
+                                         "fig5_6_robot_b", "fig5_7_sum"}));
   for (const std::string& f : out.files) EXPECT_GT(fs::file_size(f), 0u) << f;
   fs::remove_all(dir);
 }
 
-// accumulator cells=1 is in range: Fig. 5.2 of its one cell is a readable
+// accumulator cells=1 is in range: the lines' accumulator of its one cell is a readable
 // image (gnuplot draws no image of fewer than 2 x 2 points), without a
 // gnuplot warning. The run needs no steps (the figure recomputes it), so one
 // recorded with `record: runs` draws too.
@@ -223,10 +307,10 @@ TEST(Thesis003Test, OneCellAccumulatorIsDrawnWithoutWarnings) {
   fs::create_directories(dir);
   PlotOutput out;
   const std::string err =
-      StderrOf([&] { Thesis003Figures({RunsOnly(Fig52Run(1, 1))}, dir.string(), &out); });
+      StderrOf([&] { Thesis003Figures({RunsOnly(LinesAccumulatorRun(1, 1))}, dir.string(), &out); });
   EXPECT_EQ(err, "");
   ASSERT_EQ(out.files.size(), 2u) << ::testing::PrintToString(out.messages);
-  EXPECT_EQ(out.files, FigureFiles(dir, {"fig5_2_accumulator"}));
+  EXPECT_EQ(out.files, FigureFiles(dir, {"fig_lines_accumulator"}));
   // All 20 lines cross the one cell: it is the maximum, the palette's top.
   EXPECT_GT(PixelsOfColour(out.files[0], 0xfd, 0xe7, 0x25), 40000);
   fs::remove_all(dir);
@@ -240,14 +324,18 @@ TEST(Thesis003Test, WithoutItsExperimentsTheFiguresSaySo) {
   EXPECT_TRUE(out.files.empty());
   EXPECT_EQ(out.messages,
             (std::vector<std::string>{
-                "fig5_2_accumulator: skipped: no ok accumulator run of experiment fig5_2",
+                std::string(kFig52Missing) + "approximation=c3 p=1, approximation=c3 p=10, "
+                                             "approximation=c1 p=30",
+                "fig_lines_accumulator: skipped: no ok accumulator run of experiment "
+                "lines-accumulator",
                 "fig5_5_robot_a: skipped: no ok accumulator run of experiment fig5_5",
                 "fig5_6_robot_b: skipped: no ok accumulator run of experiment fig5_5",
                 "fig5_7_sum: skipped: no ok accumulator run of experiment fig5_5",
                 "fig6_7_dead_reckoning: skipped: no ok run of experiment marina or marina-*",
                 "fig6_8_marina_tracks: skipped: no ok run of experiment marina or marina-*",
                 "fig6_9_particles: skipped: no ok run of experiment marina or marina-*",
-                "fig6_errors: skipped: no ok run of experiment marina or marina-*"}));
+                "fig6_errors: skipped: no ok run of experiment marina or marina-*",
+                kCityRoadsMissing}));
 }
 
 TEST(Thesis003Test, IsRegistered) {

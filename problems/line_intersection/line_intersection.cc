@@ -33,28 +33,41 @@ ParamMap ResolveLineIntersection(const std::string& owner, const ParamMap& value
   return ResolveParams<LineIntersectionParams>(owner, values);
 }
 
-Step MakeLineIntersectionStep(const LineIntersectionParams& p, std::uint64_t seed) {
+LineIntersectionScene DrawLineIntersection(const LineIntersectionParams& p, std::uint64_t seed) {
   RandomEngine rng(seed);
   const double r = p.radius, e = p.offset_error;
-  const std::vector<double> truth = {UniformReal(rng, -r / 2, r / 2),
-                                     UniformReal(rng, -r / 2, r / 2)};
+  LineIntersectionScene scene;
+  scene.truth = {UniformReal(rng, -r / 2, r / 2), UniformReal(rng, -r / 2, r / 2)};
   const std::vector<bool> outliers = DrawOutliers(p.lines, p.outliers, rng);
+  for (int i = 0; i < p.lines; ++i) {
+    DrawnLine line;
+    line.angle = UniformReal(rng, 0, std::numbers::pi);
+    line.outlier = outliers[i];
+    line.offset = std::cos(line.angle) * scene.truth[0] + std::sin(line.angle) * scene.truth[1];
+    if (line.outlier) {
+      const double shift = e + UniformReal(rng, r / 10, r / 2);
+      line.offset += UniformInt(rng, 0, 1) == 0 ? -shift : shift;
+    } else {
+      line.offset += UniformReal(rng, -e / 2, e / 2);
+    }
+    scene.lines.push_back(line);
+  }
+  return scene;
+}
+
+Step MakeLineIntersectionStep(const LineIntersectionParams& p, std::uint64_t seed) {
+  const LineIntersectionScene scene = DrawLineIntersection(p, seed);
+  const double r = p.radius, e = p.offset_error;
   ConstraintSystem csp;
   Expr x = csp.AddVariable("x", Interval(-r, r));
   Expr y = csp.AddVariable("y", Interval(-r, r));
-  for (int i = 0; i < p.lines; ++i) {
-    const double a = UniformReal(rng, 0, std::numbers::pi);
-    const double ca = std::cos(a), sa = std::sin(a);
-    double c = ca * truth[0] + sa * truth[1];
-    if (outliers[i]) {
-      const double shift = e + UniformReal(rng, r / 10, r / 2);
-      c += UniformInt(rng, 0, 1) == 0 ? -shift : shift;
-    } else {
-      c += UniformReal(rng, -e / 2, e / 2);
-    }
-    csp.AddConstraint(ca * x + sa * y, Interval(c) + Interval(-e, e));
+  std::vector<bool> outliers;
+  for (const DrawnLine& line : scene.lines) {
+    csp.AddConstraint(std::cos(line.angle) * x + std::sin(line.angle) * y,
+                      Interval(line.offset) + Interval(-e, e));
+    outliers.push_back(line.outlier);
   }
-  return MakePlanarStep(0, csp, truth, outliers, {});
+  return MakePlanarStep(0, csp, scene.truth, outliers, {});
 }
 
 std::unique_ptr<Problem> MakeLineIntersection(const ParamMap& params, std::uint64_t seed) {

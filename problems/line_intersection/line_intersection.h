@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/params.h"
 #include "problems/problem.h"
@@ -38,6 +39,21 @@ void Describe(LineIntersectionParams& p, ParamSet& set);
 // Parses and validates (outliers < lines); throws ParamError.
 LineIntersectionParams ParseLineIntersection(const std::string& owner, const ParamMap& values);
 ParamMap ResolveLineIntersection(const std::string& owner, const ParamMap& values);
+
+// The lines the seed draws: line i is cos(angle) x + sin(angle) y in
+// [offset - offset_error, offset + offset_error]. For figures, which draw
+// the lines; the step's constraints are these.
+struct DrawnLine {
+  double angle = 0;
+  double offset = 0;
+  bool outlier = false;
+};
+struct LineIntersectionScene {
+  std::vector<double> truth;  // (x, y)
+  std::vector<DrawnLine> lines;
+};
+LineIntersectionScene DrawLineIntersection(const LineIntersectionParams& params,
+                                           std::uint64_t seed);
 
 // The single step for the given seed.
 Step MakeLineIntersectionStep(const LineIntersectionParams& params, std::uint64_t seed);

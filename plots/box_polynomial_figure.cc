@@ -1,0 +1,118 @@
+#include "plots/box_polynomial_figure.h"
+
+#include <algorithm>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#include "plots/figures_internal.h"
+
+namespace icp {
+
+namespace {
+
+// Grey of degree k of n: light for 0, black for n; as gnuplot's rgb integer.
+double Grey(int k, int n) {
+  const int level = 225 - 225 * k / std::max(1, n);
+  return static_cast<double>((level << 16) | (level << 8) | level);
+}
+
+std::string Range(const Interval& r) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "[" << r.lo() << ":" << r.hi() << "]";
+  return s.str();
+}
+
+constexpr char kGreyBoxes[] =
+    "using 1:2:3:4:5 with boxxyerror fs solid 1.0 noborder lc rgb variable notitle";
+constexpr char kWhiteBox[] =
+    "using 1:2:3:4 with boxxyerror fs solid 1.0 border lc rgb '#d62728' lw 1.5 lc rgb 'white' "
+    "title 'coefficient n - q'";
+
+// The coefficients drawn as boxes {x, y, half width, half height} of
+// row_of(coefficient k, k): the grey ones, then the white one.
+template <typename RowOf>
+void AddCoefficients(const BoxPolynomialPanel& p, RowOf row_of, Panel* panel) {
+  const int n = static_cast<int>(p.coefficients.size()) - 1;
+  Series grey{kGreyBoxes, {}, ""}, white{kWhiteBox, {}, ""};
+  for (int k = 0; k <= n; ++k) {
+    const Box& b = p.coefficients[k];
+    if (b.IsEmpty() || b.size() < 2) continue;
+    std::vector<double> row = row_of(b, k);
+    if (k == p.white) {
+      white.rows.push_back(std::move(row));
+    } else {
+      row.push_back(Grey(k, n));
+      grey.rows.push_back(std::move(row));
+    }
+  }
+  panel->series.push_back(std::move(grey));
+  panel->series.push_back(std::move(white));
+}
+
+// The x-y boxes, the lines and the truth.
+Panel Boxes(const BoxPolynomialPanel& p, const Interval& x, const Interval& y,
+            const std::vector<std::array<double, 4>>& segments, const std::vector<double>& truth) {
+  Panel panel;
+  panel.setup = "set title " + MultiLine(p.title) +
+                " noenhanced\nunset grid\nset size ratio -1\nset xlabel 'x'\nset ylabel 'y'\n"
+                "set xrange " + Range(x) + "\nset yrange " + Range(y) +
+                "\nset key outside bottom center horizontal noenhanced\n";
+  AddCoefficients(
+      p,
+      [](const Box& b, int) {
+        return std::vector<double>{Finite(b[0].Mid()), Finite(b[1].Mid()),
+                                   Finite(b[0].Width() / 2), Finite(b[1].Width() / 2)};
+      },
+      &panel);
+  Series lines{"using 1:2:($3-$1):($4-$2) with vectors nohead lw 0.8 lc rgb '#1f77b4' notitle",
+               {}, ""};
+  for (const auto& [x0, y0, x1, y1] : segments) lines.rows.push_back({x0, y0, x1, y1});
+  panel.series.push_back(std::move(lines));
+  if (truth.size() >= 2)
+    panel.series.push_back(
+        {"using 1:2 with points pt 2 ps 1.5 lw 2 lc rgb '#d62728' title 'truth'",
+         {{truth[0], truth[1]}}, ""});
+  return panel;
+}
+
+// Coefficient k's x interval at height k.
+Panel Projection(const BoxPolynomialPanel& p, const Interval& x) {
+  Panel panel;
+  const int n = static_cast<int>(p.coefficients.size()) - 1;
+  panel.setup = "set title " + MultiLine(p.title.substr(0, p.title.find('\n')) +
+                                         ": projection on x") +
+                " noenhanced\nunset grid\nset xlabel 'x'\nset ylabel 'degree'\nset xrange " +
+                Range(x) + "\nset yrange [-0.5:" + std::to_string(n) + ".5]\nunset key\n";
+  AddCoefficients(
+      p,
+      [](const Box& b, int k) {
+        return std::vector<double>{Finite(b[0].Mid()), static_cast<double>(k),
+                                   Finite(b[0].Width() / 2), 0.5};
+      },
+      &panel);
+  return panel;
+}
+
+}  // namespace
+
+void PlotBoxPolynomialFigure(const FigureText& text, const std::vector<BoxPolynomialPanel>& panels,
+                             const Interval& x, const Interval& y,
+                             const std::vector<std::array<double, 4>>& segments,
+                             const std::vector<double>& truth, const std::string& out_dir,
+                             PlotOutput* out) {
+  if (panels.empty()) return Skip(text, out);
+  Figure f;
+  f.name = text.name;
+  f.title = text.title;
+  f.rows = 2;
+  f.cols = static_cast<int>(panels.size());
+  f.width_in = 4.2 * f.cols;
+  f.height_in = 9;
+  for (const BoxPolynomialPanel& p : panels) f.panels.push_back(Boxes(p, x, y, segments, truth));
+  for (const BoxPolynomialPanel& p : panels) f.panels.push_back(Projection(p, x));
+  Render(f, out_dir, out);
+}
+
+}  // namespace icp
