@@ -7,6 +7,7 @@
 
 #include "algorithms/registry.h"
 #include "core/memory_budget.h"
+#include "harness/coverage.h"
 #include "harness/environment_error.h"
 #include "harness/metrics.h"
 #include "harness/sweep_recorder.h"
@@ -36,6 +37,7 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
   RunRecord record;
   MetricsAccumulator metrics;
   PostStateJudge post_states;
+  CoverageCounter coverage;
   record.spec = spec;
   const auto start = Clock::now();
   int step_index = 0;
@@ -63,6 +65,7 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
       r.status = std::string(ToString(result.summary.status));
       r.solve_time_s = result.solve_time_s >= 0 ? result.solve_time_s : solve_time;
       post_states.Judge(step, &result.properties);
+      coverage.Add(step, *result.estimate, &result.properties);
       for (Property& p : result.properties) r.properties.push_back(std::move(p));
       for (const Property& p : step.annotations) r.properties.push_back(p);
       for (Property& p : result.estimate->Extras()) r.properties.push_back(std::move(p));
@@ -97,6 +100,7 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
     record.reason = "exception of unknown type";
   }
   if (estimator) record.properties = estimator->RunProperties();
+  coverage.AppendRunProperties(&record.properties);
   record.wall_time_s = Seconds(Clock::now() - start);
   record.metrics = metrics.Finish(spec.seed);
   return record;

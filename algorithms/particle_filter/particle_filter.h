@@ -93,12 +93,6 @@ std::vector<std::size_t> SystematicResample(const std::vector<double>& weights, 
 std::vector<std::size_t> MultinomialResample(const std::vector<double>& weights, std::size_t n,
                                              RandomEngine& rng);
 
-// The q-quantile of values under weights (non-negative, positive sum): the
-// least value v such that the weight of the values <= v exceeds q times the
-// total (for q < 1; the greatest value with positive weight for q >= 1).
-double WeightedQuantile(const std::vector<double>& values, const std::vector<double>& weights,
-                        double q);
-
 std::unique_ptr<Estimator> MakeParticleFilter(const ParamMap& params, std::uint64_t seed);
 
 }  // namespace icp
