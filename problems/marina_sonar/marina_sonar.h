@@ -188,7 +188,7 @@ inline constexpr int kMarinaBiasHeading = 4;
 // neighbouring steps see the same walls through the same map and biases, so
 // their errors are not independent; counted as independent, ten returns a
 // step made the cloud collapse to a few metres' share of the truth's place.
-inline constexpr double kSonarTemper = 0.2;
+inline constexpr double kSonarTemper = 0.1;
 
 // The particle filter's likelihood of one step's returns at position (x,
 // y), the compass reading corrected by heading_bias: a likelihood field
