@@ -28,7 +28,7 @@ void Describe(ParticleFilterParams& p, ParamSet& set) {
           "share of particles replaced by global-prior draws at each resampling (0: none)",
           Range::Closed(0, 0.5));
   set.Add("region", &p.region,
-          "the set's box: 95 (holds >= 95 % of the weight) or hull (every particle)",
+          "the set's box: 95 (the 95 % credible box) or hull (every particle)",
           {"95", "hull"});
 }
 
