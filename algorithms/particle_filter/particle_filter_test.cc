@@ -261,8 +261,9 @@ TEST(ParticleFilterTest, EveryParticleImpossibleReinitialisesWithoutNaN) {
 }
 
 // Over every step of problem: the "95" region is the box of the weighted
-// quantiles 0.05 / (2 d), 1 - 0.05 / (2 d) of each of the d components, so
-// it holds at least 95 % of the weight; "hull" holds every particle.
+// quantiles t, 1 - t of each of the d components (t = CredibleTail(0.95,
+// d)), so it holds at least 1 - 2 d t of the weight; "hull" holds every
+// particle.
 void ExpectRegionsHoldTheirWeight(Problem& problem, Estimator& filter, const std::string& region) {
   Step step;
   while (problem.Next(&step)) {

@@ -186,8 +186,9 @@ inline constexpr int kMarinaBiasV = 3;
 inline constexpr int kMarinaBiasHeading = 4;
 // The weight of the sonar's log-likelihood: the returns of a step and of
 // neighbouring steps see the same walls through the same map and biases, so
-// their errors are not independent; counted as independent, ten returns a
-// step made the cloud collapse to a few metres' share of the truth's place.
+// their errors are not independent. On the whole drive, known start, 5
+// seeds, the filter's 95 % box held the truth on 77-100 % of the steps at
+// 0.2 and on 92-100 % at 0.1 (docs/reproduction/thesis003.md).
 inline constexpr double kSonarTemper = 0.1;
 
 // The particle filter's likelihood of one step's returns at position (x,
