@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/credible_box.h"
 #include "core/rounding.h"
 
 namespace icp {
@@ -191,6 +192,14 @@ std::vector<double> ParticleEstimate::Centre() const {
   if (!(total > 0)) return {};
   for (double& v : centre) v /= total;
   return centre;
+}
+
+std::optional<Box> ParticleEstimate::CredibleRegion(double level) const {
+  for (double w : weights_)
+    if (w > 0) return CredibleBox(particles_, weights_, level);
+  Box empty(static_cast<std::size_t>(particles_.cols));
+  empty.SetEmpty();
+  return empty;
 }
 
 Properties ParticleEstimate::Extras() const {

@@ -72,6 +72,10 @@ class Estimate {
   virtual std::vector<double> Centre() const;
   // What this kind knows beyond the queries (box count, max count, ESS...).
   virtual Properties Extras() const { return {}; }
+  // The box holding about `level` (in (0, 1)) of a probabilistic estimate's
+  // mass (core/credible_box.h), whose coverage of the truth the harness
+  // measures; nullopt for a set, which claims no level.
+  virtual std::optional<Box> CredibleRegion(double /*level*/) const { return std::nullopt; }
 };
 
 class BoxEstimate : public Estimate {
@@ -156,6 +160,8 @@ class ParticleEstimate : public Estimate {
   std::vector<double> Centre() const override;
   // particles and effective_sample_size (1 / sum of squared normalised weights).
   Properties Extras() const override;
+  // CredibleBox of the particles; an empty box when no weight is positive.
+  std::optional<Box> CredibleRegion(double level) const override;
   const cv::Mat& particles() const { return particles_; }
   const std::vector<double>& weights() const { return weights_; }
   // The box hull of the particles with positive weight, whatever the region.

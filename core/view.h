@@ -90,6 +90,9 @@ struct MeasurementSetView {
   std::function<Box(const Box& previous)> predict;
 };
 
+// A state drawn here may carry hidden components after the state space's
+// (a sensor's bias the motion corrects): a filter carries them along and
+// reports the space's components only.
 struct ProbabilisticView {
   // Draws a state from the prior of the first step.
   std::function<std::vector<double>(RandomEngine&)> sample_prior;

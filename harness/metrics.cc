@@ -95,6 +95,21 @@ Box Domains(const Views& views) {
 }
 }  // namespace
 
+Properties CoverageProperties(const Step& step, const Estimate& estimate) {
+  Properties out;
+  if (step.truth.empty()) return out;
+  for (const int percent : kCoverageLevels) {
+    const std::optional<Box> region = estimate.CredibleRegion(percent / 100.0);
+    if (!region) return out;
+    bool covered = !region->IsEmpty();
+    for (int c = 0; c < step.views.space.size() && covered; ++c)
+      covered = (*region)[c].Contains(
+          Representative(step.truth[c], step.views.space.Period(c), (*region)[c]));
+    out.push_back({"covered_" + std::to_string(percent), std::int64_t{covered}});
+  }
+  return out;
+}
+
 StepRecord MeasureStep(const Step& step, const Estimate& estimate) {
   const StateSpace& space = step.views.space;
   const Box hull = estimate.Hull();

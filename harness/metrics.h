@@ -23,6 +23,14 @@ namespace icp {
 // estimator's properties are left to the caller.
 StepRecord MeasureStep(const Step& step, const Estimate& estimate);
 
+// The levels, in per cent, whose credible regions' coverage is measured.
+inline constexpr int kCoverageLevels[] = {50, 90, 95};
+// Whether the truth lies in the estimate's credible region at each level
+// (Estimate::CredibleRegion; a periodic component's truth moved as in
+// MeasureStep): the properties covered_50, covered_90 and covered_95, 1 or
+// 0. None when the truth is unknown or the estimate is a set (no region).
+Properties CoverageProperties(const Step& step, const Estimate& estimate);
+
 // Why an estimate cannot be the answer to the step, or "" when it can: a
 // hull of the wrong dimension, a NaN bound, or a component outside the
 // step's domains (the CSP view's newest state, the measurement set's prior;

@@ -7,6 +7,7 @@
 
 #include "algorithms/registry.h"
 #include "core/memory_budget.h"
+#include "harness/coverage.h"
 #include "harness/environment_error.h"
 #include "harness/guarantee.h"
 #include "harness/metrics.h"
@@ -38,6 +39,7 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
   MetricsAccumulator metrics;
   PostStateJudge post_states;
   GuaranteeJudge guarantee;
+  CoverageCounter coverage;
   record.spec = spec;
   const auto start = Clock::now();
   int step_index = 0;
@@ -65,6 +67,7 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
       r.status = std::string(ToString(result.summary.status));
       r.solve_time_s = result.solve_time_s >= 0 ? result.solve_time_s : solve_time;
       post_states.Judge(step, &result.properties);
+      coverage.Add(step, *result.estimate, &result.properties);
       for (Property& p : result.properties) r.properties.push_back(std::move(p));
       for (const Property& p : step.annotations) r.properties.push_back(p);
       for (Property& p : result.estimate->Extras()) r.properties.push_back(std::move(p));
@@ -101,6 +104,7 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
   }
   if (estimator) record.properties = estimator->RunProperties();
   for (Property& p : guarantee.RunProperties()) record.properties.push_back(std::move(p));
+  coverage.AppendRunProperties(&record.properties);
   record.wall_time_s = Seconds(Clock::now() - start);
   record.metrics = metrics.Finish(spec.seed);
   return record;

@@ -29,10 +29,12 @@
 // weights, the centre (the weighted mean; the circular mean for periodic
 // components) and the region, the box that stands for the set in the shared
 // metrics (containment, area):
-//   - "95": per component, the weighted quantiles 0.05 / (2 d) and
-//     1 - 0.05 / (2 d) of the particles (d components); by the union bound
-//     the box holds at least 95 % of the weight (a credible region of the
-//     cloud, not a guaranteed enclosure of the truth);
+//   - "95": the credible box at level 0.95 (core/credible_box.h): per
+//     component, the weighted quantiles t and 1 - t, t = (1 - 0.95^(1/d)) /
+//     2 (Šidák, d components), so each component's interval holds 0.95^(1/d)
+//     of the weight (a credible region of the cloud, not a guaranteed
+//     enclosure of the truth; the harness measures how often it holds the
+//     truth, and that of the 50 % and 90 % boxes: harness/coverage.h);
 //   - "hull": the box hull of the particles with positive weight.
 // Step properties: mean_<component> and cov_<a>_<b> (a before or equal to
 // b in the state's order; weighted, normalised by the total weight, about
@@ -40,6 +42,10 @@
 // replaced), and from the estimate `particles` and `effective_sample_size`
 // (of the weights before resampling). Run properties: resamplings,
 // reinitialisations, injected (totals).
+//
+// A drawn state may carry hidden components after the state space's (the
+// marina's sensor biases, core/view.h): they move and are resampled with
+// the particle, and the estimate holds the space's components only.
 //
 // Not sound: a particle cloud is a sample, so the truth may lie outside the
 // region; the containment rate is measured, never assumed.
@@ -75,8 +81,8 @@ struct ParticleFilterParams {
   // injected particle costs accuracy while it survives; a few per cent
   // suffice to recover in tens of steps.
   double inject = 0.02;
-  // The box that stands for the set: "95" (a box holding at least 95 % of
-  // the weight) or "hull" (every particle of positive weight).
+  // The box that stands for the set: "95" (the 95 % credible box) or
+  // "hull" (every particle of positive weight).
   std::string region = "95";
 };
 void Describe(ParticleFilterParams& p, ParamSet& set);
@@ -92,12 +98,6 @@ std::vector<std::size_t> SystematicResample(const std::vector<double>& weights, 
 // proportional to its weight, in increasing order.
 std::vector<std::size_t> MultinomialResample(const std::vector<double>& weights, std::size_t n,
                                              RandomEngine& rng);
-
-// The q-quantile of values under weights (non-negative, positive sum): the
-// least value v such that the weight of the values <= v exceeds q times the
-// total (for q < 1; the greatest value with positive weight for q >= 1).
-double WeightedQuantile(const std::vector<double>& values, const std::vector<double>& weights,
-                        double q);
 
 std::unique_ptr<Estimator> MakeParticleFilter(const ParamMap& params, std::uint64_t seed);
 

@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "algorithms/registry.h"
+#include "core/credible_box.h"
 #include "problems/beacon_ranges/beacon_ranges.h"
 #include "problems/car_track/car_track.h"
 
@@ -101,16 +102,6 @@ TEST(MultinomialResampleTest, DrawsInProportionAndNeverAZeroWeight) {
   ASSERT_EQ(index.size(), 4000u);
   EXPECT_EQ(std::count(index.begin(), index.end(), 1u), 0);
   EXPECT_NEAR(std::count(index.begin(), index.end(), 2u) / 4000.0, 0.75, 0.03);
-}
-
-TEST(WeightedQuantileTest, CountsTheWeightBelow) {
-  const std::vector<double> v = {3, 1, 2, 4};
-  const std::vector<double> w = {1, 1, 1, 1};
-  EXPECT_EQ(WeightedQuantile(v, w, 0), 1);
-  EXPECT_EQ(WeightedQuantile(v, w, 0.25), 2);  // exceeds a quarter only with 2
-  EXPECT_EQ(WeightedQuantile(v, w, 0.6), 3);
-  EXPECT_EQ(WeightedQuantile(v, w, 1), 4);
-  EXPECT_EQ(WeightedQuantile(v, {0, 5, 0, 0}, 0.9), 1);
 }
 
 TEST(ParticleFilterTest, RegisteredWithItsParameters) {
@@ -270,8 +261,9 @@ TEST(ParticleFilterTest, EveryParticleImpossibleReinitialisesWithoutNaN) {
 }
 
 // Over every step of problem: the "95" region is the box of the weighted
-// quantiles 0.05 / (2 d), 1 - 0.05 / (2 d) of each of the d components, so
-// it holds at least 95 % of the weight; "hull" holds every particle.
+// quantiles t, 1 - t of each of the d components (t = CredibleTail(0.95,
+// d)), so it holds at least 1 - 2 d t of the weight; "hull" holds every
+// particle.
 void ExpectRegionsHoldTheirWeight(Problem& problem, Estimator& filter, const std::string& region) {
   Step step;
   while (problem.Next(&step)) {
@@ -292,13 +284,15 @@ void ExpectRegionsHoldTheirWeight(Problem& problem, Estimator& filter, const std
       EXPECT_EQ(inside, total);
       continue;
     }
-    EXPECT_GE(inside, 0.95 * total) << step.views.step;
+    // Each side of each component leaves out tail of the weight: the union
+    // bound.
+    const double tail = CredibleTail(0.95, cloud.cols), eps = 1e-9;
+    EXPECT_GE(inside, (1 - 2 * cloud.cols * tail) * total - eps) << step.views.step;
     for (int c = 0; c < cloud.cols; ++c) {
       std::vector<double> values(cloud.rows);
       for (int i = 0; i < cloud.rows; ++i) values[i] = cloud.at<double>(i, c);
       // The filter sums the weights in another order: a weight exactly at
       // the quantile may round to either side.
-      const double tail = 0.05 / (2 * cloud.cols), eps = 1e-9;
       EXPECT_GE(box[c].lo(), WeightedQuantile(values, w, tail - eps)) << step.views.step << " " << c;
       EXPECT_LE(box[c].lo(), WeightedQuantile(values, w, tail + eps)) << step.views.step << " " << c;
       EXPECT_GE(box[c].hi(), WeightedQuantile(values, w, 1 - tail - eps)) << step.views.step << " " << c;

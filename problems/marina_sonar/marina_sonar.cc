@@ -60,7 +60,7 @@ void Describe(MarinaSonarParams& p, ParamSet& set) {
           "(eq. 6.2; 0: this step's returns only)",
           Range::Closed(0, 1000));
   set.Add("likelihood_floor", &p.likelihood_floor,
-          "outlier floor of one return's likelihood (probabilistic view)", Range{0, 1, true, true});
+          "outlier weight of one return's likelihood (probabilistic view)", Range{0, 1, true, true});
   set.Add("log", &p.log, "CSV log replacing the simulator (empty: simulate)");
   set.Add("map", &p.map,
           "PNG map image of at most 25000000 pixels with its .yaml frame sidecar (empty: the "

@@ -357,34 +357,77 @@ TEST(MarinaSonarViewsTest, WithQAtLeastTheTrueOutliersAlwaysHoldsTheTruth) {
   }
 }
 
+// The probabilistic view's state: (x, y) and the zero biases.
+std::vector<double> WithZeroBiases(const std::vector<double>& xy) { return {xy[0], xy[1], 0, 0, 0}; }
+
 TEST(MarinaSonarViewsTest, ProbabilisticViewDrawsWithinTheBounds) {
   const std::vector<Step> steps = Drive({{"steps", "30"}}, 8);
   RandomEngine rng(1);
   const Box bounds = Shipped().image->Bounds();
+  const MarinaSonarParams defaults;
   int better = 0;
   for (std::size_t k = 0; k < steps.size(); ++k) {
     const ProbabilisticView& pv = *steps[k].views.probabilistic;
     const std::vector<double> start = pv.sample_prior(rng);
-    EXPECT_TRUE(Around(steps[0].truth, 1).Contains(start));
-    EXPECT_TRUE(bounds.Contains(pv.sample_global(rng)));
+    ASSERT_EQ(start.size(), 5u);
+    EXPECT_TRUE(Around(steps[0].truth, 1).Contains({start[0], start[1]}));
+    EXPECT_LE(std::fabs(start[kMarinaBiasU]), defaults.dvl_error);
+    EXPECT_LE(std::fabs(start[kMarinaBiasV]), defaults.dvl_error);
+    EXPECT_LE(std::fabs(start[kMarinaBiasHeading]), defaults.compass_error);
+    const std::vector<double> global = pv.sample_global(rng);
+    EXPECT_TRUE(bounds.Contains({global[0], global[1]}));
     if (k > 0) {
+      // With zero biases the drawn motion stays within the bounded errors.
       const Box reach = steps[k].views.measurement_set->predict(Around(steps[k - 1].truth, 0));
       for (int i = 0; i < 20; ++i) {
-        std::vector<double> s = steps[k - 1].truth;
+        std::vector<double> s = WithZeroBiases(steps[k - 1].truth);
         pv.sample_motion(s, rng);
-        EXPECT_TRUE(reach.Contains(s));
+        EXPECT_TRUE(reach.Contains({s[0], s[1]}));
       }
     }
-    const double at_truth = pv.log_likelihood(steps[k].truth);
+    const double at_truth = pv.log_likelihood(WithZeroBiases(steps[k].truth));
     EXPECT_TRUE(std::isfinite(at_truth));
-    better += at_truth > pv.log_likelihood({steps[k].truth[0] + 7, steps[k].truth[1] - 5});
+    better += at_truth > pv.log_likelihood(
+                             WithZeroBiases({steps[k].truth[0] + 7, steps[k].truth[1] - 5}));
   }
   EXPECT_GE(better, 20);
   // Off the map the robot cannot be.
-  EXPECT_EQ(steps[0].views.probabilistic->log_likelihood({bounds[0].hi() + 1, bounds[1].Mid()}),
+  EXPECT_EQ(steps[0].views.probabilistic->log_likelihood(
+                WithZeroBiases({bounds[0].hi() + 1, bounds[1].Mid()})),
             -std::numeric_limits<double>::infinity());
   const std::vector<Step> global = Drive({{"steps", "2"}, {"start", "unknown"}}, 8);
   EXPECT_GT(global[0].views.measurement_set->prior.MaxWidth(), 400);
+}
+
+// The outlier component: a return whose end point is far from every wall
+// costs the true position at most the uniform's share, kSonarTemper log(eps
+// / max_range), where the Gaussian alone would all but zero it.
+TEST(MarinaSonarViewsTest, AWildReturnNeverZeroesThePosition) {
+  MarinaSonarParams p;
+  p.steps = 1;
+  MarinaRecord r = SimulateMarinaSonar(p, Shipped(), 3).at(0);
+  ASSERT_FALSE(r.returns.empty());
+  const double x = r.truth_x, y = r.truth_y;
+  const double clean = MarinaLogLikelihood(Shipped(), r, p.max_range, 0.1, x, y);
+  MarinaReturn wild = r.returns[0];
+  double far = 0;
+  for (double range = 1; range < p.max_range && far < 8; range += 0.5) {
+    const double a = r.heading + wild.beam_angle;
+    wild.range = range;
+    far = WallDistance(Shipped(), x + range * std::cos(a), y + range * std::sin(a));
+  }
+  ASSERT_GE(far, 8);
+  r.returns.push_back(wild);
+  const double with_wild = MarinaLogLikelihood(Shipped(), r, p.max_range, 0.1, x, y);
+  EXPECT_LT(with_wild, clean);
+  EXPECT_GE(with_wild - clean, kSonarTemper * std::log(0.1 / p.max_range) - 1e-12);
+  // Nearly without the outlier component the same return costs several
+  // times more (its end point is 8 m or more from every wall).
+  MarinaRecord without = r;
+  without.returns.pop_back();
+  EXPECT_LT(MarinaLogLikelihood(Shipped(), r, p.max_range, 1e-12, x, y) -
+                MarinaLogLikelihood(Shipped(), without, p.max_range, 1e-12, x, y),
+            4 * kSonarTemper * std::log(0.1 / p.max_range));
 }
 
 // --- the log ------------------------------------------------------------------

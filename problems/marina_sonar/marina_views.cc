@@ -20,21 +20,33 @@
 
 namespace icp {
 
+namespace {
+const double kSqrtTwoPi = std::sqrt(2 * std::acos(-1.0));
+// The particle filter's motion (header comment): the white part of each
+// DVL or compass error, uniform within this share of its bound; each step
+// a bias moves uniformly within this share of its bound (so that
+// resampling keeps the biases diverse), staying within the bound.
+constexpr double kWhiteShare = 0.5;
+constexpr double kBiasWander = 0.01;
+}  // namespace
+
 double MarinaLogLikelihood(const MarinaMap& map, const MarinaRecord& r, double max_range,
-                           double floor, double x, double y) {
+                           double outlier_weight, double x, double y, double heading_bias) {
   if (!map.bounds[0].Contains(x) || !map.bounds[1].Contains(y))
     return -std::numeric_limits<double>::infinity();
   const double pixel = map.image->frame().pixel_size;
+  const double outlier = outlier_weight / max_range;  // uniform over the sonar's range
   double sum = 0;
   for (const MarinaReturn& ret : r.returns) {
     if (!(ret.range < max_range)) continue;
-    const double a = r.heading + ret.beam_angle;
+    const double a = r.heading - heading_bias + ret.beam_angle;
     const double dist = WallDistance(map, x + ret.range * std::cos(a), y + ret.range * std::sin(a));
     const double sigma = std::max(
         pixel, std::hypot(ret.range_error, ret.range * (r.heading_error + ret.beam_half_width)));
-    sum += std::log((1 - floor) * std::exp(-dist * dist / (2 * sigma * sigma)) + floor);
+    const double inlier = std::exp(-dist * dist / (2 * sigma * sigma)) / (kSqrtTwoPi * sigma);
+    sum += std::log((1 - outlier_weight) * inlier + outlier);
   }
-  return sum;
+  return kSonarTemper * sum;
 }
 
 namespace {
@@ -118,15 +130,22 @@ bool MarinaSonarProblem::Next(Step* step) {
     for (int j = oldest; j <= k; ++j)
       step->csp_truth.insert(step->csp_truth.end(), {records_[j].truth_x, records_[j].truth_y});
 
-  // The probabilistic view.
+  // The probabilistic view: (x, y) and the hidden biases.
   ProbabilisticView pv;
   const Box prior = known ? start_box_ : map_.bounds;
   auto image = map_.image;
-  pv.sample_prior = [prior, image](RandomEngine& rng) {
-    return UniformInWater(prior, *image, rng);
+  const double dvl_bound = r.dvl_error, compass_bound = r.heading_error;
+  auto with_biases = [dvl_bound, compass_bound](std::vector<double> s, RandomEngine& rng) {
+    s.push_back(UniformReal(rng, -dvl_bound, dvl_bound));
+    s.push_back(UniformReal(rng, -dvl_bound, dvl_bound));
+    s.push_back(UniformReal(rng, -compass_bound, compass_bound));
+    return s;
   };
-  pv.sample_global = [bounds = map_.bounds, image](RandomEngine& rng) {
-    return UniformInWater(bounds, *image, rng);
+  pv.sample_prior = [prior, image, with_biases](RandomEngine& rng) {
+    return with_biases(UniformInWater(prior, *image, rng), rng);
+  };
+  pv.sample_global = [bounds = map_.bounds, image, with_biases](RandomEngine& rng) {
+    return with_biases(UniformInWater(bounds, *image, rng), rng);
   };
   if (k == 0) {
     pv.sample_motion = [](std::vector<double>&, RandomEngine&) {};
@@ -135,15 +154,20 @@ bool MarinaSonarProblem::Next(Step* step) {
     pv.sample_motion = [u = before.dvl_u, v = before.dvl_v, e = before.dvl_error,
                         th = before.heading, te = before.heading_error,
                         dt = r.t - before.t](std::vector<double>& s, RandomEngine& rng) {
-      const double du = u + UniformReal(rng, -e, e), dv = v + UniformReal(rng, -e, e);
-      const double h = th + UniformReal(rng, -te, te);
+      for (int i = kMarinaBiasU; i <= kMarinaBiasHeading; ++i) {
+        const double bound = i == kMarinaBiasHeading ? te : e;
+        s[i] = std::clamp(s[i] + UniformReal(rng, -kBiasWander, kBiasWander) * bound, -bound, bound);
+      }
+      const double du = u - s[kMarinaBiasU] + UniformReal(rng, -kWhiteShare, kWhiteShare) * e;
+      const double dv = v - s[kMarinaBiasV] + UniformReal(rng, -kWhiteShare, kWhiteShare) * e;
+      const double h = th - s[kMarinaBiasHeading] + UniformReal(rng, -kWhiteShare, kWhiteShare) * te;
       s[0] += dt * (du * std::cos(h) - dv * std::sin(h));
       s[1] += dt * (du * std::sin(h) + dv * std::cos(h));
     };
   }
   pv.log_likelihood = [map = map_, record = r, max_range = params_.max_range,
-                       floor = params_.likelihood_floor](const std::vector<double>& s) {
-    return MarinaLogLikelihood(map, record, max_range, floor, s[0], s[1]);
+                       outlier = params_.likelihood_floor](const std::vector<double>& s) {
+    return MarinaLogLikelihood(map, record, max_range, outlier, s[0], s[1], s[kMarinaBiasHeading]);
   };
   step->views.probabilistic = std::move(pv);
   return true;
