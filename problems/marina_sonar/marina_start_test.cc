@@ -35,8 +35,11 @@ TEST(MarinaStartTest, AreaPriorIsTheThesisAreaAndHoldsTheTrueStart) {
     // The CSP's first state and the particle prior start from the same box.
     EXPECT_EQ(steps[0].views.csp->csp.domains(), prior);
     RandomEngine rng(seed);
-    for (int i = 0; i < 200; ++i)
-      EXPECT_TRUE(prior.Contains(steps[0].views.probabilistic->sample_prior(rng)));
+    for (int i = 0; i < 200; ++i) {
+      // (x, y), then the filter's hidden sensor biases.
+      const std::vector<double> particle = steps[0].views.probabilistic->sample_prior(rng);
+      EXPECT_TRUE(prior.Contains({particle[0], particle[1]}));
+    }
     // Later steps: the whole map, as the other starts.
     EXPECT_GT(steps[1].views.measurement_set->prior.MaxWidth(), 400);
   }
