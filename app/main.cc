@@ -34,6 +34,7 @@
 #include "harness/spec.h"
 #include "paper/paper.h"
 #include "plots/figures.h"
+#include "web/serve.h"
 
 namespace {
 constexpr int kUsageError = 2;
@@ -144,6 +145,16 @@ int main(int argc, char** argv) {
       app.add_subcommand("paper", "the LaTeX paper of a results store (DIR/paper/icpbench.pdf)");
   paper_cmd->add_option("DIR", paper_dir, "output directory of `icpbench run`")->required();
 
+  icp::web::ServeOptions serve;
+  CLI::App* serve_cmd =
+      app.add_subcommand("serve", "a read-only web page over a results store (docs/web.md)");
+  serve_cmd->add_option("DIR", serve.dir, "output directory of `icpbench run`")->required();
+  serve_cmd->add_option("--port", serve.port, "port (0: a free one)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 65535));
+  serve_cmd->add_option("--host", serve.host, "address to bind (another than localhost exposes the results)")
+      ->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -216,6 +227,8 @@ int main(int argc, char** argv) {
       const icp::PaperOutput paper = icp::BuildPaper(paper_dir);
       for (const std::string& m : paper.messages) std::cerr << "icpbench: " << m << "\n";
       std::cout << paper.pdf << "\n";
+    } else if (*serve_cmd) {
+      icp::web::Serve(serve, [](const std::string& url) { std::cout << url << std::endl; });
     } else if (*merge_cmd) {
       // An OUT_DIR it may not write is said as such (SQLite's own error on
       // the new store would not say why). MergeStores validates every input,
