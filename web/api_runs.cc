@@ -107,12 +107,15 @@ void GetOptions(const std::string& dir, const httplib::Request& req, httplib::Re
   options["algorithms"] = Distinct(store, "SELECT DISTINCT algorithm FROM runs ORDER BY 1");
   options["problems"] = Distinct(store, "SELECT DISTINCT problem FROM runs ORDER BY 1");
   options["experiments"] = Distinct(
-      store, "SELECT DISTINCT substr(spec_file, instr(spec_file, '#') + 1) FROM runs ORDER BY 1");
+      store, "SELECT DISTINCT substr(f, instr(f, '#') + 1) FROM (SELECT DISTINCT spec_file AS f "
+             "FROM runs) ORDER BY 1");
   // Parameters with their values (a sweep's axes), at most 200 values each.
   nlohmann::json params = nlohmann::json::object();
+  // The distinct parameter objects first: a sweep has few, however many seeds and runs.
   Query q(store,
-          "SELECT p.key, p.value FROM runs r, json_each(r.problem_params) p UNION "
-          "SELECT p.key, p.value FROM runs r, json_each(r.algorithm_params) p ORDER BY 1, 2",
+          "SELECT p.key, p.value FROM (SELECT DISTINCT problem_params AS j FROM runs) d, "
+          "json_each(d.j) p UNION SELECT p.key, p.value FROM (SELECT DISTINCT algorithm_params AS "
+          "j FROM runs) d, json_each(d.j) p ORDER BY 1, 2",
           {});
   while (q.Step()) {
     nlohmann::json& values = params[reinterpret_cast<const char*>(sqlite3_column_text(q.stmt(), 0))];

@@ -50,6 +50,7 @@ void Serve(const ServeOptions& options, const std::function<void(const std::stri
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
 
   httplib::Server server;
+  server.set_tcp_nodelay(true);  // no 40 ms Nagle delay on small answers
   RegisterRunsApi(server, options.dir);
   RegisterCompareApi(server, options.dir);
   RegisterFiles(server, options.dir, ICPBENCH_WEB_ASSETS, ICPBENCH_CHART_JS);
