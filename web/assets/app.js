@@ -121,12 +121,15 @@ async function drawRuns() {
   q.set('limit', PAGE);
   q.set('offset', offset);
   const runs = await api('/api/runs?' + q);
-  const params = r => Object.entries(Object.assign({}, r.parameters.problem, r.parameters.algorithm))
-    .map(([k, v]) => `${k}=${v}`).join(' ');
+  // The parameters that differ between the page's runs (all of them are in the key).
+  const merged = runs.map(r => Object.assign({}, r.parameters.problem, r.parameters.algorithm));
+  const varying = [...new Set(merged.flatMap(Object.keys))]
+    .filter(k => new Set(merged.map(m => m[k])).size > 1);
+  const params = i => varying.filter(k => k in merged[i]).map(k => `${k}=${merged[i][k]}`).join(' ');
   fillTable(document.getElementById('runs-table'),
-            ['id', 'experiment', 'algorithm', 'problem', 'parameters', 'seed', 'status', 'reason',
+            ['id', 'experiment', 'algorithm', 'problem', 'parameters that differ', 'seed', 'status', 'reason',
              'steps', 'mean area (m²)', 'consistency', 'centre rmse (m)', 'time/step (s)', 'key'],
-            runs.map(r => [r.id, r.experiment, r.algorithm, r.problem, params(r), r.seed, r.status,
+            runs.map((r, i) => [r.id, r.experiment, r.algorithm, r.problem, params(i), r.seed, r.status,
                            r.reason, r.steps, num(r.mean_area), r.consistency_rate, r.centre_rmse,
                            r.time_mean_s, r.key]),
             i => setState({view: 'run', id: runs[i].id, step: ''}),
