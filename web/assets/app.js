@@ -158,6 +158,8 @@ async function drawCompare() {
   sel('metric').onchange = () => setState({metric: sel('metric').value});
   sel('group').onchange = () => setState({group: sel('group').value});
   sel('x').onchange = () => setState({x: sel('x').value});
+  sel('logy').checked = s.get('logy') === '1';
+  sel('logy').onchange = () => setState({logy: sel('logy').checked ? '1' : ''});
 
   const q = filterQuery();
   q.set('metric', metric);
@@ -187,7 +189,9 @@ async function drawCompare() {
     type: xs.length > 1 ? 'line' : 'bar',
     data: {labels: xs.map(v => v === '' ? metric : v), datasets: xs.length > 1 ? datasets :
            datasets.filter((d, i) => i % 3 === 0)},
-    options: {scales: {x: {title: {display: true, text: x}}, y: {title: {display: true, text: metric}}},
+    options: {scales: {x: {title: {display: true, text: x}},
+                       y: {type: s.get('logy') === '1' ? 'logarithmic' : 'linear',
+                           title: {display: true, text: metric}}},
               plugins: {legend: {labels: {filter: item => !/ ci (lo|hi)$/.test(item.text)}}}},
   });
   // What the figure shows, for tests and readers of the DOM.
@@ -243,14 +247,13 @@ async function drawRun() {
                             num(r.area), r.centre_error, r.solve_time_s, r.estimate]),
             i => setState({step: steps[i].step}),
             i => steps[i].contained === 0 ? 'not-contained' : '');
-  const missed = steps.filter(r => r.contained === 0);
   drawChart('steps-chart', {
     type: 'line',
     data: {labels: steps.map(r => r.step), datasets: [
       {label: 'area (m²)', data: steps.map(r => num(r.area)), borderColor: colour(0), pointRadius: 0, yAxisID: 'y'},
       {label: 'centre error (m)', data: steps.map(r => r.centre_error), borderColor: colour(2), pointRadius: 0, yAxisID: 'y1'},
-      {label: 'truth not held', type: 'scatter', yAxisID: 'y', backgroundColor: colour(1),
-       data: missed.map(r => ({x: String(r.step), y: num(r.area)}))}]},
+      {label: 'truth not held', showLine: false, pointRadius: 4, yAxisID: 'y', backgroundColor: colour(1),
+       borderColor: colour(1), data: steps.map(r => r.contained === 0 ? num(r.area) : null)}]},
     options: {scales: {x: {title: {display: true, text: 'step'}},
                        y: {type: 'logarithmic', title: {display: true, text: 'area (m²)'}},
                        y1: {position: 'right', title: {display: true, text: 'centre error (m)'}}}},
