@@ -3,6 +3,7 @@ matches the store read directly, and bad requests get a 4xx with a message."""
 import json
 import math
 import os
+import shutil
 import statistics
 
 import pytest
@@ -149,6 +150,18 @@ def test_figures_are_listed_and_served(server, store_dir):
 
 def test_claims_are_empty_until_the_paper_writes_them(server, store_dir):
     assert server.json("/api/claims") == {"file": None, "claims": []}
+    paper = os.path.join(store_dir, "paper")
+    os.makedirs(paper)
+    claims = [{"claim": "HC4 is faster than BC4", "verdict": "match"}]
+    try:
+        with open(os.path.join(paper, "claims.json"), "w") as f:
+            json.dump(claims, f)
+        assert server.json("/api/claims") == {"file": "paper/claims.json", "claims": claims}
+        with open(os.path.join(paper, "claims.json"), "w") as f:
+            f.write("{not json")
+        assert "not JSON" in server.json("/api/claims", status=404)["error"]
+    finally:
+        shutil.rmtree(paper)
 
 
 def test_the_page_and_its_assets(server):

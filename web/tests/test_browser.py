@@ -72,3 +72,9 @@ def test_a_runs_steps_render(server, db):
     values = table_rows(dom, "step-values")
     assert [r[0] for r in values[1:]] == [r[0] for r in db.execute(
         "SELECT var FROM step_values WHERE run_id = ? AND step = 3 ORDER BY pos", (run["id"],))]
+
+
+def test_the_figures_view_shows_dir_figures(server):
+    dom = browse(server.url + "#view=figures", "figures")
+    assert 'data-ready="figures"' in dom
+    assert re.findall(r'<img src="([^"]+)"', dom) == ["/figures/area.png"]
