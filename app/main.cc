@@ -2,7 +2,7 @@
 // (unknown algorithm or parameter, unreadable or malformed file, bad option,
 // an output directory locked by another run), 3 the environment (disk full,
 // descriptors, processes or memory exhausted, permissions, LaTeX missing
-// for `paper`), 130/143 `run`
+// for `paper`, a port `serve` cannot bind), 130/143 `run`
 // stopped by SIGINT/SIGTERM, 1 an unexpected internal error.
 #include <CLI/CLI.hpp>
 #include <cmath>
@@ -152,7 +152,8 @@ int main(int argc, char** argv) {
   serve_cmd->add_option("--port", serve.port, "port (0: a free one)")
       ->capture_default_str()
       ->check(CLI::Range(0, 65535));
-  serve_cmd->add_option("--host", serve.host, "address to bind (another than localhost exposes the results)")
+  serve_cmd->add_option("--host", serve.host,
+                        "address to bind (another than localhost exposes the results)")
       ->capture_default_str();
 
   try {
