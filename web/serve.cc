@@ -8,6 +8,7 @@
 #include <signal.h>
 
 #include <filesystem>
+#include <set>
 #include <thread>
 
 #include "harness/environment_error.h"
@@ -76,8 +77,20 @@ void Serve(const ServeOptions& options, const std::function<void(const std::stri
                            " (in use, or not an address of this machine)");
   }
   const bool ipv6 = options.host.find(':') != std::string::npos;
-  on_listening("http://" + (ipv6 ? "[" + options.host + "]" : options.host) + ":" +
-               std::to_string(port) + "/");
+  const std::string authority =
+      (ipv6 ? "[" + options.host + "]" : options.host) + ":" + std::to_string(port);
+  // On a loopback address only this machine's own names are answered: a web
+  // page elsewhere that rebinds its DNS name to 127.0.0.1 cannot read the store.
+  if (options.host.rfind("127.", 0) == 0 || options.host == "localhost" || options.host == "::1") {
+    const std::set<std::string> names = {authority, "localhost:" + std::to_string(port)};
+    server.set_pre_routing_handler([names](const httplib::Request& req, httplib::Response& res) {
+      if (names.count(req.get_header_value("Host")) != 0) return httplib::Server::HandlerResponse::Unhandled;
+      SendError(res, 403, "host '" + req.get_header_value("Host") + "' not served (use " +
+                              *names.begin() + ")");
+      return httplib::Server::HandlerResponse::Handled;
+    });
+  }
+  on_listening("http://" + authority + "/");
 
   std::thread waiter([&server, stop_signals] {
     int signal = 0;

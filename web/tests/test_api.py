@@ -1,5 +1,6 @@
 """`icpbench serve`'s JSON API against a small store: every endpoint's answer
 matches the store read directly, and bad requests get a 4xx with a message."""
+import http.client
 import json
 import math
 import os
@@ -224,3 +225,17 @@ def test_the_server_writes_nothing(server, store_dir):
     assert (after.st_size, after.st_mtime_ns) == (before.st_size, before.st_mtime_ns)
     # Immutable (no sweep writing): not even SQLite's -wal/-shm files.
     assert not any(n.startswith("results.sqlite-") for n in os.listdir(store_dir))
+
+
+def test_another_host_name_is_refused(server):
+    """A DNS-rebinding page names its own host: it gets a 403, not the store."""
+    connection = http.client.HTTPConnection(server.host, server.port, timeout=30)
+    connection.request("GET", "/api/runs", headers={"Host": f"evil.example:{server.port}"})
+    response = connection.getresponse()
+    body = json.loads(response.read())
+    connection.close()
+    assert response.status == 403 and "not served" in body["error"]
+    connection = http.client.HTTPConnection(server.host, server.port, timeout=30)
+    connection.request("GET", "/api/summary", headers={"Host": f"localhost:{server.port}"})
+    assert connection.getresponse().status == 200
+    connection.close()
