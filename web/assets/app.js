@@ -283,6 +283,24 @@ async function drawRun() {
   fillTable(document.getElementById('step-values'), ['var', 'lo', 'hi', 'truth'],
             detail.values.map(v => [v.var, num(v.lo), num(v.hi), v.truth]));
   keyValueTable(document.getElementById('step-properties'), detail.properties);
+  drawEstimate(detail.values);
+}
+
+// The step's x-y hull (the estimate's box as the store keeps it) and the truth.
+function drawEstimate(values) {
+  const v = name => values.find(r => r.var === name);
+  const x = v('x'), y = v('y');
+  const finite = r => r && [r.lo, r.hi].every(t => Number.isFinite(num(t)));
+  if (!finite(x) || !finite(y)) { if (charts['estimate-chart']) charts['estimate-chart'].destroy(); return; }
+  const box = [[x.lo, y.lo], [x.hi, y.lo], [x.hi, y.hi], [x.lo, y.hi], [x.lo, y.lo]];
+  const datasets = [{label: 'estimate (x-y hull)', data: box.map(([a, b]) => ({x: a, y: b})),
+                     showLine: true, fill: true, pointRadius: 0, borderColor: colour(0),
+                     backgroundColor: colour(0, '33')}];
+  if (x.truth !== null && y.truth !== null)
+    datasets.push({label: 'truth', data: [{x: x.truth, y: y.truth}], pointRadius: 5,
+                   backgroundColor: '#000'});
+  drawChart('estimate-chart', {type: 'scatter', data: {datasets},
+    options: {scales: {x: {title: {display: true, text: 'x (m)'}}, y: {title: {display: true, text: 'y (m)'}}}}});
 }
 
 // --- figures and claims ----------------------------------------------------
