@@ -2,7 +2,7 @@
 // (unknown algorithm or parameter, unreadable or malformed file, bad option,
 // an output directory locked by another run), 3 the environment (disk full,
 // descriptors, processes or memory exhausted, permissions, LaTeX missing
-// for `paper`), 130/143 `run`
+// for `paper`, a port `serve` cannot bind), 130/143 `run`
 // stopped by SIGINT/SIGTERM, 1 an unexpected internal error.
 #include <CLI/CLI.hpp>
 #include <cmath>
@@ -34,6 +34,7 @@
 #include "harness/spec.h"
 #include "paper/paper.h"
 #include "plots/figures.h"
+#include "web/serve.h"
 
 namespace {
 constexpr int kUsageError = 2;
@@ -144,6 +145,17 @@ int main(int argc, char** argv) {
       app.add_subcommand("paper", "the LaTeX paper of a results store (DIR/paper/icpbench.pdf)");
   paper_cmd->add_option("DIR", paper_dir, "output directory of `icpbench run`")->required();
 
+  icp::web::ServeOptions serve;
+  CLI::App* serve_cmd =
+      app.add_subcommand("serve", "a read-only web page over a results store (docs/web.md)");
+  serve_cmd->add_option("DIR", serve.dir, "output directory of `icpbench run`")->required();
+  serve_cmd->add_option("--port", serve.port, "port (0: a free one)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 65535));
+  serve_cmd->add_option("--host", serve.host,
+                        "address to bind (another than localhost exposes the results)")
+      ->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -216,6 +228,8 @@ int main(int argc, char** argv) {
       const icp::PaperOutput paper = icp::BuildPaper(paper_dir);
       for (const std::string& m : paper.messages) std::cerr << "icpbench: " << m << "\n";
       std::cout << paper.pdf << "\n";
+    } else if (*serve_cmd) {
+      icp::web::Serve(serve, [](const std::string& url) { std::cout << url << std::endl; });
     } else if (*merge_cmd) {
       // An OUT_DIR it may not write is said as such (SQLite's own error on
       // the new store would not say why). MergeStores validates every input,

@@ -50,6 +50,10 @@ sqlite3* Open(const std::string& path, int flags) {
   return db;
 }
 
+}  // namespace
+
+namespace detail {
+
 // Opens an existing store file for reading only. Without a -wal file no
 // writer has the store open, so it is opened immutable: SQLite then creates
 // no -wal/-shm files (a plain read-only open of a WAL file does, and cannot
@@ -92,7 +96,7 @@ sqlite3* OpenExistingReadOnly(const std::string& path) {
   return db;
 }
 
-}  // namespace
+}  // namespace detail
 
 ResultsStore::ResultsStore(const std::string& path) : path_(path) {
   db_ = Open(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
@@ -117,7 +121,7 @@ ResultsStore::ResultsStore(const std::string& path) : path_(path) {
 }
 
 ResultsStore::ResultsStore(const std::string& path, ReadOnlyTag) : path_(path), read_only_(true) {
-  db_ = OpenExistingReadOnly(path);
+  db_ = detail::OpenExistingReadOnly(path);
   try {
     version_ = CheckOrCreateSchema(db_, path_, /*may_create=*/false);
   } catch (...) {

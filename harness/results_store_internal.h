@@ -134,6 +134,11 @@ void BindProperty(Statement& q, int i, const Property& p);
 // A property from columns name, type, value at i, i + 1, i + 2.
 Property ReadProperty(const Statement& q, int i);
 
+// Opens an existing store file for reading only (results_store.cc):
+// immutable when no -wal file exists (no writer), else a plain read-only open
+// that shares a running sweep's WAL index. Throws StoreError.
+sqlite3* OpenExistingReadOnly(const std::string& path);
+
 // Schema and migrations (results_store_schema.cc).
 //
 // Checks that db is an icpbench store and returns its schema version. With

@@ -17,6 +17,9 @@ packages=(
   texlive-latex-base texlive-latex-recommended latexmk poppler-utils
   # The Python module (python/, docs/python.md) and its pytest suite.
   pybind11-dev python3-dev python3-numpy python3-pandas python3-pytest python3-matplotlib
+  # icpbench serve (docs/web.md): the HTTP server, the page's charts, and the
+  # headless browser its test drives.
+  libcpp-httplib-dev libjs-chart.js chromium
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -2,7 +2,7 @@
 # The main job of the README: installs what is missing, builds, runs the
 # default benchmark suite (specs/default.yaml) into results/default, then
 # writes its tables (Markdown, LaTeX, CSV), figures (PNG, PDF) and, last,
-# the paper (PDF).
+# the paper (PDF); its last line is the command that serves them as a web page.
 # Rerunning resumes: runs already stored are skipped.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -20,3 +20,5 @@ echo "results store: $out/results.sqlite"
 echo "tables:        $out/report.md, $out/report.tex, $out/report.csv"
 echo "figures:       $out/figures/ ($(ls "$out/figures" | tr '\n' ' '))"
 echo "paper:         $paper"
+echo "to look at the results in a browser (docs/web.md):"
+echo "  build/icpbench serve $out"

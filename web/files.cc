@@ -1,0 +1,116 @@
+// The page's own assets (index.html, app.js, style.css, Debian's Chart.js),
+// GET /api/figures and /figures/NAME (what `icpbench plot` wrote into
+// DIR/figures) and GET /api/claims (DIR/paper/claims.json, if present).
+// Nothing outside DIR/figures, DIR/paper/claims.json and the assets is ever
+// read: a figure's name is checked segment by segment, then its real path
+// (symbolic links resolved) must lie inside DIR/figures.
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "web/api.h"
+
+namespace icp::web {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::map<std::string, std::string> kTypes = {
+    {".html", "text/html; charset=utf-8"}, {".js", "text/javascript; charset=utf-8"},
+    {".css", "text/css; charset=utf-8"},   {".png", "image/png"},
+    {".pdf", "application/pdf"},           {".svg", "image/svg+xml"},
+    {".csv", "text/csv; charset=utf-8"},   {".json", "application/json"},
+    {".md", "text/plain; charset=utf-8"},  {".txt", "text/plain; charset=utf-8"}};
+
+std::string ReadFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw HttpError(404, "cannot read '" + path.filename().string() + "'");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void SendFile(httplib::Response& res, const fs::path& path) {
+  auto type = kTypes.find(path.extension().string());
+  res.set_content(ReadFile(path), type == kTypes.end() ? "application/octet-stream" : type->second);
+}
+
+// DIR/figures/NAME if NAME is a relative path of plain segments whose real
+// path is a regular file inside DIR/figures; else a 400 or 404.
+fs::path FigurePath(const std::string& dir, const std::string& name) {
+  std::size_t start = 0;
+  while (start <= name.size()) {
+    std::size_t slash = name.find('/', start);
+    if (slash == std::string::npos) slash = name.size();
+    const std::string segment = name.substr(start, slash - start);
+    if (segment.empty() || segment[0] == '.' || segment.find('\\') != std::string::npos ||
+        segment.find('\0') != std::string::npos)
+      throw HttpError(400, "bad figure path '" + name + "' (outside " + dir + "/figures)");
+    start = slash + 1;
+  }
+  std::error_code ec;
+  const fs::path root = fs::canonical(fs::path(dir) / "figures", ec);
+  if (ec) throw HttpError(404, "no figures in " + dir);
+  const fs::path file = fs::canonical(root / name, ec);
+  if (ec || !fs::is_regular_file(file, ec)) throw HttpError(404, "no figure '" + name + "'");
+  const fs::path relative = file.lexically_relative(root);
+  if (relative.empty() || *relative.begin() == "..")
+    throw HttpError(400, "bad figure path '" + name + "' (outside " + dir + "/figures)");
+  return file;
+}
+
+void GetFigures(const std::string& dir, const httplib::Request& req, httplib::Response& res) {
+  if (!req.params.empty()) throw HttpError(400, "/api/figures takes no query parameters");
+  nlohmann::json names = nlohmann::json::array();
+  std::error_code ec;
+  const fs::path root = fs::path(dir) / "figures";
+  if (fs::is_directory(root, ec)) {
+    std::vector<std::string> found;
+    for (const auto& e : fs::recursive_directory_iterator(root, ec)) {
+      const std::string ext = e.path().extension().string();
+      if (!e.is_symlink(ec) && e.is_regular_file(ec) && (ext == ".png" || ext == ".pdf" || ext == ".svg"))
+        found.push_back(e.path().lexically_relative(root).generic_string());
+    }
+    std::sort(found.begin(), found.end());
+    for (const std::string& n : found) names.push_back(n);
+  }
+  SendJson(res, names);
+}
+
+void GetClaims(const std::string& dir, const httplib::Request& req, httplib::Response& res) {
+  if (!req.params.empty()) throw HttpError(400, "/api/claims takes no query parameters");
+  const fs::path file = fs::path(dir) / "paper" / "claims.json";
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec)) {
+    SendJson(res, {{"file", nullptr}, {"claims", nlohmann::json::array()}});
+    return;
+  }
+  nlohmann::json claims = nlohmann::json::parse(ReadFile(file), nullptr, /*exceptions=*/false);
+  if (claims.is_discarded()) throw HttpError(404, "paper/claims.json is not JSON");
+  SendJson(res, {{"file", "paper/claims.json"}, {"claims", claims}});
+}
+
+}  // namespace
+
+void RegisterFiles(httplib::Server& server, const std::string& dir, const std::string& assets,
+                   const std::string& chart_js) {
+  using namespace std::placeholders;
+  const std::map<std::string, fs::path> files = {{"/", fs::path(assets) / "index.html"},
+                                                 {"/index.html", fs::path(assets) / "index.html"},
+                                                 {"/app.js", fs::path(assets) / "app.js"},
+                                                 {"/style.css", fs::path(assets) / "style.css"},
+                                                 {"/chart.js", fs::path(chart_js)}};
+  for (const auto& [route, path] : files)
+    server.Get(route, [path = path](const httplib::Request&, httplib::Response& res) {
+      SendFile(res, path);
+    });
+  server.Get("/api/figures", std::bind(GetFigures, dir, _1, _2));
+  server.Get("/api/claims", std::bind(GetClaims, dir, _1, _2));
+  server.Get(R"(/figures/(.*))", [dir](const httplib::Request& req, httplib::Response& res) {
+    SendFile(res, FigurePath(dir, req.matches[1]));
+  });
+}
+
+}  // namespace icp::web

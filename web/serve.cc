@@ -1,0 +1,108 @@
+// `icpbench serve DIR`: checks the store, registers the handlers, binds, and
+// serves until SIGINT or SIGTERM (a thread waits for them and stops the
+// server). A handler's HttpError becomes its 4xx with {"error": message}; a
+// store that cannot be read during a request (a foreign file, an error) a 500.
+#include "web/serve.h"
+
+#include <pthread.h>
+#include <signal.h>
+
+#include <filesystem>
+#include <set>
+#include <thread>
+
+#include "harness/environment_error.h"
+#include "harness/results_store.h"
+#include "web/api.h"
+
+namespace icp::web {
+
+namespace {
+
+void SendError(httplib::Response& res, int status, const std::string& message) {
+  res.status = status;
+  res.set_content(nlohmann::json({{"error", message}}).dump(-1, ' ', false,
+                                                           nlohmann::json::error_handler_t::replace),
+                  "application/json");
+}
+
+void CheckAsset(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw EnvironmentError("the page's asset '" + path + "' is missing (reinstall icpbench" +
+                           (path.find("chart") != std::string::npos
+                                ? "; Chart.js is Debian's libjs-chart.js: bash scripts/deps.sh"
+                                : "") +
+                           ")");
+}
+
+}  // namespace
+
+void Serve(const ServeOptions& options, const std::function<void(const std::string&)>& on_listening) {
+  StoreReader check(options.dir);  // a missing or foreign store is said before binding
+  CheckAsset(std::string(ICPBENCH_WEB_ASSETS) + "/index.html");
+  CheckAsset(ICPBENCH_CHART_JS);
+
+  // SIGINT and SIGTERM go to the waiting thread only (the server's threads inherit the mask).
+  sigset_t stop_signals;
+  sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGINT);
+  sigaddset(&stop_signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+
+  httplib::Server server;
+  server.set_tcp_nodelay(true);  // no 40 ms Nagle delay on small answers
+  RegisterRunsApi(server, options.dir);
+  RegisterCompareApi(server, options.dir);
+  RegisterFiles(server, options.dir, ICPBENCH_WEB_ASSETS, ICPBENCH_CHART_JS);
+  server.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr e) {
+    try {
+      std::rethrow_exception(e);
+    } catch (const HttpError& error) {
+      SendError(res, error.status, error.what());
+    } catch (const std::exception& error) {
+      SendError(res, 500, error.what());
+    }
+  });
+  server.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
+    if (res.body.empty()) SendError(res, res.status, "no such page: " + req.path);
+  });
+
+  int port = options.port;
+  if (port == 0) {
+    port = server.bind_to_any_port(options.host);
+    if (port < 0) throw EnvironmentError("cannot bind a port on host '" + options.host + "'");
+  } else if (!server.bind_to_port(options.host, port)) {
+    throw EnvironmentError("cannot bind " + options.host + ":" + std::to_string(port) +
+                           " (in use, or not an address of this machine)");
+  }
+  const bool ipv6 = options.host.find(':') != std::string::npos;
+  const std::string authority =
+      (ipv6 ? "[" + options.host + "]" : options.host) + ":" + std::to_string(port);
+  // On a loopback address only this machine's own names are answered: a web
+  // page elsewhere that rebinds its DNS name to 127.0.0.1 cannot read the store.
+  if (options.host.rfind("127.", 0) == 0 || options.host == "localhost" || options.host == "::1") {
+    const std::set<std::string> names = {authority, "localhost:" + std::to_string(port)};
+    server.set_pre_routing_handler([names](const httplib::Request& req, httplib::Response& res) {
+      if (names.count(req.get_header_value("Host")) != 0) return httplib::Server::HandlerResponse::Unhandled;
+      SendError(res, 403, "host '" + req.get_header_value("Host") + "' not served (use " +
+                              *names.begin() + ")");
+      return httplib::Server::HandlerResponse::Handled;
+    });
+  }
+  on_listening("http://" + authority + "/");
+
+  std::thread waiter([&server, stop_signals] {
+    int signal = 0;
+    sigwait(&stop_signals, &signal);
+    server.stop();
+  });
+  server.listen_after_bind();
+  // listen_after_bind returned by itself (a socket error): wake the waiter.
+  if (waiter.joinable()) {
+    pthread_kill(waiter.native_handle(), SIGTERM);
+    waiter.join();
+  }
+}
+
+}  // namespace icp::web
