@@ -199,6 +199,26 @@ TEST(ComparisonTest, TheMarinaGuaranteeIsJudgedOverTheStepsWhereTheAssumptionHel
   EXPECT_EQ(r.verdict, Verdict::kDiffers) << r.measured;
 }
 
+TEST(ComparisonTest, TheFiltersCoverageIsPooledOverItsRunsWeightedBySteps) {
+  const std::string item = "§6.7: the particle filter's 95 % region holds the truth (start known)";
+  auto filter = [](std::size_t steps, double c95) {
+    RunRecord r = InExperiment(MakeRun("particle-filter", {}, {{"start", "known"}}, 1,
+                                       std::vector<double>(steps, 1e-3)),
+                               "marina");
+    r.spec.problem = "marina-sonar";
+    r.metrics = ComputeMetrics(r.steps);
+    r.properties = {{"coverage_50", 0.5}, {"coverage_90", 0.9}, {"coverage_95", c95}};
+    return r;
+  };
+  // (1 * 0.80 + 3 * 1.00) / 4 = 0.95: within the band although one run is not.
+  std::vector<RunRecord> runs = {filter(1, 0.8), filter(3, 1.0)};
+  ComparisonRow r = Row(Thesis003Comparison(runs), item);
+  EXPECT_EQ(r.verdict, Verdict::kMatch) << r.measured;
+  EXPECT_NE(r.measured.find("0.95 of 4 steps"), std::string::npos) << r.measured;
+  runs = {filter(1, 1.0), filter(3, 1.0)};
+  EXPECT_EQ(Row(Thesis003Comparison(runs), item).verdict, Verdict::kDiffers);
+}
+
 TEST(ComparisonTest, TheTableNumbersRowsAndListsReasons) {
   const TextTable t =
       ComparisonTable("T", {{"a", "1", "1", "equal", Verdict::kMatch, ""},

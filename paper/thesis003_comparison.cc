@@ -386,6 +386,36 @@ void MarinaRows(const std::vector<RunRecord>& runs, std::vector<ComparisonRow>* 
     }
     rows->push_back(r);
   }
+  // §6.7: the baseline's 95 % region is what it says (issue 35's rule, set
+  // before the data): pooled over the best known-start configuration's runs,
+  // the share of steps whose 95 % box holds the truth is within 0.85-0.99.
+  {
+    const GroupSummary* g = Best(groups, 1, "known", false);
+    ComparisonRow r = MarinaRow("§6.7: the particle filter's 95 % region holds the truth (start known)",
+                                "a 95 % region", "pooled coverage_95 within 0.85-0.99", g);
+    if (g) {
+      double covered[3] = {0, 0, 0}, steps = 0;
+      const char* const kLevels[3] = {"coverage_50", "coverage_90", "coverage_95"};
+      for (const RunRecord* run : g->runs) {
+        const auto c95 = NumberProperty(run->properties, kLevels[2]);
+        if (!c95) continue;
+        steps += run->metrics.steps;
+        for (int i = 0; i < 3; ++i)
+          covered[i] += NumberProperty(run->properties, kLevels[i]).value_or(0) * run->metrics.steps;
+      }
+      if (steps > 0) {
+        const double c95 = covered[2] / steps;
+        r.measured = FormatNumber(c95) + " of " + FormatNumber(steps) + " steps (90 %: " +
+                     FormatNumber(covered[1] / steps) + ", 50 %: " +
+                     FormatNumber(covered[0] / steps) + "; " + Config(*g) + ")";
+        r.verdict = c95 >= 0.85 && c95 <= 0.99 ? Verdict::kMatch : Verdict::kDiffers;
+        if (r.verdict == Verdict::kDiffers) r.reason = kNotMeasured;
+      } else {
+        r.reason = "its runs predate the coverage properties: rerun them";
+      }
+    }
+    rows->push_back(r);
+  }
   // §6.7.2: both very robust against outliers.
   for (int pf = 0; pf < 2; ++pf) {
     const GroupSummary* base = Best(groups, pf, "known", false);
