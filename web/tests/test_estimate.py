@@ -2,34 +2,7 @@
 N and sends its estimate; for each kind the data is there, the truth is in
 the hull where the store says it is contained, and the re-run reproduces the
 stored step's bounds exactly."""
-import os
-import sqlite3
-
 import pytest
-
-from conftest import HERE, Server, run_spec
-
-
-@pytest.fixture(scope="session")
-def kinds_dir(tmp_path_factory):
-    out = str(tmp_path_factory.mktemp("web") / "kinds")
-    run_spec(os.path.join(HERE, "estimate.yaml"), out)
-    return out
-
-
-@pytest.fixture(scope="session")
-def kinds_db(kinds_dir):
-    connection = sqlite3.connect(f"file:{kinds_dir}/results.sqlite?immutable=1", uri=True)
-    connection.row_factory = sqlite3.Row
-    yield connection
-    connection.close()
-
-
-@pytest.fixture(scope="session")
-def kinds_server(kinds_dir, kinds_db):
-    s = Server(kinds_dir)
-    yield s
-    assert s.stop() == 0
 
 
 def last_step(db, algorithm):
