@@ -315,7 +315,8 @@ async function drawRerun(id, step, values) {
   const d = e.data, rects = [], points = [];
   (d.inner || []).forEach(r => rects.push([r, colour(2)]));
   (d.boundary || []).forEach(r => rects.push([r, colour(3)]));
-  if (d.box) rects.push([d.box, colour(0)]);
+  const hull = e.x >= 0 ? [e.hull[e.x].lo, e.hull[e.x].hi, e.hull[e.y].lo, e.hull[e.y].hi] : null;
+  if (d.box || (hull && !d.inner && hull.every(Number.isFinite))) rects.push([d.box || hull, colour(0)]);  // the set's box
   (d.x && e.kind === 'particles' ? d.x : []).forEach((x, i) => points.push({x, y: d.y[i]}));
   const extent = [...rects.flatMap(([r]) => [{x: r[0], y: r[2]}, {x: r[1], y: r[3]}])];
   if (e.kind === 'accumulator') extent.push({x: d.x[0], y: d.y[0]}, {x: d.x[1], y: d.y[1]});

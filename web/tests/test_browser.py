@@ -87,5 +87,5 @@ def test_a_chosen_steps_estimate_is_drawn(kinds_server, kinds_db):
     assert 'data-ready="run"' in dom
     canvas = re.search(r'<canvas id="estimate-chart"[^>]*>', dom).group(0)
     assert 'data-kind="particles"' in canvas
-    assert f'data-drawn="{len(estimate["data"]["x"])}"' in canvas
+    assert f'data-drawn="{len(estimate["data"]["x"]) + 1}"' in canvas  # particles and their box
     assert "re-run reproduces the stored step" in dom
