@@ -1,6 +1,7 @@
 // What the results browser's handlers share: errors that become a 4xx, the
 // read-only store a request opens, run filters from query parameters, and
-// JSON numbers. Handlers: api_runs.cc (runs, one run), api_compare.cc
+// JSON numbers. Handlers: api_runs.cc (runs, one run), api_estimate.cc (a
+// step's estimate, re-run), api_compare.cc
 // (aggregates, performance profiles), files.cc (page assets, figures, claims).
 #ifndef ICPBENCH_WEB_API_H_
 #define ICPBENCH_WEB_API_H_
@@ -86,11 +87,17 @@ class Query {
   sqlite3_stmt* stmt_ = nullptr;
 };
 
+// The run id of a /api/runs/ID/... path (match 1); a 400 unless a number.
+std::string RunId(const httplib::Request& req);
+// A 404 unless run id is stored.
+void RequireRun(const StoreReader& store, const std::string& id);
+
 // Sends value as JSON (200).
 void SendJson(httplib::Response& res, const nlohmann::json& value);
 
 // The handlers.
 void RegisterRunsApi(httplib::Server& server, const std::string& dir);
+void RegisterEstimateApi(httplib::Server& server, const std::string& dir);
 void RegisterCompareApi(httplib::Server& server, const std::string& dir);
 void RegisterFiles(httplib::Server& server, const std::string& dir, const std::string& assets,
                    const std::string& chart_js);

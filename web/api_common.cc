@@ -130,4 +130,16 @@ RunFilter ParseRunFilter(const httplib::Request& req, const std::vector<std::str
   return f;
 }
 
+std::string RunId(const httplib::Request& req) {
+  const std::string id = req.matches[1];
+  if (id.empty() || id.size() > 18 || id.find_first_not_of("0123456789") != std::string::npos)
+    throw HttpError(400, "bad run id '" + id + "' (a number)");
+  return id;
+}
+
+void RequireRun(const StoreReader& store, const std::string& id) {
+  Query q(store, "SELECT 1 FROM runs WHERE id = ?", {id});
+  if (!q.Step()) throw HttpError(404, "no run with id " + id);
+}
+
 }  // namespace icp::web

@@ -42,13 +42,6 @@ nlohmann::json ListRow(sqlite3_stmt* stmt) {
   return run;
 }
 
-std::string RunId(const httplib::Request& req) {
-  const std::string id = req.matches[1];
-  if (id.empty() || id.size() > 18 || id.find_first_not_of("0123456789") != std::string::npos)
-    throw HttpError(400, "bad run id '" + id + "' (a number)");
-  return id;
-}
-
 void GetRuns(const std::string& dir, const httplib::Request& req, httplib::Response& res) {
   RunFilter f = ParseRunFilter(req, {"limit", "offset", "sort", "desc"});
   const long long limit = IntParam(req, "limit", 100, 1, 10000);
@@ -171,12 +164,6 @@ void GetRun(const std::string& dir, const httplib::Request& req, httplib::Respon
                      {"estimate", Column(q.stmt(), 6)}});
   run["step_rows"] = steps;
   SendJson(res, run);
-}
-
-// A 404 unless run id is stored.
-void RequireRun(const StoreReader& store, const std::string& id) {
-  Query q(store, "SELECT 1 FROM runs WHERE id = ?", {id});
-  if (!q.Step()) throw HttpError(404, "no run with id " + id);
 }
 
 void GetValues(const std::string& dir, const httplib::Request& req, httplib::Response& res) {

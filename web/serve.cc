@@ -53,6 +53,7 @@ void Serve(const ServeOptions& options, const std::function<void(const std::stri
   httplib::Server server;
   server.set_tcp_nodelay(true);  // no 40 ms Nagle delay on small answers
   RegisterRunsApi(server, options.dir);
+  RegisterEstimateApi(server, options.dir);
   RegisterCompareApi(server, options.dir);
   RegisterFiles(server, options.dir, ICPBENCH_WEB_ASSETS, ICPBENCH_CHART_JS);
   server.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr e) {

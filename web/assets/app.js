@@ -284,6 +284,7 @@ async function drawRun() {
             detail.values.map(v => [v.var, num(v.lo), num(v.hi), v.truth]));
   keyValueTable(document.getElementById('step-properties'), detail.properties);
   drawEstimate(detail.values);
+  await drawRerun(id, step, detail.values);
 }
 
 // The step's x-y hull (the estimate's box as the store keeps it) and the truth.
@@ -301,6 +302,64 @@ function drawEstimate(values) {
                    backgroundColor: '#000'});
   drawChart('estimate-chart', {type: 'scatter', data: {datasets},
     options: {scales: {x: {title: {display: true, text: 'x (m)'}}, y: {title: {display: true, text: 'y (m)'}}}}});
+}
+
+// The step's estimate re-run by the server (boxes, accumulator image,
+// particles) over the stored hull; the note says whether the re-run
+// reproduces the stored step. A run that cannot be re-run keeps the hull.
+async function drawRerun(id, step, values) {
+  const note = document.getElementById('estimate-note'), canvas = document.getElementById('estimate-chart');
+  note.textContent = 're-running the step…';
+  let e;
+  try { e = await api(`/api/runs/${id}/steps/${step}/estimate`); } catch (err) { note.textContent = 'no re-run: ' + err.message; return; }
+  const d = e.data, rects = [], points = [];
+  (d.inner || []).forEach(r => rects.push([r, colour(2)]));
+  (d.boundary || []).forEach(r => rects.push([r, colour(3)]));
+  const hull = e.x >= 0 ? [e.hull[e.x].lo, e.hull[e.x].hi, e.hull[e.y].lo, e.hull[e.y].hi] : null;
+  if (d.box || (hull && !d.inner && hull.every(Number.isFinite))) rects.push([d.box || hull, colour(0)]);  // the set's box
+  (d.x && e.kind === 'particles' ? d.x : []).forEach((x, i) => points.push({x, y: d.y[i]}));
+  const extent = [...rects.flatMap(([r]) => [{x: r[0], y: r[2]}, {x: r[1], y: r[3]}])];
+  if (e.kind === 'accumulator') extent.push({x: d.x[0], y: d.y[0]}, {x: d.x[1], y: d.y[1]});
+  const datasets = [{label: e.kind, data: points.concat(extent), pointRadius: c => c.dataIndex < points.length ? 1.5 : 0,
+                     backgroundColor: colour(1, '88')}];
+  if (e.truth.length > Math.max(e.x, e.y))
+    datasets.push({label: 'truth', data: [{x: e.truth[e.x], y: e.truth[e.y]}], pointRadius: 6, pointStyle: 'crossRot',
+                   borderColor: '#000', borderWidth: 2});
+  const shapes = {id: 'estimate-shapes', beforeDatasetsDraw(chart) {
+    const {ctx, scales: {x, y}} = chart;
+    ctx.save();
+    if (e.kind === 'accumulator') ctx.drawImage(countsImage(d), x.getPixelForValue(d.x[0]), y.getPixelForValue(d.y[1]),
+                                                x.getPixelForValue(d.x[1]) - x.getPixelForValue(d.x[0]),
+                                                y.getPixelForValue(d.y[0]) - y.getPixelForValue(d.y[1]));
+    for (const [r, c] of rects) {
+      const px = x.getPixelForValue(r[0]), py = y.getPixelForValue(r[3]);
+      ctx.fillStyle = c + '44'; ctx.strokeStyle = c;
+      ctx.fillRect(px, py, x.getPixelForValue(r[1]) - px, y.getPixelForValue(r[2]) - py);
+      if (rects.length < 500) ctx.strokeRect(px, py, x.getPixelForValue(r[1]) - px, y.getPixelForValue(r[2]) - py);
+    }
+    ctx.restore();
+  }};
+  drawChart('estimate-chart', {type: 'scatter', data: {datasets}, plugins: [shapes],
+    options: {scales: {x: {title: {display: true, text: 'x (m)'}}, y: {title: {display: true, text: 'y (m)'}}}}});
+  canvas.dataset.kind = e.kind;
+  canvas.dataset.drawn = rects.length + points.length + (e.kind === 'accumulator' ? d.rows * d.cols : 0);
+  note.textContent = `${e.kind}, re-run in ${e.rerun_s.toFixed(2)} s: ` +
+    (e.matches_store ? 're-run reproduces the stored step' : 're-run does NOT reproduce the stored step') +
+    (d.truncated || d.subsampled || d.downsampled ? ' (thinned for drawing)' : '');
+}
+// An accumulator's counts as an image, darker for higher counts, cells at or
+// above the threshold in colour; image row 0 is the grid's top row (largest y).
+function countsImage(d) {
+  const img = document.createElement('canvas');
+  img.width = d.cols; img.height = d.rows;
+  const ctx = img.getContext('2d'), pixels = ctx.createImageData(d.cols, d.rows);
+  const max = Math.max(1, ...d.counts.map(r => Math.max(...r)));
+  d.counts.forEach((row, r) => row.forEach((n, c) => {
+    const i = 4 * ((d.rows - 1 - r) * d.cols + c), shade = 255 - Math.round(200 * n / max);
+    pixels.data.set(n >= d.threshold ? [214, 39, 40, 255] : [shade, shade, shade, n > 0 ? 255 : 0], i);
+  }));
+  ctx.putImageData(pixels, 0, 0);
+  return img;
 }
 
 // --- figures and claims ----------------------------------------------------

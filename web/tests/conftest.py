@@ -59,6 +59,15 @@ def run_spec(spec, out, jobs=2):
                    stderr=subprocess.DEVNULL)
 
 
+def read_only(directory):
+    """DIR's store through Python's sqlite3, closed after the session."""
+    # immutable: like the server, it creates no -wal/-shm files next to the finished store.
+    connection = sqlite3.connect(f"file:{directory}/results.sqlite?immutable=1", uri=True)
+    connection.row_factory = sqlite3.Row
+    yield connection
+    connection.close()
+
+
 @pytest.fixture(scope="session")
 def store_dir(tmp_path_factory):
     out = str(tmp_path_factory.mktemp("web") / "tiny")
@@ -69,11 +78,7 @@ def store_dir(tmp_path_factory):
 @pytest.fixture(scope="session")
 def db(store_dir):
     """The store through Python's sqlite3, read-only: what the answers must match."""
-    # immutable: like the server, it creates no -wal/-shm files next to the finished store.
-    connection = sqlite3.connect(f"file:{store_dir}/results.sqlite?immutable=1", uri=True)
-    connection.row_factory = sqlite3.Row
-    yield connection
-    connection.close()
+    yield from read_only(store_dir)
 
 
 @pytest.fixture(scope="session")
@@ -85,5 +90,25 @@ def server(store_dir, db):
         f.write(b"\x89PNG\r\n\x1a\n fake png for the test")
     os.symlink("/etc/passwd", os.path.join(store_dir, "figures", "outside.png"))
     s = Server(store_dir)
+    yield s
+    assert s.stop() == 0
+
+
+@pytest.fixture(scope="session")
+def kinds_dir(tmp_path_factory):
+    """A store with one run per kind of estimate (estimate.yaml)."""
+    out = str(tmp_path_factory.mktemp("web") / "kinds")
+    run_spec(os.path.join(HERE, "estimate.yaml"), out)
+    return out
+
+
+@pytest.fixture(scope="session")
+def kinds_db(kinds_dir):
+    yield from read_only(kinds_dir)
+
+
+@pytest.fixture(scope="session")
+def kinds_server(kinds_dir, kinds_db):
+    s = Server(kinds_dir)
     yield s
     assert s.stop() == 0

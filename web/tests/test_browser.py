@@ -78,3 +78,14 @@ def test_the_figures_view_shows_dir_figures(server):
     dom = browse(server.url + "#view=figures", "figures")
     assert 'data-ready="figures"' in dom
     assert re.findall(r'<img src="([^"]+)"', dom) == ["/figures/area.png"]
+
+
+def test_a_chosen_steps_estimate_is_drawn(kinds_server, kinds_db):
+    run = kinds_db.execute("SELECT id FROM runs WHERE algorithm = 'particle-filter'").fetchone()["id"]
+    estimate = kinds_server.json(f"/api/runs/{run}/steps/2/estimate")
+    dom = browse(kinds_server.url + f"#view=run&id={run}&step=2", "estimate")
+    assert 'data-ready="run"' in dom
+    canvas = re.search(r'<canvas id="estimate-chart"[^>]*>', dom).group(0)
+    assert 'data-kind="particles"' in canvas
+    assert f'data-drawn="{len(estimate["data"]["x"]) + 1}"' in canvas  # particles and their box
+    assert "re-run reproduces the stored step" in dom
