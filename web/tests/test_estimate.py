@@ -61,3 +61,29 @@ def test_bad_estimate_requests_get_a_4xx(kinds_server, kinds_db, server, db):
     assert "error" in kinds_server.json(f"/api/runs/x/steps/0/estimate", 400)
     timeout = db.execute("SELECT id FROM runs WHERE status = 'timeout'").fetchone()["id"]
     assert "error" in server.json(f"/api/runs/{timeout}/steps/0/estimate", 400)
+
+
+def test_a_python_estimators_run_is_not_re_run(kinds_dir, tmp_path):
+    # A run of an estimator registered from Python (its parameters hold
+    # `python`, docs/python.md) cannot be re-run by the server: 422.
+    import json
+    import shutil
+    import sqlite3
+
+    from conftest import Server
+
+    copy = tmp_path / "python-run"
+    copy.mkdir()
+    shutil.copy(f"{kinds_dir}/results.sqlite", copy / "results.sqlite")
+    with sqlite3.connect(copy / "results.sqlite") as db:
+        run_id, params = db.execute(
+            "SELECT id, algorithm_params FROM runs WHERE algorithm = 'hc4' AND status = 'ok'").fetchone()
+        params = json.loads(params)
+        params["python"] = "my_module.MyEstimator"
+        db.execute("UPDATE runs SET algorithm_params = ? WHERE id = ?", (json.dumps(params), run_id))
+    s = Server(str(copy))
+    try:
+        got = s.json(f"/api/runs/{run_id}/steps/0/estimate", 422)
+        assert "Python" in got["error"] or "python" in got["error"], got
+    finally:
+        assert s.stop() == 0
