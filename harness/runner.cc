@@ -27,6 +27,24 @@ double Seconds(Clock::duration d) { return std::chrono::duration<double>(d).coun
 
 }  // namespace
 
+TakenStep TakeStep(Estimator& estimator, View needs, const Step& step, const StopCondition& stop) {
+  if (!step.views.Offers(needs))
+    throw std::invalid_argument("step " + std::to_string(step.views.step) + " offers no " +
+                                std::string(ToString(needs)) + " view");
+  TakenStep taken;
+  const auto t0 = Clock::now();
+  taken.result = estimator.Step(step.views, stop);
+  const double solve_time = Seconds(Clock::now() - t0);
+  const StepResult& result = taken.result;
+  if (!result.estimate) throw InvalidResult("no estimate");
+  if (std::string why = InvalidEstimateReason(step.views, *result.estimate); !why.empty())
+    throw InvalidResult(why);
+  taken.record = MeasureStep(step, *result.estimate);
+  taken.record.status = std::string(ToString(result.summary.status));
+  taken.record.solve_time_s = result.solve_time_s >= 0 ? result.solve_time_s : solve_time;
+  return taken;
+}
+
 RunRecord ExecuteRun(const RunSpec& spec) {
   std::vector<StepRecord> steps;
   RunRecord record = ExecuteRun(spec, [&](const StepRecord& s) { steps.push_back(s); });
@@ -54,18 +72,9 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
     Step step;
     while (problem->Next(&step)) {
       step_index = step.views.step;
-      if (!step.views.Offers(algorithm.needs))
-        throw std::invalid_argument("step " + std::to_string(step_index) + " offers no " +
-                                    std::string(ToString(algorithm.needs)) + " view");
-      const auto t0 = Clock::now();
-      StepResult result = estimator->Step(step.views, stop);
-      const double solve_time = Seconds(Clock::now() - t0);
-      if (!result.estimate) throw InvalidResult("no estimate");
-      if (std::string why = InvalidEstimateReason(step.views, *result.estimate); !why.empty())
-        throw InvalidResult(why);
-      StepRecord r = MeasureStep(step, *result.estimate);
-      r.status = std::string(ToString(result.summary.status));
-      r.solve_time_s = result.solve_time_s >= 0 ? result.solve_time_s : solve_time;
+      TakenStep taken = TakeStep(*estimator, algorithm.needs, step, stop);
+      StepResult& result = taken.result;
+      StepRecord& r = taken.record;
       post_states.Judge(step, &result.properties);
       coverage.Add(step, *result.estimate, &result.properties);
       for (Property& p : result.properties) r.properties.push_back(std::move(p));

@@ -18,9 +18,11 @@
 #include <stdexcept>
 #include <string>
 
+#include "algorithms/estimator.h"
 #include "harness/run_record.h"
 #include "harness/shard.h"
 #include "harness/spec.h"
+#include "problems/problem.h"
 
 namespace icp {
 
@@ -65,6 +67,17 @@ class DirectoryLockedError : public std::invalid_argument {
 // fork: the runs in flight are finished and stored first).
 SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostream& progress,
                       bool progress_is_terminal);
+
+// One step as a run takes it: the view the algorithm needs checked
+// (std::invalid_argument), the estimator stepped, its estimate checked
+// (InvalidResult) and measured (MeasureStep) with the estimator's status and
+// solve time (its own, else the wall time of its Step). The runner, the
+// Python module's stepping by hand and the results browser's re-run share it.
+struct TakenStep {
+  StepResult result;
+  StepRecord record;
+};
+TakenStep TakeStep(Estimator& estimator, View needs, const Step& step, const StopCondition& stop);
 
 // One run in the calling process: the problem's steps fed to the algorithm,
 // each contracted box checked and recorded. Never throws: an exception or an

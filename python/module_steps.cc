@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "algorithms/registry.h"
-#include "harness/metrics.h"
+#include "harness/runner.h"
 #include "problems/registry.h"
 #include "python/module_internal.h"
 #include "python/module_views.h"
@@ -98,29 +98,15 @@ class PyEstimator {
   std::string Needs() const { return std::string(ToString(info_->needs)); }
 
   PyEstimate StepOnce(const PyStep& s, double timeout_s) {
-    const Step& step = *s.step;
-    if (!step.views.Offers(info_->needs))
-      throw std::invalid_argument("step " + std::to_string(step.views.step) + " offers no " +
-                                  std::string(ToString(info_->needs)) + " view");
     PyEstimate out;
-    out.result = std::make_shared<StepResult>();
-    {
-      py::gil_scoped_release release;
-      const StopCondition stop =
-          timeout_s < std::numeric_limits<double>::infinity()
-              ? StopCondition::After(std::chrono::duration<double>(timeout_s))
-              : StopCondition();
-      const auto t0 = std::chrono::steady_clock::now();
-      *out.result = estimator_->Step(step.views, stop);
-      const double seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      if (!out.result->estimate) throw InvalidResult("no estimate");
-      if (std::string why = InvalidEstimateReason(step.views, *out.result->estimate); !why.empty())
-        throw InvalidResult(why);
-      out.record = MeasureStep(step, *out.result->estimate);
-      out.record.status = std::string(ToString(out.result->summary.status));
-      if (out.result->solve_time_s < 0) out.result->solve_time_s = seconds;
-    }
+    py::gil_scoped_release release;
+    const StopCondition stop = timeout_s < std::numeric_limits<double>::infinity()
+                                   ? StopCondition::After(std::chrono::duration<double>(timeout_s))
+                                   : StopCondition();
+    TakenStep taken = TakeStep(*estimator_, info_->needs, *s.step, stop);
+    taken.result.solve_time_s = taken.record.solve_time_s;
+    out.result = std::make_shared<StepResult>(std::move(taken.result));
+    out.record = std::move(taken.record);
     return out;
   }
   py::dict RunProperties() const { return PropertiesToDict(estimator_->RunProperties()); }

@@ -11,7 +11,7 @@
 #include <memory>
 
 #include "algorithms/registry.h"
-#include "harness/metrics.h"
+#include "harness/runner.h"
 #include "harness/results_store_internal.h"
 #include "problems/registry.h"
 #include "web/api.h"
@@ -166,9 +166,11 @@ void GetEstimate(const std::string& dir, const httplib::Request& req, httplib::R
                              ", which the server cannot re-run");
   std::unique_ptr<Problem> problem;
   std::unique_ptr<Estimator> estimator;
+  const AlgorithmInfo* algorithm = nullptr;
   try {
     problem = FindProblem(run.problem).make(run.problem_params, run.seed);
-    estimator = FindAlgorithm(run.algorithm).make(run.algorithm_params, run.seed);
+    algorithm = &FindAlgorithm(run.algorithm);
+    estimator = algorithm->make(run.algorithm_params, run.seed);
   } catch (const std::exception& e) {
     throw HttpError(422, "run " + id + " cannot be re-run: " + e.what());
   }
@@ -180,15 +182,15 @@ void GetEstimate(const std::string& dir, const httplib::Request& req, httplib::R
   Step step;
   while (problem->Next(&step)) {
     if (stop.ShouldStop()) throw HttpError(503, too_long);
-    StepResult result = estimator->Step(step.views, stop);
-    if (result.summary.status == ContractStatus::kStopped && stop.ShouldStop())
+    const TakenStep taken = TakeStep(*estimator, algorithm->needs, step, stop);
+    if (taken.result.summary.status == ContractStatus::kStopped && stop.ShouldStop())
       throw HttpError(503, too_long);
     if (step.views.step < wanted) continue;
-    if (step.views.step > wanted || !result.estimate)
+    if (step.views.step > wanted)
       throw HttpError(500, "the re-run of run " + id + " has no estimate at step " + step_text);
-    const Estimate& e = *result.estimate;
+    const Estimate& e = *taken.result.estimate;
     const StateSpace& space = step.views.space;
-    const StepRecord record = MeasureStep(step, e);
+    const StepRecord& record = taken.record;
     nlohmann::json truth = nlohmann::json::array();
     for (double t : step.truth) truth.push_back(Number(t));
     SendJson(res, {{"run_id", std::stoll(id)}, {"step", wanted}, {"kind", e.Kind()},
