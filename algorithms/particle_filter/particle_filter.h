@@ -32,7 +32,9 @@
 //   - "95": the credible box at level 0.95 (core/credible_box.h): per
 //     component, the weighted quantiles t and 1 - t, t = (1 - 0.95^(1/d)) /
 //     2 (Šidák, d components), so each component's interval holds 0.95^(1/d)
-//     of the weight (a credible region of the cloud, not a guaranteed
+//     of the weight and the box 95 % of it when the components are
+//     independent, at least 1 - 2 d t otherwise (94.9 % for d = 3; the
+//     union bound: particle_filter_test) (a credible region of the cloud, not a guaranteed
 //     enclosure of the truth; the harness measures how often it holds the
 //     truth, and that of the 50 % and 90 % boxes: harness/coverage.h);
 //   - "hull": the box hull of the particles with positive weight.
