@@ -16,6 +16,29 @@ std::string_view ToString(Verdict verdict) {
   return "?";
 }
 
+VerdictTally Tally(const std::vector<ComparisonRow>& rows) {
+  VerdictTally tally;
+  for (const ComparisonRow& r : rows) {
+    switch (r.verdict) {
+      case Verdict::kMatch:
+        ++tally.match;
+        break;
+      case Verdict::kDiffers:
+        ++tally.differ;
+        break;
+      case Verdict::kNoData:
+        ++tally.no_data;
+        break;
+    }
+  }
+  return tally;
+}
+
+std::string ToString(const VerdictTally& tally) {
+  return "Verdicts: " + std::to_string(tally.match) + " match, " + std::to_string(tally.differ) +
+         " differ, " + std::to_string(tally.no_data) + " no data";
+}
+
 bool WithinFactor(double measured, double published, double factor) {
   if (!(measured > 0) || !(published > 0) || !std::isfinite(measured) || !std::isfinite(published))
     return false;

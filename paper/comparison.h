@@ -31,6 +31,16 @@ struct ComparisonRow {
   std::string reason;  // why it differs, or which spec produces the runs
 };
 
+// How many rows have each verdict.
+struct VerdictTally {
+  int match = 0;
+  int differ = 0;
+  int no_data = 0;
+};
+VerdictTally Tally(const std::vector<ComparisonRow>& rows);
+// "Verdicts: 12 match, 5 differ, 3 no data".
+std::string ToString(const VerdictTally& tally);
+
 // The reason text for a difference no measurement explains.
 inline constexpr char kNotMeasured[] = "differs; reason not yet measured";
 

@@ -40,6 +40,18 @@ TEST(ComparisonTest, WithinFactorIsSymmetricAndRejectsNonPositive) {
   EXPECT_FALSE(WithinFactor(std::numeric_limits<double>::quiet_NaN(), 1, 1.5));
 }
 
+TEST(ComparisonTest, TallyCountsEachVerdict) {
+  const auto row = [](Verdict v) { return ComparisonRow{"item", "1", "2", "rule", v, ""}; };
+  const VerdictTally tally = Tally({row(Verdict::kMatch), row(Verdict::kNoData),
+                                    row(Verdict::kDiffers), row(Verdict::kMatch),
+                                    row(Verdict::kMatch), row(Verdict::kNoData)});
+  EXPECT_EQ(tally.match, 3);
+  EXPECT_EQ(tally.differ, 1);
+  EXPECT_EQ(tally.no_data, 2);
+  EXPECT_EQ(ToString(tally), "Verdicts: 3 match, 1 differ, 2 no data");
+  EXPECT_EQ(ToString(Tally({})), "Verdicts: 0 match, 0 differ, 0 no data");
+}
+
 TEST(ComparisonTest, AnEmptyStoreGivesNoDataRowsThatNameTheirSpec) {
   for (const auto& rows :
        {Paper000Comparison({}), Thesis003Comparison({}), Paper004Comparison({})}) {

@@ -1,5 +1,6 @@
 // The entry points of `icpbench plot`: the caller's figures then the generic
-// fig_timing from runs or a store's directory; a run's label in figures.
+// ones (fig_timing, the performance profiles) from runs or a store's
+// directory; a run's label in figures.
 #include "plots/figures.h"
 
 #include <filesystem>
@@ -30,6 +31,12 @@ PlotOutput PlotRuns(const std::vector<RunRecord>& runs, const std::string& out_d
   PlotTimingFigure({"fig_timing", "Solve time per CSP (" + setting + ")",
                     "no ok run with per-step solve times"},
                    timing, out_dir, &out);
+  PlotProfileFigure({"fig_profile_time", "Performance profile: time per CSP",
+                     "no ok run with a solve time"},
+                    runs, ProfileMetric::kTime, out_dir, &out);
+  PlotProfileFigure({"fig_profile_area", "Performance profile: mean x-y area",
+                     "no ok run with an area"},
+                    runs, ProfileMetric::kArea, out_dir, &out);
   std::vector<const RunRecord*> all;
   for (const RunRecord& r : runs) all.push_back(&r);
   if (const int n = CountRunsOnly(all); n > 0)

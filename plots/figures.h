@@ -8,6 +8,11 @@
 //               per algorithm, over the problem configuration where the most
 //               algorithms ran ok at default parameters (ties: the most
 //               CSPs)
+//   fig_profile_time, fig_profile_area
+//               performance profiles of the time per CSP and the mean x-y
+//               area over every problem instance of the runs
+//               (report/performance_profile.h): rho against tau (log),
+//               one step line per algorithm configuration
 //
 // A figure without data is skipped with a message, never an error.
 #ifndef ICPBENCH_PLOTS_FIGURES_H_
@@ -21,8 +26,9 @@
 #include <opencv2/core.hpp>
 
 #include "core/interval.h"
-#include "report/report.h"
 #include "harness/run_record.h"
+#include "report/performance_profile.h"
+#include "report/report.h"
 
 namespace icp {
 
@@ -123,6 +129,11 @@ void PlotBoxTrackFigure(const FigureText& text,
 // Solve time per CSP, one box per group, pooling its ok runs' steps.
 void PlotTimingFigure(const FigureText& text, const std::vector<const GroupSummary*>& groups,
                       const std::string& out_dir, PlotOutput* out);
+
+// The performance profile of metric over the runs (RunsProfile), one step
+// line per solver with an instance solved; skipped when none has.
+void PlotProfileFigure(const FigureText& text, const std::vector<RunRecord>& runs,
+                       ProfileMetric metric, const std::string& out_dir, PlotOutput* out);
 
 // Points marked on an accumulator figure: big crosses (the truth) or small
 // ones (beacons), one legend entry per set.

@@ -104,7 +104,8 @@ TEST(FiguresTest, WritesEveryKindAsPngAndPdfCallersFirst) {
   const PlotOutput out = PlotRuns(runs, dir.string(), more);
   EXPECT_TRUE(out.messages.empty()) << out.messages.front();
   const std::vector<std::string> expected =
-      FigureFiles(dir, {"sweep", "corridors", "area", "fig_timing"});
+      FigureFiles(dir, {"sweep", "corridors", "area", "fig_timing", "fig_profile_time",
+                        "fig_profile_area"});
   EXPECT_EQ(out.files, expected);
   for (const std::string& path : expected) {
     ASSERT_TRUE(fs::exists(path)) << path;
@@ -137,14 +138,16 @@ TEST(FiguresTest, EmptyStoreWritesNothing) {
   ASSERT_NO_THROW(out = PlotRuns({}, dir.string()));
   EXPECT_TRUE(out.files.empty());
   EXPECT_EQ(out.messages, (std::vector<std::string>{
-                              "fig_timing: skipped: no ok run with per-step solve times"}));
+                              "fig_timing: skipped: no ok run with per-step solve times",
+                              "fig_profile_time: skipped: no ok run with a solve time",
+                              "fig_profile_area: skipped: no ok run with an area"}));
   // Each kind given nothing says why, in the caller's words.
   PlotSweepFigure({"a", "", "no sweep"}, "w", {}, dir.string(), &out);
   PlotCorridorFigure({"b", "", "no lap"}, {}, dir.string(), &out);
   PlotAreaFigure({"c", "", "no area"}, {}, dir.string(), &out);
   PlotTimingFigure({"d", "", "no times"}, {}, dir.string(), &out);
   EXPECT_EQ(out.messages.back(), "d: skipped: no times");
-  EXPECT_EQ(out.messages.size(), 5u);
+  EXPECT_EQ(out.messages.size(), 7u);
   EXPECT_TRUE(fs::is_empty(dir));
   fs::remove_all(dir);
 }
@@ -160,7 +163,7 @@ TEST(FiguresTest, SkipsWhatTheStoreLacks) {
   failed.status = RunStatus::kFailed;
   runs.push_back(failed);
   PlotOutput out = PlotRuns(runs, dir.string());
-  EXPECT_EQ(out.files, FigureFiles(dir, {"fig_timing"}));
+  EXPECT_EQ(out.files, FigureFiles(dir, {"fig_timing", "fig_profile_time", "fig_profile_area"}));
   EXPECT_TRUE(out.messages.empty());
   // Runs without steps draw no corridor.
   PlotCorridorFigure({"corridors", "", "no steps"}, Pointers({failed}), dir.string(), &out);

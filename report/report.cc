@@ -13,6 +13,7 @@
 
 #include "harness/results_store.h"
 #include "harness/spec.h"
+#include "report/performance_profile.h"
 #include "report/report_internal.h"
 
 namespace icp {
@@ -69,7 +70,8 @@ std::string Report(const std::vector<RunRecord>& runs, const std::string& format
   const std::vector<GroupSummary> groups = SummariseGroups(runs);
   if (format == "csv") return GroupCsv(groups);
 
-  std::vector<TextTable> tables = {GroupTable(groups)};
+  std::vector<TextTable> tables = {GroupTable(groups), ProfileTable(runs, ProfileMetric::kTime),
+                                   ProfileTable(runs, ProfileMetric::kArea)};
   if (more) {
     for (TextTable& t : more(runs)) tables.push_back(std::move(t));
   }

@@ -8,6 +8,9 @@
 //   Below it (md, tex) a short list of the failed, timed-out and skipped
 //   runs with their reasons.
 //
+// Then (md, tex) the performance profiles of the time per CSP and of the
+// mean area over every problem instance (report/performance_profile.h).
+//
 // A caller's tables follow (TableMaker: experiments/ adds a paper's), built
 // with the helpers below so they read the same.
 //

@@ -1,10 +1,13 @@
 // GET /api/aggregate (a metric's mean with a 95% confidence interval per
-// group and x value: the sweep figure) and /api/profile (performance
-// profiles: each run's metric over the best of its instance). Aggregated in
-// SQL over the ok runs that pass the filters.
+// group and x value: the sweep figure), aggregated in SQL over the ok runs
+// that pass the filters, and /api/profile (performance profiles: each
+// group's metric over the best of its instance, as
+// report/performance_profile.h computes them for the report and the paper).
 #include <cmath>
+#include <limits>
 #include <set>
 
+#include "report/performance_profile.h"
 #include "web/api.h"
 
 namespace icp::web {
@@ -91,26 +94,26 @@ void GetProfile(const std::string& dir, const httplib::Request& req, httplib::Re
     throw HttpError(400, "a performance profile needs a metric where lower is better");
   const Expr group = Axis(req, "group", "algorithm");
   StoreReader store(dir);
-  // An instance: one problem with its parameters and seed.
-  const std::string runs = "SELECT " + group.sql +
-                           " AS g, r.problem || ' ' || r.problem_params || ' ' || r.seed AS inst, " +
-                           metric.sql + " AS v FROM runs r WHERE " + f.where;
-  nlohmann::json out = {{"instances", 0}, {"solvers", nlohmann::json::object()}};
-  {
-    Query q(store, "SELECT count(DISTINCT inst) FROM (" + runs + ")",
-            Concat({&group.values, &metric.values, &f.values}));
-    if (q.Step()) out["instances"] = sqlite3_column_int64(q.stmt(), 0);
-  }
+  // Each filtered run as a profile entry: its group is the solver, an
+  // instance one problem with its parameters and seed; a run that is not ok
+  // leaves its instance unsolved. report/performance_profile.h computes.
   Query q(store,
-          "WITH m AS (" + runs + " AND r.status = 'ok'), b AS (SELECT inst, min(v) AS best FROM m "
-          "WHERE v IS NOT NULL GROUP BY inst) SELECT m.g, m.v / b.best FROM m JOIN b USING (inst) "
-          "WHERE m.v IS NOT NULL AND b.best > 0 ORDER BY 1, 2",
+          "SELECT " + group.sql + ", r.problem || ' ' || r.problem_params || ' ' || r.seed, " +
+              "CASE WHEN r.status = 'ok' THEN " + metric.sql + " END FROM runs r WHERE " +
+              f.where + " ORDER BY 1",
           Concat({&group.values, &metric.values, &f.values}));
+  std::vector<ProfileEntry> entries;
   while (q.Step())
-    out["solvers"][sqlite3_column_type(q.stmt(), 0) == SQLITE_NULL
-                       ? std::string("(none)")
-                       : reinterpret_cast<const char*>(sqlite3_column_text(q.stmt(), 0))]
-        .push_back(Column(q.stmt(), 1));
+    entries.push_back({sqlite3_column_type(q.stmt(), 0) == SQLITE_NULL
+                           ? std::string("(none)")
+                           : reinterpret_cast<const char*>(sqlite3_column_text(q.stmt(), 0)),
+                       reinterpret_cast<const char*>(sqlite3_column_text(q.stmt(), 1)),
+                       sqlite3_column_type(q.stmt(), 2) == SQLITE_NULL
+                           ? std::numeric_limits<double>::quiet_NaN()
+                           : sqlite3_column_double(q.stmt(), 2)});
+  const PerformanceProfile profile = ComputeProfile(entries);
+  nlohmann::json out = {{"instances", profile.instances}, {"solvers", nlohmann::json::object()}};
+  for (const SolverProfile& s : profile.solvers) out["solvers"][s.solver] = s.ratios;
   SendJson(res, out);
 }
 
