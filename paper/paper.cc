@@ -32,15 +32,20 @@ PaperSources GeneratePaper(const std::vector<RunRecord>& runs, const std::string
                            const std::string& figures_dir,
                            const std::vector<std::string>& skipped) {
   const FigureSet figures{figures_dir, skipped};
+  const PaperComparisons rows = ComparePapers(runs);
   PaperSources s;
   s.files = {
       {std::string(kName) + ".tex", PaperTemplate()},
       {"generated/meta.tex", MetaTex(runs)},
+      {"generated/tally.tex", TallyTex(rows)},
       {"generated/provenance.tex", ProvenanceTex(runs, store_path)},
+      {"generated/paper000.tex", Paper000Tex(runs, rows.paper000, figures)},
+      {"generated/thesis003.tex", Thesis003Tex(runs, rows.thesis003, figures)},
+      {"generated/paper004.tex", Paper004Tex(runs, rows.paper004, figures)},
+      {"generated/profiles.tex", ProfilesTex(runs, figures)},
+      {"generated/limitations.tex", LimitationsTex(runs, rows)},
+      {"generated/conclusion.tex", ConclusionTex(runs, rows)},
       {"generated/registry.tex", RegistryTex()},
-      {"generated/paper000.tex", Paper000Tex(runs, figures)},
-      {"generated/thesis003.tex", Thesis003Tex(runs, figures)},
-      {"generated/paper004.tex", Paper004Tex(runs, figures)},
       {"generated/performance.tex", PerformanceTex(runs, figures)},
   };
   return s;

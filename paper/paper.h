@@ -4,11 +4,19 @@
 // DIR/paper/icpbench.pdf. It holds, after the store's provenance (its code
 // revisions and machines, on the first page):
 //
-//   the algorithms and problems (from the registries), with the papers cited;
-//   for each seed paper (000, thesis 003, 004) its tables and figures as
-//   `report` and `plot` make them (experiments/) and a published-vs-measured
-//   table (paper/comparison.h) whose verdicts are decided by rules in code;
-//   the performance comparison: time per step of every configuration.
+//   an abstract stating the tally of verdicts ("Verdicts: N match, N
+//   differ, N no data", counted from the comparison rows);
+//   the algorithms and problems, with the papers cited;
+//   for each seed paper (000, thesis 003, 004): its setup with the tables
+//   `report` makes for it (experiments/), its claims (a published-vs-measured
+//   table, paper/comparison.h, whose verdicts rules in code decide), its
+//   figures as `plot` draws them, and a discussion of each difference;
+//   the performance profiles of every algorithm configuration over every
+//   problem instance (report/performance_profile.h), time and area;
+//   limitations (simulated data, the machine, what is not reproduced);
+//   a conclusion with the tally, overall and per paper;
+//   an appendix: the registries' algorithms and problems, and the time per
+//   step of every configuration.
 //
 // A section whose runs the store lacks says which spec produces them; a
 // figure that cannot be drawn says why (gnuplot missing, no runs).

@@ -25,8 +25,9 @@ std::map<std::string, std::string> Files(const PaperSources& sources) {
 TEST(PaperTest, AnEmptyStoreNamesTheSpecsOfEverySection) {
   const auto files = Files(GeneratePaper({}, "results/x/results.sqlite", "/nonexistent", {}));
   ASSERT_EQ(files.count("icpbench.tex"), 1u);
-  for (const char* fragment :
-       {"meta", "provenance", "registry", "paper000", "thesis003", "paper004", "performance"}) {
+  for (const char* fragment : {"meta", "tally", "provenance", "paper000", "thesis003", "paper004",
+                               "profiles", "limitations", "conclusion", "registry",
+                               "performance"}) {
     const std::string name = std::string("generated/") + fragment + ".tex";
     ASSERT_EQ(files.count(name), 1u) << name;
     EXPECT_NE(files.at("icpbench.tex").find(std::string("\\input{generated/") + fragment + "}"),
@@ -48,6 +49,57 @@ TEST(PaperTest, AnEmptyStoreNamesTheSpecsOfEverySection) {
   EXPECT_NE(with_figures.at("generated/paper000.tex").find("is not drawn: gnuplot not found."),
             std::string::npos)
       << with_figures.at("generated/paper000.tex");
+}
+
+// The rows' verdicts counted: in the abstract's macro and the conclusion,
+// and each paper's differences discussed.
+TEST(PaperTest, TheTallyCountsTheComparisonRows) {
+  using testing::InExperiment;
+  using testing::MakeRun;
+  std::vector<RunRecord> runs;
+  for (const char* a : {"hc4", "bc3", "bc4", "3b-bc4"})
+    runs.push_back(InExperiment(MakeRun(a, {}, {{"w", "20"}, {"steps", "2000"}}, 1, {1e-5, 2e-5}),
+                                "table1"));
+  const PaperComparisons rows = ComparePapers(runs);
+  int match = 0, differ = 0, no_data = 0, differ000 = 0;
+  for (const ComparisonRow& r : rows.All()) {
+    match += r.verdict == Verdict::kMatch;
+    differ += r.verdict == Verdict::kDiffers;
+    no_data += r.verdict == Verdict::kNoData;
+  }
+  for (const ComparisonRow& r : rows.paper000) differ000 += r.verdict == Verdict::kDiffers;
+  // These runs decide some rows, both ways, and leave others without data.
+  ASSERT_GT(match, 0);
+  ASSERT_GT(differ000, 0);
+  ASSERT_GT(no_data, 0);
+  const std::string line = "Verdicts: " + std::to_string(match) + " match, " +
+                           std::to_string(differ) + " differ, " + std::to_string(no_data) +
+                           " no data";
+  const auto files = Files(GeneratePaper(runs, "s", "/nonexistent", {}));
+  EXPECT_NE(files.at("generated/tally.tex").find("\\newcommand{\\icpbenchtally}{" + line + "}"),
+            std::string::npos)
+      << files.at("generated/tally.tex");
+  EXPECT_NE(files.at("generated/tally.tex")
+                .find("\\newcommand{\\icpbenchclaims}{" +
+                      std::to_string(match + differ + no_data) + "}"),
+            std::string::npos);
+  EXPECT_NE(files.at("generated/conclusion.tex").find(line + "."), std::string::npos)
+      << files.at("generated/conclusion.tex");
+  EXPECT_NE(files.at("icpbench.tex").find("\\icpbenchtally"), std::string::npos);
+  // Paper 000's discussion has a paragraph for each of its differing rows.
+  const std::string& p000 = files.at("generated/paper000.tex");
+  const std::string discussion = p000.substr(p000.find("\\subsection{Discussion}"));
+  for (std::size_t i = 0; i < rows.paper000.size(); ++i) {
+    if (rows.paper000[i].verdict != Verdict::kDiffers) continue;
+    EXPECT_NE(discussion.find(TexEscape(rows.paper000[i].item + ": the paper gives")),
+              std::string::npos)
+        << "row " << i + 1;
+  }
+  // The registries and the timing table are in the appendix.
+  const std::string& main = files.at("icpbench.tex");
+  EXPECT_LT(main.find("\\appendix"), main.find("\\input{generated/registry}"));
+  EXPECT_LT(main.find("\\appendix"), main.find("\\input{generated/performance}"));
+  EXPECT_EQ(main.find("every table and figure"), std::string::npos);
 }
 
 TEST(PaperTest, LongTablesAreCutIntoParts) {

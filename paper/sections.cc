@@ -16,6 +16,7 @@
 #include "experiments/thesis003/thesis003.h"
 #include "paper/comparison.h"
 #include "problems/registry.h"
+#include "report/performance_profile.h"
 #include "report/report.h"
 
 namespace icp {
@@ -64,6 +65,11 @@ std::string PagedTable(const TextTable& table) {
 }
 
 std::string Paragraph(const std::string& text) { return TexEscape(text) + "\n\n"; }
+
+// A paper's claims: its published-vs-measured table.
+std::string ClaimsTex(const std::string& title, const std::vector<ComparisonRow>& rows) {
+  return "\\subsection{Claims}\n" + PagedTable(ComparisonTable(title, rows));
+}
 
 // The run counts by status, "87 ok, 1 failed".
 std::string StatusCounts(const std::vector<RunRecord>& runs) {
@@ -152,9 +158,12 @@ std::string RegistryTex() {
   return out.str();
 }
 
-std::string Paper000Tex(const std::vector<RunRecord>& runs, const FigureSet& figures) {
+std::string Paper000Tex(const std::vector<RunRecord>& runs, const std::vector<ComparisonRow>& rows,
+                        const FigureSet& figures) {
   std::ostringstream out;
-  if (!HasRunOf(runs, IsPaper000Experiment)) {
+  const bool has_runs = HasRunOf(runs, IsPaper000Experiment);
+  out << "\\subsection{Setup}\n";
+  if (!has_runs) {
     out << Paragraph(
         "This store holds no run of paper 000's experiments (table1, window): "
         "icpbench run specs/default.yaml produces them. Its published values "
@@ -165,20 +174,27 @@ std::string Paper000Tex(const std::vector<RunRecord>& runs, const FigureSet& fig
         "runs are those of the spec experiments table1 and window "
         "(specs/default.yaml).");
     for (const TextTable& t : Paper000Tables(runs)) out << PagedTable(t);
+  }
+  out << ClaimsTex("Paper 000: published vs measured", rows);
+  if (has_runs) {
+    out << "\\subsection{Figures}\n";
     out << FigureTex(figures, "fig2_window", "Fig. 2: mean area and time per CSP against w");
     out << FigureTex(figures, "fig3_corridors", "Fig. 3: interval error corridors over the lap");
     out << FigureTex(figures, "fig4_area", "Fig. 4: x-y area over the lap");
   }
-  out << PagedTable(ComparisonTable("Paper 000: published vs measured", Paper000Comparison(runs)));
+  out << "\\subsection{Discussion}\n" << DiscussionTex(rows);
   return out.str();
 }
 
-std::string Thesis003Tex(const std::vector<RunRecord>& runs, const FigureSet& figures) {
+std::string Thesis003Tex(const std::vector<RunRecord>& runs,
+                         const std::vector<ComparisonRow>& rows, const FigureSet& figures) {
   std::ostringstream out;
   const bool relaxed = HasRunOf(runs, IsRelaxedExperiment);
+  const bool city = HasRunOf(runs, IsCityRoads);
   const bool marina = HasRunOf(runs, IsMarina);
   const std::vector<TextTable> tables = Thesis003Tables(runs);  // relaxed, then marina
-  out << "\\subsection{Relaxed solvers: Figs. 5.2 and 5.5 to 5.7}\n";
+  out << "\\subsection{Setup}\n";
+  out << "\\subsubsection*{Relaxed solvers: Figs. 5.2 and 5.5 to 5.7}\n";
   if (!relaxed) {
     out << Paragraph(
         "This store holds no run of experiments fig5_2, lines-accumulator, fig5_5, "
@@ -186,17 +202,9 @@ std::string Thesis003Tex(const std::vector<RunRecord>& runs, const FigureSet& fi
         "specs/relaxed.yaml (the whole one) produces them.");
   } else {
     out << PagedTable(tables.at(0));
-    out << FigureTex(figures, "fig5_2_box_polynomials",
-                     "Fig. 5.2: box polynomials of 20 lines, 7 of them outliers, and their "
-                     "projections on x");
-    out << FigureTex(figures, "fig_lines_accumulator",
-                     "The accumulator of the same lines (not a figure of the thesis)");
-    out << FigureTex(figures, "fig5_5_robot_a", "Fig. 5.5: robot A alone");
-    out << FigureTex(figures, "fig5_6_robot_b", "Fig. 5.6: robot B alone");
-    out << FigureTex(figures, "fig5_7_sum", "Fig. 5.7: the sum of both robots");
   }
-  out << "\\subsection{The city without GPS: Fig. 4.17}\n";
-  if (!HasRunOf(runs, IsCityRoads)) {
+  out << "\\subsubsection*{The city without GPS: Fig. 4.17}\n";
+  if (!city) {
     out << Paragraph(
         "This store holds no run of experiment city-roads: icpbench run specs/default.yaml "
         "produces them.");
@@ -206,10 +214,8 @@ std::string Thesis003Tex(const std::vector<RunRecord>& runs, const FigureSet& fi
         "map through the image contractor, by every ICP algorithm (the map as an extra "
         "contractor beside the CSP), the relaxed solver and the particle filter; the runs of "
         "experiment city-roads, whose areas and consistency are in the report's tables.");
-    out << FigureTex(figures, "fig4_17_city_roads",
-                     "Fig. 4.17: dead-reckoning boxes (a) against the boxes on the roads (b)");
   }
-  out << "\\subsection{Chapter 6: set membership against the particle filter}\n";
+  out << "\\subsubsection*{Chapter 6: set membership against the particle filter}\n";
   if (!marina) {
     out << Paragraph(
         "This store holds no run of experiment marina or marina-*: "
@@ -217,6 +223,23 @@ std::string Thesis003Tex(const std::vector<RunRecord>& runs, const FigureSet& fi
         "marina-drive) produces them.");
   } else {
     out << PagedTable(tables.at(1));
+  }
+  out << ClaimsTex("Thesis 003: published vs measured", rows);
+  if (relaxed || city || marina) out << "\\subsection{Figures}\n";
+  if (relaxed) {
+    out << FigureTex(figures, "fig5_2_box_polynomials",
+                     "Fig. 5.2: box polynomials of 20 lines, 7 of them outliers, and their "
+                     "projections on x");
+    out << FigureTex(figures, "fig_lines_accumulator",
+                     "The accumulator of the same lines (not a figure of the thesis)");
+    out << FigureTex(figures, "fig5_5_robot_a", "Fig. 5.5: robot A alone");
+    out << FigureTex(figures, "fig5_6_robot_b", "Fig. 5.6: robot B alone");
+    out << FigureTex(figures, "fig5_7_sum", "Fig. 5.7: the sum of both robots");
+  }
+  if (city)
+    out << FigureTex(figures, "fig4_17_city_roads",
+                     "Fig. 4.17: dead-reckoning boxes (a) against the boxes on the roads (b)");
+  if (marina) {
     out << FigureTex(figures, "fig6_7_dead_reckoning",
                      "Fig. 6.7: dead-reckoning boxes and their centre against the truth");
     out << FigureTex(figures, "fig6_8_marina_tracks",
@@ -227,13 +250,14 @@ std::string Thesis003Tex(const std::vector<RunRecord>& runs, const FigureSet& fi
                      "track");
     out << FigureTex(figures, "fig6_errors", "Centre error over time, both methods");
   }
-  out << PagedTable(
-      ComparisonTable("Thesis 003: published vs measured", Thesis003Comparison(runs)));
+  out << "\\subsection{Discussion}\n" << DiscussionTex(rows);
   return out.str();
 }
 
-std::string Paper004Tex(const std::vector<RunRecord>& runs, const FigureSet& figures) {
+std::string Paper004Tex(const std::vector<RunRecord>& runs, const std::vector<ComparisonRow>& rows,
+                        const FigureSet& figures) {
   std::ostringstream out;
+  out << "\\subsection{Setup}\n";
   out << Paragraph(
       "Paper 004 calls a localization consistent at a step when its box holds the reference "
       "(eq. 31: 0 lies in the interval error of eq. 30), and its method consistent when every "
@@ -246,11 +270,28 @@ std::string Paper004Tex(const std::vector<RunRecord>& runs, const FigureSet& fig
       "window sweep.");
   const TextTable table = Paper004Tables(runs).at(0);
   out << PagedTable(table);
+  out << ClaimsTex("Paper 004: published vs measured", rows);
   if (!table.rows.empty())
-    out << FigureTex(figures, "fig13_post_localization",
+    out << "\\subsection{Figures}\n"
+        << FigureTex(figures, "fig13_post_localization",
                      "Figs. 12 and 13: interval error of the real-time boxes (top) and of the "
                      "post-localized states (bottom)");
-  out << PagedTable(ComparisonTable("Paper 004: published vs measured", Paper004Comparison(runs)));
+  out << "\\subsection{Discussion}\n" << DiscussionTex(rows);
+  return out.str();
+}
+
+std::string ProfilesTex(const std::vector<RunRecord>& runs, const FigureSet& figures) {
+  std::ostringstream out;
+  out << Paragraph(
+      "How the algorithm configurations compare across every problem of this store, as "
+      "Dolan and Moré's performance profiles show it: for each configuration, the share ρ(τ) of "
+      "the problem instances (a problem with its parameters and seed) on which its time per "
+      "CSP, or its mean x-y area, is within a factor τ of the best configuration's there. ρ(1) "
+      "is how often it is the best; its limit, how many instances it solves.");
+  for (const ProfileMetric metric : {ProfileMetric::kTime, ProfileMetric::kArea})
+    out << PagedTable(ProfileTable(runs, metric));
+  out << FigureTex(figures, "fig_profile_time", "Performance profile of the time per CSP");
+  out << FigureTex(figures, "fig_profile_area", "Performance profile of the mean x-y area");
   return out.str();
 }
 

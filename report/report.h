@@ -163,8 +163,9 @@ std::string FormatRatio(double a, double b);
 // exponent form otherwise; "—" for NaN, "∞"/"-∞" for infinities.
 std::string FormatNumber(double v);
 // LaTeX text for a table cell: _ & % # { } $ ~ ^ \ escaped, the few
-// non-ASCII signs of the tables (— µ ² × ∞ … ≤ ≥ § − ± ≈) and < > | (which
-// the default text font lacks) written as LaTeX.
+// non-ASCII signs of the tables (— µ ² × ∞ … ≤ ≥ § − ± ≈, Greek letters
+// such as ρ τ θ) and < > | (which the default text font lacks) written as
+// LaTeX.
 std::string TexEscape(const std::string& text);
 // One table as `report --format tex` writes it (a booktabs table float,
 // shrunk to the line width when wider, its notes as paragraphs, its items as
