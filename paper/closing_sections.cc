@@ -45,6 +45,11 @@ std::vector<std::pair<std::string, std::vector<std::size_t>>> ByReason(
 
 std::string TallyOf(const std::vector<ComparisonRow>& rows) { return ToString(Tally(rows)); }
 
+// text ending in one full stop (a reason may end with its own).
+std::string Sentence(const std::string& text) {
+  return !text.empty() && text.back() == '.' ? text : text + ".";
+}
+
 }  // namespace
 
 std::vector<ComparisonRow> PaperComparisons::All() const {
@@ -78,14 +83,14 @@ std::string DiscussionTex(const std::vector<ComparisonRow>& rows) {
       text += (text.empty() ? "" : " ") + r.item + ": the paper gives " + r.published +
               ", this store " + r.measured + ", outside the rule (" + r.rule + ").";
     }
-    out << Bold(RowNumbers(numbers) + ".") << " " << TexEscape(text + " Why: " + reason + ".")
+    out << Bold(RowNumbers(numbers) + ".") << " " << TexEscape(text + " Why: " + Sentence(reason))
         << "\n\n";
   }
   for (const auto& [reason, numbers] : ByReason(rows, Verdict::kNoData)) {
     std::string items;
     for (std::size_t i : numbers) items += (items.empty() ? "" : "; ") + rows[i].item;
     out << Bold(RowNumbers(numbers) + ", no data.") << " "
-        << TexEscape(items + ": " + reason + ".") << "\n\n";
+        << TexEscape(items + ": " + Sentence(reason)) << "\n\n";
   }
   return out.str();
 }

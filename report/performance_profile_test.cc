@@ -106,8 +106,8 @@ TEST(PerformanceProfileTest, RunsAreConfigurationsOnInstancesAndFailuresCountAsU
   EXPECT_EQ(t.headers[2], "τ = 1");
   EXPECT_EQ(t.headers[3], "τ = 1.5");
   ASSERT_EQ(t.rows.size(), 3u);
-  EXPECT_EQ(t.rows[0], (std::vector<std::string>{"HC4", "1", "0.5", "0.5", "0.5", "0.5", "0.5"}));
-  EXPECT_EQ(t.rows[2], (std::vector<std::string>{"BC4", "2", "0.5", "0.5", "1", "1", "1"}));
+  EXPECT_EQ(t.rows[0], (std::vector<std::string>{"HC4", "1", "0.50", "0.50", "0.50", "0.50", "0.50"}));
+  EXPECT_EQ(t.rows[2], (std::vector<std::string>{"BC4", "2", "0.50", "0.50", "1.00", "1.00", "1.00"}));
 }
 
 }  // namespace
