@@ -70,11 +70,13 @@ std::string Report(const std::vector<RunRecord>& runs, const std::string& format
   const std::vector<GroupSummary> groups = SummariseGroups(runs);
   if (format == "csv") return GroupCsv(groups);
 
-  std::vector<TextTable> tables = {GroupTable(groups), ProfileTable(runs, ProfileMetric::kTime),
-                                   ProfileTable(runs, ProfileMetric::kArea)};
+  std::vector<TextTable> tables = {GroupTable(groups)};
   if (more) {
     for (TextTable& t : more(runs)) tables.push_back(std::move(t));
   }
+  // Last, over every configuration of the store: the performance profiles.
+  tables.push_back(ProfileTable(runs, ProfileMetric::kTime));
+  tables.push_back(ProfileTable(runs, ProfileMetric::kArea));
   std::ostringstream out;
   if (format == "md") {
     out << "# icpbench report\n\n" << Overview(runs) << "\n\n";

@@ -8,11 +8,10 @@
 //   Below it (md, tex) a short list of the failed, timed-out and skipped
 //   runs with their reasons.
 //
-// Then (md, tex) the performance profiles of the time per CSP and of the
-// mean area over every problem instance (report/performance_profile.h).
-//
 // A caller's tables follow (TableMaker: experiments/ adds a paper's), built
-// with the helpers below so they read the same.
+// with the helpers below so they read the same; last (md, tex), the
+// performance profiles of the time per CSP and of the mean area over every
+// problem instance (report/performance_profile.h).
 //
 // Aggregation: a group's metrics are ComputeMetrics over the pooled steps of
 // its ok runs (every CSP weighs the same, whichever seed it came from). When

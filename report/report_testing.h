@@ -52,6 +52,12 @@ inline RunRecord InExperiment(RunRecord run, const std::string& experiment) {
   return run;
 }
 
+// A Markdown report without its closing performance profiles (whose rows
+// name every configuration), so that a paper's tables can be searched.
+inline std::string WithoutProfiles(const std::string& md) {
+  return md.substr(0, md.find("## Performance profile"));
+}
+
 inline std::vector<std::string> Lines(const std::string& text) {
   std::vector<std::string> lines;
   std::istringstream in(text);

@@ -22,7 +22,9 @@ using testing::MarkdownRow;
 using testing::RunsOnly;
 using testing::TempDir;
 
-std::string Md(const std::vector<RunRecord>& runs) { return Report(runs, "md", Paper000Tables); }
+std::string Md(const std::vector<RunRecord>& runs) {
+  return testing::WithoutProfiles(Report(runs, "md", Paper000Tables));
+}
 
 RunRecord Table1(RunRecord run) { return InExperiment(std::move(run), kPaper000Table1); }
 RunRecord Window(RunRecord run) { return InExperiment(std::move(run), kPaper000Window); }
@@ -176,7 +178,8 @@ TEST(Paper000Test, FiguresOfTheDefaultSpecsExperiments) {
   const PlotOutput out = PlotRuns(runs, dir.string(), Paper000Figures);
   EXPECT_TRUE(out.messages.empty()) << out.messages.front();
   EXPECT_EQ(out.files,
-            FigureFiles(dir, {"fig2_window", "fig3_corridors", "fig4_area", "fig_timing"}));
+            FigureFiles(dir, {"fig2_window", "fig3_corridors", "fig4_area", "fig_timing",
+                              "fig_profile_time", "fig_profile_area"}));
   fs::remove_all(dir);
 }
 

@@ -39,7 +39,7 @@ constexpr char kFig52Missing[] =
 // The report's Markdown from the table's title on (the generic table comes
 // first).
 std::string Md(const std::vector<RunRecord>& runs) {
-  const std::string md = Report(runs, "md", Thesis003Tables);
+  const std::string md = testing::WithoutProfiles(Report(runs, "md", Thesis003Tables));
   const std::size_t at = md.find("## Thesis 003: relaxed solvers");
   return at == std::string::npos ? "" : md.substr(at);
 }
