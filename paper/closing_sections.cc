@@ -168,7 +168,7 @@ std::string ConclusionTex(const std::vector<RunRecord>& runs,
     if (best.empty()) continue;
     out << Paragraph("Over the store's " + std::to_string(profile.instances) +
                      " problem instances, the best " + ProfileMetricName(metric) +
-                     " most often (ρ(1) = " + FormatNumber(most) + ") is that of " + best + ".");
+                     " most often (ρ(1) = " + FormatShare(most) + ") is that of " + best + ".");
   }
   return out.str();
 }

@@ -46,9 +46,10 @@ void PlotProfileFigure(const FigureText& text, const std::vector<RunRecord>& run
                                         std::to_string(profile.instances) + " instances") +
                 "\nset logscale x\nset xrange [1:" + std::to_string(tau_max) +
                 "]\nset yrange [0:1.02]\n"
-                // Long configuration labels: the key beside the plot, its text small.
-                "set key outside right top noenhanced font ',7' spacing 0.9\n";
-  RenderPanel(text.name, 7.5, 5, panel, out_dir, out);
+                // Long configuration labels: the key beside the plot, at the width of
+                // the paper's text so that its font keeps its size.
+                "set key outside right top noenhanced spacing 0.9\n";
+  RenderPanel(text.name, 6.7, 5, panel, out_dir, out);
 }
 
 }  // namespace icp

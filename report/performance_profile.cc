@@ -19,13 +19,6 @@ double Median(std::vector<double> values) {
   return n % 2 == 1 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
 }
 
-// A share to two decimals: what 1/32 of the instances distinguishes.
-std::string Share(double rho) {
-  char text[16];
-  std::snprintf(text, sizeof text, "%.2f", rho);
-  return text;
-}
-
 double Ratio(double value, double best) {
   if (best > 0) return value / best;
   return value == best ? 1 : std::numeric_limits<double>::infinity();
@@ -75,6 +68,12 @@ double Rho(const PerformanceProfile& profile, const SolverProfile& solver, doubl
   return static_cast<double>(within - solver.ratios.begin()) / profile.instances;
 }
 
+std::string FormatShare(double rho) {
+  char text[16];
+  std::snprintf(text, sizeof text, "%.2f", rho);
+  return text;
+}
+
 std::string ProfileSolver(const RunRecord& run) {
   return WithParams(DisplayOf(run.spec.algorithm).label, run.spec.algorithm_params);
 }
@@ -119,7 +118,7 @@ TextTable ProfileTable(const std::vector<RunRecord>& runs, ProfileMetric metric)
   }
   for (const SolverProfile& s : profile.solvers) {
     std::vector<std::string> row = {s.solver, std::to_string(s.solved)};
-    for (double tau : kProfileTaus) row.push_back(Share(Rho(profile, s, tau)));
+    for (double tau : kProfileTaus) row.push_back(FormatShare(Rho(profile, s, tau)));
     t.rows.push_back(std::move(row));
   }
   t.omit_if_empty = true;

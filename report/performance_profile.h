@@ -52,6 +52,10 @@ PerformanceProfile ComputeProfile(const std::vector<ProfileEntry>& entries);
 // factor tau of the best (0 without instances).
 double Rho(const PerformanceProfile& profile, const SolverProfile& solver, double tau);
 
+// rho as the tables show it: two decimals (1/32 of the default store's
+// instances is 0.03).
+std::string FormatShare(double rho);
+
 // What the report's and the paper's profiles compare: the runs' mean solve
 // time per CSP, or their mean x-y area.
 enum class ProfileMetric { kTime, kArea };
