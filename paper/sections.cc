@@ -29,13 +29,20 @@ bool HasRunOf(const std::vector<RunRecord>& runs, bool (*of)(const std::string& 
                      [&](const RunRecord& r) { return of(ExperimentOf(r)); });
 }
 
-// A figure drawn from the store, or why it is not.
+// A figure drawn from the store, or why it is not. The figures are drawn at
+// the size the page prints them (plots/figures_internal.h, kPrintWidthIn and
+// kPrintMaxHeightIn), so that their 8-pt text prints at 8 pt; the caption
+// adds what the drawing noted ("NAME: note: hc4 = bc4 draw the same values
+// ... and are drawn once").
 std::string FigureTex(const FigureSet& figures, const std::string& name,
                       const std::string& caption) {
   if (std::filesystem::is_regular_file(figures.dir + "/" + name + ".pdf")) {
-    return "\\begin{figure}[htbp]\n\\centering\n\\includegraphics[width=\\linewidth,height=0.42"
+    std::string notes;
+    for (const std::string& m : figures.skipped)
+      if (m.rfind(name + ": note: ", 0) == 0) notes += "; " + m.substr(name.size() + 8);
+    return "\\begin{figure}[htbp]\n\\centering\n\\includegraphics[width=\\linewidth,height=0.75"
            "\\textheight,keepaspectratio]{figures/" +
-           name + ".pdf}\n\\caption{" + TexEscape(caption + " (" + name + ")") +
+           name + ".pdf}\n\\caption{" + TexEscape(caption + notes + " (" + name + ")") +
            "}\n\\end{figure}\n\n";
   }
   std::string why = "no figure was written";

@@ -1,6 +1,7 @@
 // Runs side by side on their map, each panel one run's boxes at every step
 // over the truth: how wide a set estimate grows along a route (thesis 003
 // Fig. 4.17: dead reckoning, then the same with the road map).
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,8 +25,7 @@ void PlotBoxTrackFigure(const FigureText& text,
   f.name = text.name;
   f.title = text.title;
   f.cols = static_cast<int>(panels.size());
-  f.width_in = 6 * f.cols;
-  f.height_in = 6.6;
+  f.height_in = std::min(kPrintMaxHeightIn, 0.9 + kPrintWidthIn / f.cols);
   for (const auto& [title, run] : panels) {
     Panel panel;
     panel.setup = "set title " + MultiLine(title) +

@@ -18,7 +18,10 @@ namespace icp::detail::plots {
 
 namespace {
 
-constexpr double kPixelsPerInch = 110;  // PNG size from the PDF size in inches
+// PNG size from the PDF size in inches; its fonts and lines scaled so that
+// it looks as the PDF does (cairo's PNG takes a point for a pixel).
+constexpr double kPixelsPerInch = 150;
+constexpr double kPngScale = kPixelsPerInch / 72;
 
 enum class Terminal { kPng, kPdf };
 
@@ -33,10 +36,11 @@ void SetTerminal(Gnuplot& gp, Terminal terminal, const Figure& f, const std::str
   gp << "set encoding utf8\n";
   if (terminal == Terminal::kPng) {
     gp << "set terminal pngcairo enhanced size " << static_cast<int>(f.width_in * kPixelsPerInch)
-       << "," << static_cast<int>(f.height_in * kPixelsPerInch) << " font 'Sans,10'\n";
+       << "," << static_cast<int>(f.height_in * kPixelsPerInch) << " font 'Sans,"
+       << std::lround(kFontPt * kPngScale) << "' linewidth " << kPngScale / 2 << "\n";
   } else {
     gp << "set terminal pdfcairo enhanced size " << f.width_in << "in," << f.height_in
-       << "in font 'Sans,8'\n";
+       << "in font 'Sans," << kFontPt << "'\n";
   }
   gp << "set output " << Quote(path) << "\n";
 }

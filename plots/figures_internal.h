@@ -28,12 +28,20 @@ struct Panel {
   std::vector<Series> series;
 };
 
+// The size the paper prints a figure at: its template's text width (17 cm)
+// and at most 0.75 of its text height (FigureTex in paper/sections.cc). A
+// figure drawn no larger, with kFontPt fonts, prints its text at kFontPt or
+// more (the paper never shrinks it); tests/paper_pages_test.cc checks it.
+inline constexpr double kPrintWidthIn = 6.5;
+inline constexpr double kPrintMaxHeightIn = 7.5;
+inline constexpr int kFontPt = 8;
+
 // A figure: panels in a rows x cols multiplot (one panel: no multiplot).
 struct Figure {
   std::string name;  // file name without extension
   std::string title;
-  double width_in = 8;
-  double height_in = 5;
+  double width_in = kPrintWidthIn;
+  double height_in = 4;
   int rows = 1;
   int cols = 1;
   std::vector<Panel> panels;
@@ -47,6 +55,30 @@ std::string Quote(const std::string& text);
 
 // A gnuplot double-quoted string, so that a '\n' in text breaks the line.
 std::string MultiLine(const std::string& text);
+
+// Series that draw the same data (rows equal to a relative 1e-9, NaN
+// equal to NaN): groups of indices into rows, each group in the order of its
+// first member, its members in order.
+std::vector<std::vector<std::size_t>> EqualGroups(
+    const std::vector<std::vector<std::vector<double>>>& rows);
+
+// The legend entry of a group of equal series, "hc4 = bc3 = bc4 (seed 1)":
+// the labels joined by " = ", a parenthesised suffix they share written once.
+std::string JoinedLabel(const std::vector<std::string>& labels,
+                        const std::vector<std::size_t>& group);
+
+// Records, for the figure's caption (paper/sections.cc FigureTex reads
+// "NAME: note: ..."), that the series of each group of several were drawn
+// once: "hc4 = bc3 = bc4 draw the same values (where: ...) and are drawn once".
+void NoteEqualSeries(const std::string& figure, const std::vector<std::string>& labels,
+                     const std::vector<std::vector<std::size_t>>& groups, const std::string& where,
+                     PlotOutput* out);
+
+// True when the positive finite values of v span at least kLogSpan (a
+// decade): the axis reads better on a log scale. False when some value is
+// not positive (a log scale cannot draw it).
+inline constexpr double kLogSpan = 10;
+bool SpansDecades(const std::vector<double>& v);
 
 // v when finite, else NaN (gnuplot leaves a gap); Positive also for v <= 0
 // (a log scale cannot draw it).
@@ -105,6 +137,13 @@ namespace icp {
 using detail::plots::BoxesSeries;
 using detail::plots::Colour;
 using detail::plots::CountRunsOnly;
+using detail::plots::EqualGroups;
+using detail::plots::JoinedLabel;
+using detail::plots::kFontPt;
+using detail::plots::kPrintMaxHeightIn;
+using detail::plots::kPrintWidthIn;
+using detail::plots::NoteEqualSeries;
+using detail::plots::SpansDecades;
 using detail::plots::Figure;
 using detail::plots::Finite;
 using detail::plots::MapSeries;

@@ -27,12 +27,15 @@ std::vector<double> CentreAndHalves(const std::vector<double>& b) {
 
 std::string Title(const std::string& t) { return t.empty() ? "notitle" : "title " + Quote(t); }
 
-Panel ToPanel(const MapPanel& p) {
+// The panel; its legend below it (near the plot, as wide as the page), or
+// none when key is false.
+Panel ToPanel(const MapPanel& p, bool key) {
   const MapFrame& f = p.frame;
   Panel panel;
   panel.setup = "set title " + MultiLine(p.title) +
-                " noenhanced\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset size ratio -1\n"
-                "set key outside right top vertical noenhanced\n"
+                " noenhanced\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset size ratio -1\n" +
+                (key ? "set key outside bottom center horizontal maxrows 2 noenhanced\n"
+                     : "unset key\n") +
                 "set xrange [" + std::to_string(f.x.lo()) + ":" + std::to_string(f.x.hi()) +
                 "]\nset yrange [" + std::to_string(f.y.lo()) + ":" + std::to_string(f.y.hi()) +
                 "]\n";
@@ -64,6 +67,22 @@ Panel ToPanel(const MapPanel& p) {
   return panel;
 }
 
+// The legend entries of a panel, in order.
+std::vector<std::string> LegendOf(const MapPanel& p) {
+  std::vector<std::string> titles = {"map"};
+  for (const MapLayer& l : p.layers)
+    if (!l.title.empty()) titles.push_back(l.title + "\t" + l.colour);
+  return titles;
+}
+
+// The height a panel of frame f takes at the given width: its plot at equal
+// scales (at most max_plot_in high), its title, axis labels and legend.
+double PanelHeight(const MapFrame& f, double width_in, bool key, double max_plot_in) {
+  const double plot_width = width_in - 0.8;
+  const double plot = std::min(max_plot_in, plot_width * f.y.Width() / std::max(1e-9, f.x.Width()));
+  return plot + 0.8 + (key ? 0.45 : 0);
+}
+
 bool HasLayerPoint(const MapPanel& p) {
   return std::any_of(p.layers.begin(), p.layers.end(), [](const MapLayer& l) {
     return std::any_of(l.rows.begin(), l.rows.end(), [](const std::vector<double>& r) {
@@ -86,14 +105,18 @@ void FrameToShow(const std::vector<MapLayer>& layers, double margin, const Inter
                  const Interval& y_bounds, MapFrame* frame) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   double x0 = kInf, x1 = -kInf, y0 = kInf, y1 = -kInf;
-  for (const MapLayer& l : layers) {
-    const bool box = l.kind == MapLayer::Kind::kBoxes;
-    for (const std::vector<double>& r : l.rows) {
-      if (!std::all_of(r.begin(), r.end(), [](double v) { return std::isfinite(v); })) continue;
-      x0 = std::min(x0, r[0]), x1 = std::max(x1, box ? r[1] : r[0]);
-      y0 = std::min(y0, box ? r[2] : r[1]), y1 = std::max(y1, box ? r[3] : r[1]);
+  auto fit = [&](bool boxes) {
+    for (const MapLayer& l : layers) {
+      if ((l.kind == MapLayer::Kind::kBoxes) != boxes) continue;
+      for (const std::vector<double>& r : l.rows) {
+        if (!std::all_of(r.begin(), r.end(), [](double v) { return std::isfinite(v); })) continue;
+        x0 = std::min(x0, r[0]), x1 = std::max(x1, boxes ? r[1] : r[0]);
+        y0 = std::min(y0, boxes ? r[2] : r[1]), y1 = std::max(y1, boxes ? r[3] : r[1]);
+      }
     }
-  }
+  };
+  fit(false);              // the tracks and points
+  if (x0 > x1) fit(true);  // else the boxes
   if (x0 > x1) {
     frame->x = x_bounds, frame->y = y_bounds;
     return;
@@ -136,9 +159,24 @@ void PlotMapFigure(const FigureText& text, const std::vector<MapPanel>& panels, 
   f.title = panels.size() > 1 ? text.title : "";
   f.cols = std::max(1, std::min(cols, static_cast<int>(panels.size())));
   f.rows = (static_cast<int>(panels.size()) + f.cols - 1) / f.cols;
-  f.width_in = 11 * f.cols;
-  f.height_in = 3.5 * f.rows + (panels.size() > 1 ? 0.5 : 0);
-  for (const MapPanel& p : panels) f.panels.push_back(ToPanel(p));
+  // A legend under a panel whose entries differ from the next one's (the
+  // last of equal ones keeps it); rows as high as their frames need.
+  std::vector<bool> keys;
+  for (std::size_t i = 0; i < panels.size(); ++i)
+    keys.push_back(i + 1 == panels.size() || LegendOf(panels[i]) != LegendOf(panels[i + 1]));
+  const double title = panels.size() > 1 ? 0.3 : 0;
+  const double max_plot = (kPrintMaxHeightIn - title) / f.rows - 1.25;
+  double height = title;
+  for (int row = 0; row < f.rows; ++row) {
+    double tallest = 0;
+    for (int c = 0; c < f.cols && row * f.cols + c < static_cast<int>(panels.size()); ++c) {
+      const std::size_t i = static_cast<std::size_t>(row * f.cols + c);
+      tallest = std::max(tallest, PanelHeight(panels[i].frame, kPrintWidthIn / f.cols, keys[i], max_plot));
+    }
+    height += tallest;
+  }
+  f.height_in = std::min(kPrintMaxHeightIn, height);
+  for (std::size_t i = 0; i < panels.size(); ++i) f.panels.push_back(ToPanel(panels[i], keys[i]));
   Render(f, out_dir, out);
 }
 
