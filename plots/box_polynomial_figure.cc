@@ -81,8 +81,7 @@ Panel Boxes(const BoxPolynomialPanel& p, const Interval& x, const Interval& y,
 Panel Projection(const BoxPolynomialPanel& p, const Interval& x) {
   Panel panel;
   const int n = static_cast<int>(p.coefficients.size()) - 1;
-  panel.setup = "set title " + Quote(p.title.substr(0, p.title.find('\n')) + ": projection on x") +
-                " noenhanced\nunset grid\nset xlabel 'x (m)'\nset ylabel 'degree'\nset xrange " +
+  panel.setup = "set title 'projection on x'\nunset grid\nset xlabel 'x (m)'\nset ylabel 'degree'\nset xrange " +
                 Range(x) + "\nset yrange [-0.5:" + std::to_string(n) + ".5]\nunset key\n";
   AddCoefficients(
       p,
@@ -104,15 +103,25 @@ void PlotBoxPolynomialFigure(const FigureText& text, const std::vector<BoxPolyno
   if (panels.empty()) return Skip(text, out);
   Figure f;
   f.name = text.name;
-  f.title = text.title + "; framed red: the coefficient of degree n - q; red cross: the truth";
-  // A row per panel, the boxes beside their projection, so that the
-  // figure prints at the page's width without shrinking.
-  f.rows = static_cast<int>(panels.size());
+  f.title = Wrapped(text.title + "; framed red: the coefficient of degree n - q; red cross: the truth",
+                    kPrintWidthIn);
+  // Two panels a row, each's boxes above its projection (a square plot,
+  // then a flat one), so that the figure prints at the page's width.
   f.cols = 2;
-  f.height_in = std::min(kPrintMaxHeightIn, 0.4 + 1.9 * f.rows);
-  for (const BoxPolynomialPanel& p : panels) {
-    f.panels.push_back(Boxes(p, x, y, segments, truth));
-    f.panels.push_back(Projection(p, x));
+  const int pairs = (static_cast<int>(panels.size()) + 1) / 2;
+  f.rows = 2 * pairs;
+  for (int r = 0; r < pairs; ++r) f.row_weights.insert(f.row_weights.end(), {2.5, 1.3});
+  f.height_in = std::min(kPrintMaxHeightIn, 0.4 + 3.8 * pairs);
+  const Panel none{"unset border\nunset tics\nunset key\nunset grid\nset xrange [0:1]\n", {}};
+  for (int r = 0; r < pairs; ++r) {
+    for (int c = 0; c < 2; ++c) {
+      const std::size_t i = static_cast<std::size_t>(2 * r + c);
+      f.panels.push_back(i < panels.size() ? Boxes(panels[i], x, y, segments, truth) : none);
+    }
+    for (int c = 0; c < 2; ++c) {
+      const std::size_t i = static_cast<std::size_t>(2 * r + c);
+      f.panels.push_back(i < panels.size() ? Projection(panels[i], x) : none);
+    }
   }
   Render(f, out_dir, out);
 }

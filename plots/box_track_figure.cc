@@ -25,14 +25,16 @@ void PlotBoxTrackFigure(const FigureText& text,
   f.name = text.name;
   f.title = text.title;
   f.cols = static_cast<int>(panels.size());
-  f.height_in = std::min(kPrintMaxHeightIn, 0.9 + kPrintWidthIn / f.cols);
+  f.footer_in = 0.3;
+  f.height_in = std::min(kPrintMaxHeightIn, 1.2 + kPrintWidthIn / f.cols);
   for (const auto& [title, run] : panels) {
     Panel panel;
-    panel.setup = "set title " + MultiLine(title) +
+    const bool last = run == panels.back().second;
+    panel.setup = "set title " + MultiLine(Wrapped(title, kPrintWidthIn / f.cols)) +
                   " noenhanced\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset size ratio -1\n"
                   "set xrange [" + std::to_string(x.lo()) + ":" + std::to_string(x.hi()) +
                   "]\nset yrange [" + std::to_string(y.lo()) + ":" + std::to_string(y.hi()) +
-                  "]\nset key outside bottom center horizontal noenhanced\n";
+                  "]\n" + (last ? kFooterKey : "unset key\n");
     Series map = MapSeries(map_points);
     if (HasPoint(map)) panel.series.push_back(std::move(map));
     Series boxes = BoxesSeries(*run, 1, "box of every step");

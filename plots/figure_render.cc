@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iterator>
 #include <set>
+#include <sstream>
 #include <utility>
 
 #include "plots/figures_internal.h"
@@ -45,8 +46,30 @@ void SetTerminal(Gnuplot& gp, Terminal terminal, const Figure& f, const std::str
   gp << "set output " << Quote(path) << "\n";
 }
 
-void DrawPanel(Gnuplot& gp, const Panel& panel) {
-  gp << "reset\nset encoding utf8\nset grid\n" << panel.setup << "\n";
+// Where panel i of a figure placed by hand goes: "set origin ..., set
+// size ..." in screen fractions, rows from the top below the title, the
+// footer strip left free.
+std::string Placement(const Figure& f, std::size_t i) {
+  const int lines = f.title.empty() ? 0 : 1 + static_cast<int>(std::count(f.title.begin(), f.title.end(), '\n'));
+  const double title = lines * 0.2 / f.height_in, footer = f.footer_in / f.height_in;
+  const double avail = std::max(0.1, 1 - title - footer);
+  std::vector<double> w = f.row_weights;
+  w.resize(static_cast<std::size_t>(f.rows), 1.0);
+  double total = 0;
+  for (double x : w) total += x;
+  const std::size_t row = i / static_cast<std::size_t>(f.cols), col = i % f.cols;
+  double above = 0;
+  for (std::size_t r = 0; r < row; ++r) above += w[r];
+  const double h = w[row] / total * avail;
+  const double y = 1 - title - above / total * avail - h;
+  std::ostringstream out;
+  out << "set origin " << static_cast<double>(col) / f.cols << "," << y << "\nset size "
+      << 1.0 / f.cols << "," << h << "\n";
+  return out.str();
+}
+
+void DrawPanel(Gnuplot& gp, const Panel& panel, const std::string& placement) {
+  gp << "reset\nset encoding utf8\nset grid\n" << placement << panel.setup << "\n";
   std::vector<const Series*> drawn;
   for (const Series& s : panel.series) {
     if (HasPoint(s)) drawn.push_back(&s);
@@ -70,6 +93,41 @@ void DrawPanel(Gnuplot& gp, const Panel& panel) {
 }  // namespace
 
 std::string Colour(const std::string& algorithm) { return DisplayOf(algorithm).colour; }
+
+std::string Wrapped(const std::string& text, double width_in) {
+  // A character of a sans font is about 0.6 of its size wide.
+  const std::size_t per_line = static_cast<std::size_t>(width_in * 72 / (0.6 * kFontPt));
+  std::string out;
+  std::istringstream paragraphs(text);
+  for (std::string paragraph; std::getline(paragraphs, paragraph);) {
+    std::string line;
+    std::istringstream words(paragraph);
+    for (std::string word; words >> word;) {
+      if (!line.empty() && line.size() + 1 + word.size() > per_line) {
+        out += line + "\n";
+        line.clear();
+      }
+      line += (line.empty() ? "" : " ") + word;
+    }
+    out += line + "\n";
+  }
+  if (!out.empty()) out.pop_back();
+  return out;
+}
+
+std::string TicsFor(const std::string& axis, double lo, double hi, int max_tics) {
+  if (!std::isfinite(lo) || !std::isfinite(hi) || !(hi > lo) || max_tics < 2) return "";
+  const double raw = (hi - lo) / (max_tics - 1);
+  const double decade = std::pow(10, std::floor(std::log10(raw)));
+  double step = decade;
+  for (double m : {1.0, 2.0, 2.5, 5.0, 10.0}) {
+    step = m * decade;
+    if (step >= raw) break;
+  }
+  std::ostringstream out;
+  out << "set " << axis << "tics " << step << "\n";
+  return out.str();
+}
 
 std::string Quote(const std::string& text) {
   std::string out = "'";
@@ -124,13 +182,16 @@ void Render(const Figure& f, const std::string& out_dir, PlotOutput* out) {
     Gnuplot gp("gnuplot");
     for (const auto& [terminal, path] : outputs) {
       SetTerminal(gp, terminal, f, path);
-      const bool multiplot = f.panels.size() > 1;
+      const bool by_hand = !f.row_weights.empty() || f.footer_in > 0;
+      const bool multiplot = f.panels.size() > 1 || by_hand;
       if (multiplot) {
-        gp << "set multiplot layout " << f.rows << "," << f.cols;
-        if (!f.title.empty()) gp << " title " << Quote(f.title) << " noenhanced";
+        gp << "set multiplot";
+        if (!by_hand) gp << " layout " << f.rows << "," << f.cols;
+        if (!f.title.empty()) gp << " title " << MultiLine(f.title) << " noenhanced";
         gp << "\n";
       }
-      for (const Panel& p : f.panels) DrawPanel(gp, p);
+      for (std::size_t i = 0; i < f.panels.size(); ++i)
+        DrawPanel(gp, f.panels[i], by_hand ? Placement(f, i) : "");
       if (multiplot) gp << "unset multiplot\n";
       gp << "unset output\n";
     }

@@ -45,7 +45,25 @@ struct Figure {
   int rows = 1;
   int cols = 1;
   std::vector<Panel> panels;
+  // Placed by hand instead of gnuplot's equal layout when either is set:
+  // the rows' relative heights (empty: equal), and a strip this high at the
+  // bottom for a legend set 'at screen' (FooterKey) by one of the panels.
+  std::vector<double> row_weights;
+  double footer_in = 0;
 };
+
+// A panel's legend in the figure's footer strip (Figure::footer_in), as wide
+// as the page, in at most two rows.
+inline constexpr char kFooterKey[] =
+    "set key at screen 0.5, screen 0.01 center bottom horizontal maxrows 2 noenhanced\n";
+
+// text broken at spaces into lines of about what width_in holds at kFontPt
+// ('\n' between them), for titles that would run over their panel.
+std::string Wrapped(const std::string& text, double width_in);
+
+// "set xtics STEP\n" (axis "x", "y") with a round step giving at most
+// max_tics tics over [lo, hi]; "" when the range is not finite.
+std::string TicsFor(const std::string& axis, double lo, double hi, int max_tics);
 
 // Colours by algorithm, the same in every figure.
 std::string Colour(const std::string& algorithm);
@@ -140,6 +158,9 @@ using detail::plots::CountRunsOnly;
 using detail::plots::EqualGroups;
 using detail::plots::JoinedLabel;
 using detail::plots::kFontPt;
+using detail::plots::kFooterKey;
+using detail::plots::TicsFor;
+using detail::plots::Wrapped;
 using detail::plots::kPrintMaxHeightIn;
 using detail::plots::kPrintWidthIn;
 using detail::plots::NoteEqualSeries;

@@ -27,15 +27,15 @@ std::vector<double> CentreAndHalves(const std::vector<double>& b) {
 
 std::string Title(const std::string& t) { return t.empty() ? "notitle" : "title " + Quote(t); }
 
-// The panel; its legend below it (near the plot, as wide as the page), or
-// none when key is false.
-Panel ToPanel(const MapPanel& p, bool key) {
+// The panel, its title wrapped to width_in; its legend in the figure's
+// footer, or none when key is false.
+Panel ToPanel(const MapPanel& p, bool key, double width_in) {
   const MapFrame& f = p.frame;
   Panel panel;
-  panel.setup = "set title " + MultiLine(p.title) +
+  panel.setup = "set title " + MultiLine(Wrapped(p.title, width_in)) +
                 " noenhanced\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset size ratio -1\n" +
-                (key ? "set key outside bottom center horizontal maxrows 2 noenhanced\n"
-                     : "unset key\n") +
+                (key ? kFooterKey : "unset key\n") + TicsFor("x", f.x.lo(), f.x.hi(), 8) +
+                TicsFor("y", f.y.lo(), f.y.hi(), 6) +
                 "set xrange [" + std::to_string(f.x.lo()) + ":" + std::to_string(f.x.hi()) +
                 "]\nset yrange [" + std::to_string(f.y.lo()) + ":" + std::to_string(f.y.hi()) +
                 "]\n";
@@ -76,11 +76,13 @@ std::vector<std::string> LegendOf(const MapPanel& p) {
 }
 
 // The height a panel of frame f takes at the given width: its plot at equal
-// scales (at most max_plot_in high), its title, axis labels and legend.
-double PanelHeight(const MapFrame& f, double width_in, bool key, double max_plot_in) {
+// scales (at most max_plot_in high), its title lines and axis labels.
+double PanelHeight(const MapPanel& p, double width_in, double max_plot_in) {
+  const MapFrame& f = p.frame;
   const double plot_width = width_in - 0.8;
   const double plot = std::min(max_plot_in, plot_width * f.y.Width() / std::max(1e-9, f.x.Width()));
-  return plot + 0.8 + (key ? 0.45 : 0);
+  const std::string title = Wrapped(p.title, width_in);
+  return plot + 0.55 + 0.17 * (1 + static_cast<double>(std::count(title.begin(), title.end(), '\n')));
 }
 
 bool HasLayerPoint(const MapPanel& p) {
@@ -156,27 +158,29 @@ void PlotMapFigure(const FigureText& text, const std::vector<MapPanel>& panels, 
   if (std::none_of(panels.begin(), panels.end(), HasLayerPoint)) return Skip(text, out);
   Figure f;
   f.name = text.name;
-  f.title = panels.size() > 1 ? text.title : "";
+  f.title = panels.size() > 1 ? Wrapped(text.title, kPrintWidthIn) : "";
   f.cols = std::max(1, std::min(cols, static_cast<int>(panels.size())));
   f.rows = (static_cast<int>(panels.size()) + f.cols - 1) / f.cols;
-  // A legend under a panel whose entries differ from the next one's (the
-  // last of equal ones keeps it); rows as high as their frames need.
-  std::vector<bool> keys;
-  for (std::size_t i = 0; i < panels.size(); ++i)
-    keys.push_back(i + 1 == panels.size() || LegendOf(panels[i]) != LegendOf(panels[i + 1]));
-  const double title = panels.size() > 1 ? 0.3 : 0;
-  const double max_plot = (kPrintMaxHeightIn - title) / f.rows - 1.25;
-  double height = title;
+  // One legend, in the footer, when the panels' entries are the same; else
+  // none (the caption names the layers).
+  bool same = true;
+  for (const MapPanel& p : panels) same = same && LegendOf(p) == LegendOf(panels.front());
+  f.footer_in = same ? 0.4 : 0;
+  const double width = kPrintWidthIn / f.cols;
+  const double title = f.title.empty() ? 0 : 0.25;
+  const double max_plot = (kPrintMaxHeightIn - title - f.footer_in) / f.rows - 0.9;
+  double height = title + f.footer_in;
   for (int row = 0; row < f.rows; ++row) {
     double tallest = 0;
-    for (int c = 0; c < f.cols && row * f.cols + c < static_cast<int>(panels.size()); ++c) {
-      const std::size_t i = static_cast<std::size_t>(row * f.cols + c);
-      tallest = std::max(tallest, PanelHeight(panels[i].frame, kPrintWidthIn / f.cols, keys[i], max_plot));
-    }
+    for (int c = 0; c < f.cols && row * f.cols + c < static_cast<int>(panels.size()); ++c)
+      tallest = std::max(tallest, PanelHeight(panels[static_cast<std::size_t>(row * f.cols + c)],
+                                              width, max_plot));
+    f.row_weights.push_back(tallest);
     height += tallest;
   }
   f.height_in = std::min(kPrintMaxHeightIn, height);
-  for (std::size_t i = 0; i < panels.size(); ++i) f.panels.push_back(ToPanel(panels[i], keys[i]));
+  for (std::size_t i = 0; i < panels.size(); ++i)
+    f.panels.push_back(ToPanel(panels[i], same && i + 1 == panels.size(), width));
   Render(f, out_dir, out);
 }
 

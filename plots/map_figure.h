@@ -56,8 +56,8 @@ Interval MapXBounds(const MapFrame& frame);
 Interval MapYBounds(const MapFrame& frame);
 
 // The panels in rows of cols, equal scales, as wide as the paper prints
-// them, each row as high as its frames need; a legend below a panel unless
-// the next one has the same; skipped with
+// them, each row as high as its frames need; one legend below them when
+// the panels' layers have the same titles and colours; skipped with
 // text.skip_reason when no panel has a layer with a point.
 void PlotMapFigure(const FigureText& text, const std::vector<MapPanel>& panels, int cols,
                    const std::string& out_dir, PlotOutput* out);

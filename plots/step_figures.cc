@@ -122,7 +122,7 @@ void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecor
     for (const char* var : kVars) gps = gps || HasPoint({"", GpsCorridorRows(*r, var), ""});
   // Over many steps the bounds are drawn as a filled band (lines would
   // merge at the printer's resolution), the GPS box underneath in grey.
-  f.title = text.title + ": the band from lo - truth to hi - truth; black: the truth (0)" +
+  f.title = text.title + "\nband: the box's [lo - truth, hi - truth]; black: the truth (0)" +
             (gps ? "; grey: the GPS box" : "");
   f.cols = 2;
   f.rows = static_cast<int>(groups.size());
@@ -136,10 +136,10 @@ void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecor
       p.setup = "set title " + Quote(JoinedLabel(shown_labels, groups[i]) + ": " + kVars[k]) +
                 " noenhanced\n" + "set ylabel 'error in " + kVars[k] + " (m)'\n" +
                 CorridorRange(all[k]) + (i + 1 == groups.size() ? "set xlabel 'step'\n" : "") +
-                "unset key\n" + x_range;
+                "unset key\n" + x_range + TicsFor("x", 0, std::max(1.0, last_step), 5);
       const auto& rows = corridors[k][first];
       p.series = {
-          {"using 1:2:3 with filledcurves fc rgb '#c8c8c8' fs solid 1.0 notitle",
+          {"using 1:2:3 with filledcurves fc rgb '#b4b4b4' fs solid 1.0 notitle",
            GpsCorridorRows(r, kVars[k]), ""},
           {"using 1:2:3 with filledcurves fc rgb " + colour + " fs transparent solid 0.75 notitle",
            rows, ""},
@@ -151,8 +151,29 @@ void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecor
 }
 
 namespace {
+
+// Over more steps than this a line per step merges into a band at the
+// printer's resolution: a running median is drawn instead.
+constexpr std::size_t kLongRun = 400;
+
+// The median of rows' values (column 1) over the window of steps centred on
+// each row (NaN left out), window odd.
+std::vector<std::vector<double>> RunningMedian(const std::vector<std::vector<double>>& rows,
+                                               std::size_t window) {
+  std::vector<std::vector<double>> out;
+  const std::size_t half = window / 2;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    std::vector<double> values;
+    for (std::size_t j = i >= half ? i - half : 0; j < std::min(rows.size(), i + half + 1); ++j)
+      if (!std::isnan(rows[j][1])) values.push_back(rows[j][1]);
+    out.push_back({rows[i][0], values.empty() ? kNaN : Quantile(values, 0.5)});
+  }
+  return out;
+}
+
 // One line per run of a per-step value against the step, log scale, each
-// line titled by its run and what title_extra says of it.
+// line titled by its run and what title_extra says of it; runs with equal
+// values drawn once; over long runs the running median of a 40th of them.
 void PlotStepValueFigure(const FigureText& text, const std::string& y_label,
                          const std::vector<const RunRecord*>& runs,
                          const std::function<double(const StepRecord&)>& value,
@@ -186,14 +207,25 @@ void PlotStepValueFigure(const FigureText& text, const std::string& y_label,
   std::vector<std::string> names;
   for (const RunRecord* r : drawn) names.push_back(RunLabel(*r));
   NoteEqualSeries(text.name, names, groups, "at every step", out);
+  std::size_t steps = 0;
+  for (const auto& r : rows) steps = std::max(steps, r.size());
+  const std::size_t window = steps > kLongRun ? (steps / 40) | 1 : 1;
   Panel panel;
-  panel.setup = "set title " + Quote(text.title) + " noenhanced\nset xlabel 'step'\nset ylabel " +
-                Quote(y_label) + "\nset logscale y\nset key top right noenhanced\n";
-  for (const auto& g : groups) {
+  panel.setup = "set title " +
+                Quote(text.title + (window > 1 ? ": running median over " +
+                                                     std::to_string(window) + " steps"
+                                               : "")) +
+                " noenhanced\nset xlabel 'step'\nset ylabel " + Quote(y_label) +
+                "\nset logscale y\nset key top right noenhanced\nset autoscale xfix\n";
+  // Each line its own dash, so that lines that nearly coincide stay apart.
+  for (std::size_t k = 0; k < groups.size(); ++k) {
+    const auto& g = groups[k];
     const RunRecord& r = *drawn[g.front()];
-    panel.series.push_back({"using 1:2 with lines lw 1.5 lc rgb " + Quote(Colour(r.spec.algorithm)) +
-                                " title " + Quote(JoinedLabel(names, g) + title_extra(r)),
-                            rows[g.front()], ""});
+    panel.series.push_back({"using 1:2 with lines lw 2 dt " + std::to_string(1 + k % 5) +
+                                " lc rgb " + Quote(Colour(r.spec.algorithm)) + " title " +
+                                Quote(JoinedLabel(names, g) + title_extra(r)),
+                            window > 1 ? RunningMedian(rows[g.front()], window) : rows[g.front()],
+                            ""});
   }
   RenderPanel(text.name, kPrintWidthIn, 3.6, panel, out_dir, out);
 }

@@ -29,11 +29,15 @@ Panel QuantityPanel(const Quantity& q, const std::string& x_label,
   std::vector<double> xs, ys;
   for (const auto& rows : q.rows)
     for (const auto& row : rows) xs.push_back(row[0]), ys.push_back(row[1]);
+  double y_lo = INFINITY, y_hi = -INFINITY;
+  for (double y : ys)
+    if (std::isfinite(y)) y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
   Panel p;
   p.setup = "set title " + Quote(q.title) + "\nset xlabel " + Quote(x_label) + "\nset ylabel " +
-            Quote(q.y_label) + "\nset key " + q.key + " noenhanced\n" +
+            Quote(q.y_label) + "\nset key " + q.key + " noenhanced\nset autoscale xfix\n" +
             (SpansDecades(xs) ? "set logscale x\n" : "") +
-            (SpansDecades(ys) ? "set logscale y\n" : "");
+            (SpansDecades(ys) ? "set logscale y\n"
+                              : TicsFor("y", y_lo, y_hi, 5));
   for (const auto& g : groups) {
     Series s{"using 1:2 " + styles[g.front()] + " title " + Quote(JoinedLabel(labels, g)),
              q.rows[g.front()], ""};
@@ -63,7 +67,7 @@ void PlotSweepFigure(const FigureText& text, const std::string& x_label,
   });
   Quantity area{"Mean x-y area of the newest state", "area (m^2)", "top right", {}};
   Quantity window{"Mean x-y area of the window states", "area (m^2)", "top right", {}};
-  Quantity time{"Mean time per CSP", "time (ms)", "top left", {}};
+  Quantity time{"Mean time per CSP", "time (ms)", "bottom right", {}};
   // An algorithm's colour for all its configurations; its second, third ...
   // configuration dashed and marked differently, so they stay apart.
   std::vector<std::string> labels, styles;
