@@ -56,7 +56,7 @@ Panel Boxes(const BoxPolynomialPanel& p, const Interval& x, const Interval& y,
             const std::vector<std::array<double, 4>>& segments, const std::vector<double>& truth) {
   Panel panel;
   panel.setup = "set title " + MultiLine(p.title) +
-                " noenhanced\nunset grid\nset size ratio -1\nset xlabel 'x (m)'\nset ylabel 'y (m)'\n"
+                " noenhanced\nunset grid\nset size ratio -1\nset ylabel 'y (m)'\n"
                 "set xrange " + Range(x) + "\nset yrange " + Range(y) +
                 "\nunset key\n";
   AddCoefficients(
@@ -81,7 +81,7 @@ Panel Boxes(const BoxPolynomialPanel& p, const Interval& x, const Interval& y,
 Panel Projection(const BoxPolynomialPanel& p, const Interval& x) {
   Panel panel;
   const int n = static_cast<int>(p.coefficients.size()) - 1;
-  panel.setup = "set title 'projection on x'\nunset grid\nset xlabel 'x (m)'\nset ylabel 'degree'\nset xrange " +
+  panel.setup = TicsFor("y", 0, n, 3) + "unset grid\nset xlabel 'x (m)'\nset ylabel 'degree'\nset xrange " +
                 Range(x) + "\nset yrange [-0.5:" + std::to_string(n) + ".5]\nunset key\n";
   AddCoefficients(
       p,
@@ -110,7 +110,7 @@ void PlotBoxPolynomialFigure(const FigureText& text, const std::vector<BoxPolyno
   f.cols = 2;
   const int pairs = (static_cast<int>(panels.size()) + 1) / 2;
   f.rows = 2 * pairs;
-  for (int r = 0; r < pairs; ++r) f.row_weights.insert(f.row_weights.end(), {2.5, 1.3});
+  for (int r = 0; r < pairs; ++r) f.row_weights.insert(f.row_weights.end(), {2.3, 1.5});
   f.height_in = std::min(kPrintMaxHeightIn, 0.4 + 3.8 * pairs);
   const Panel none{"unset border\nunset tics\nunset key\nunset grid\nset xrange [0:1]\n", {}};
   for (int r = 0; r < pairs; ++r) {

@@ -25,7 +25,7 @@ void PlotBoxTrackFigure(const FigureText& text,
   f.name = text.name;
   f.title = text.title;
   f.cols = static_cast<int>(panels.size());
-  f.footer_in = 0.3;
+  f.footer_in = FooterHeight({"map", "box of every step", "truth"});
   f.height_in = std::min(kPrintMaxHeightIn, 1.2 + kPrintWidthIn / f.cols);
   for (const auto& [title, run] : panels) {
     Panel panel;

@@ -50,7 +50,9 @@ void SetTerminal(Gnuplot& gp, Terminal terminal, const Figure& f, const std::str
 // size ..." in screen fractions, rows from the top below the title, the
 // footer strip left free.
 std::string Placement(const Figure& f, std::size_t i) {
-  const int lines = f.title.empty() ? 0 : 1 + static_cast<int>(std::count(f.title.begin(), f.title.end(), '\n'));
+  const std::string wrapped = Wrapped(f.title, f.width_in);
+  const int lines =
+      f.title.empty() ? 0 : 1 + static_cast<int>(std::count(wrapped.begin(), wrapped.end(), '\n'));
   const double title = lines * 0.2 / f.height_in, footer = f.footer_in / f.height_in;
   const double avail = std::max(0.1, 1 - title - footer);
   std::vector<double> w = f.row_weights;
@@ -95,8 +97,10 @@ void DrawPanel(Gnuplot& gp, const Panel& panel, const std::string& placement) {
 std::string Colour(const std::string& algorithm) { return DisplayOf(algorithm).colour; }
 
 std::string Wrapped(const std::string& text, double width_in) {
-  // A character of a sans font is about 0.6 of its size wide.
-  const std::size_t per_line = static_cast<std::size_t>(width_in * 72 / (0.6 * kFontPt));
+  // A character of the sans font is at most about 0.7 of its size wide
+  // (measured on the rendered titles); a panel's title is centred on its
+  // plot, narrower than the panel: 0.8.
+  const std::size_t per_line = static_cast<std::size_t>(width_in * 72 / (0.8 * kFontPt));
   std::string out;
   std::istringstream paragraphs(text);
   for (std::string paragraph; std::getline(paragraphs, paragraph);) {
@@ -113,6 +117,13 @@ std::string Wrapped(const std::string& text, double width_in) {
   }
   if (!out.empty()) out.pop_back();
   return out;
+}
+
+double FooterHeight(const std::vector<std::string>& titles) {
+  std::size_t longest = 0;
+  for (const std::string& t : titles) longest = std::max(longest, t.size());
+  const std::size_t rows = longest > 28 ? titles.size() : (titles.size() + 1) / 2;
+  return 0.1 + 0.16 * static_cast<double>(rows);
 }
 
 std::string TicsFor(const std::string& axis, double lo, double hi, int max_tics) {
@@ -187,7 +198,7 @@ void Render(const Figure& f, const std::string& out_dir, PlotOutput* out) {
       if (multiplot) {
         gp << "set multiplot";
         if (!by_hand) gp << " layout " << f.rows << "," << f.cols;
-        if (!f.title.empty()) gp << " title " << MultiLine(f.title) << " noenhanced";
+        if (!f.title.empty()) gp << " title " << MultiLine(Wrapped(f.title, f.width_in)) << " noenhanced";
         gp << "\n";
       }
       for (std::size_t i = 0; i < f.panels.size(); ++i)

@@ -57,6 +57,10 @@ struct Figure {
 inline constexpr char kFooterKey[] =
     "set key at screen 0.5, screen 0.01 center bottom horizontal maxrows 2 noenhanced\n";
 
+// The height of the footer strip a kFooterKey legend of these entries
+// needs: two entries a row when they are short, else one.
+double FooterHeight(const std::vector<std::string>& titles);
+
 // text broken at spaces into lines of about what width_in holds at kFontPt
 // ('\n' between them), for titles that would run over their panel.
 std::string Wrapped(const std::string& text, double width_in);
@@ -158,6 +162,7 @@ using detail::plots::CountRunsOnly;
 using detail::plots::EqualGroups;
 using detail::plots::JoinedLabel;
 using detail::plots::kFontPt;
+using detail::plots::FooterHeight;
 using detail::plots::kFooterKey;
 using detail::plots::TicsFor;
 using detail::plots::Wrapped;

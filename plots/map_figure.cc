@@ -165,7 +165,10 @@ void PlotMapFigure(const FigureText& text, const std::vector<MapPanel>& panels, 
   // none (the caption names the layers).
   bool same = true;
   for (const MapPanel& p : panels) same = same && LegendOf(p) == LegendOf(panels.front());
-  f.footer_in = same ? 0.4 : 0;
+  std::vector<std::string> entries = {"map"};
+  for (const MapLayer& l : panels.back().layers)
+    if (!l.title.empty()) entries.push_back(l.title);
+  f.footer_in = same ? FooterHeight(entries) : 0;
   const double width = kPrintWidthIn / f.cols;
   const double title = f.title.empty() ? 0 : 0.25;
   const double max_plot = (kPrintMaxHeightIn - title - f.footer_in) / f.rows - 0.9;
