@@ -172,9 +172,16 @@ std::string Paper000Tex(const std::vector<RunRecord>& runs, const FigureSet& fig
         "runs are those of the spec experiments table1 and window "
         "(specs/default.yaml).");
     for (const TextTable& t : Paper000Tables(runs)) out << PagedTable(t);
-    out << FigureTex(figures, "fig2_window", "Fig. 2: mean area and time per CSP against w");
-    out << FigureTex(figures, "fig3_corridors", "Fig. 3: interval error corridors over the lap");
-    out << FigureTex(figures, "fig4_area", "Fig. 4: x-y area over the lap");
+    out << FigureTex(figures, "fig2_window",
+                     "Fig. 2: mean area (of the newest state, of the window states) and mean "
+                     "time per CSP against w, a panel each, on log axes where the values span "
+                     "a decade");
+    out << FigureTex(figures, "fig3_corridors",
+                     "Fig. 3: interval error corridors over the lap, a band per algorithm over "
+                     "the GPS box (grey)");
+    out << FigureTex(figures, "fig4_area",
+                     "Fig. 4: x-y area over the lap, log scale; over more than 400 steps the "
+                     "running median of a 40th of them");
   }
   out << PagedTable(ComparisonTable("Paper 000: published vs measured", Paper000Comparison(runs)));
   return out.str();
@@ -225,14 +232,17 @@ std::string Thesis003Tex(const std::vector<RunRecord>& runs, const FigureSet& fi
   } else {
     out << PagedTable(tables.at(1));
     out << FigureTex(figures, "fig6_7_dead_reckoning",
-                     "Fig. 6.7: dead-reckoning boxes and their centre against the truth");
+                     "Fig. 6.7: dead-reckoning boxes (every 50th step) and their centre against "
+                     "the truth, the frame fitted to the track (wider boxes cut at its edges)");
     out << FigureTex(figures, "fig6_8_marina_tracks",
-                     "Fig. 6.8: set-membership boxes and centres against the truth, one panel "
-                     "per start (known, the 10,368 m² area, unknown)");
+                     "Fig. 6.8: set-membership boxes (every 20th step) and centres against the "
+                     "truth, one panel per start (known, the 10,368 m² area, unknown), each "
+                     "frame fitted to the track");
     out << FigureTex(figures, "fig6_9_particles",
                      "Fig. 6.9: 600 particles over the 10,368 m² prior and the filter's mean "
                      "track");
-    out << FigureTex(figures, "fig6_errors", "Centre error over time, both methods");
+    out << FigureTex(figures, "fig6_errors", "Centre error over time, both methods (log scale; over more than 400 steps "
+                     "the running median of a 40th of them)");
   }
   out << PagedTable(
       ComparisonTable("Thesis 003: published vs measured", Thesis003Comparison(runs)));
