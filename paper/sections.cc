@@ -241,7 +241,8 @@ std::string Thesis003Tex(const std::vector<RunRecord>& runs, const FigureSet& fi
     out << FigureTex(figures, "fig6_9_particles",
                      "Fig. 6.9: 600 particles over the 10,368 m² prior and the filter's mean "
                      "track");
-    out << FigureTex(figures, "fig6_errors", "Centre error over time, both methods (log scale; over more than 400 steps "
+    out << FigureTex(figures, "fig6_errors",
+                     "Centre error over time, both methods (log scale; over more than 400 steps "
                      "the running median of a 40th of them)");
   }
   out << PagedTable(

@@ -57,8 +57,8 @@ Panel Boxes(const BoxPolynomialPanel& p, const Interval& x, const Interval& y,
   Panel panel;
   panel.setup = "set title " + MultiLine(p.title) +
                 " noenhanced\nunset grid\nset size ratio -1\nset ylabel 'y (m)'\n"
-                "set xrange " + Range(x) + "\nset yrange " + Range(y) +
-                "\nunset key\n";
+                "set xrange " +
+                Range(x) + "\nset yrange " + Range(y) + "\nunset key\n";
   AddCoefficients(
       p,
       [](const Box& b, int) {
@@ -71,9 +71,9 @@ Panel Boxes(const BoxPolynomialPanel& p, const Interval& x, const Interval& y,
   for (const auto& [x0, y0, x1, y1] : segments) lines.rows.push_back({x0, y0, x1, y1});
   panel.series.push_back(std::move(lines));
   if (truth.size() >= 2)
-    panel.series.push_back(
-        {"using 1:2 with points pt 2 ps 1.5 lw 2 lc rgb '#d62728' notitle",
-         {{truth[0], truth[1]}}, ""});
+    panel.series.push_back({"using 1:2 with points pt 2 ps 1.5 lw 2 lc rgb '#d62728' notitle",
+                            {{truth[0], truth[1]}},
+                            ""});
   return panel;
 }
 
@@ -81,8 +81,9 @@ Panel Boxes(const BoxPolynomialPanel& p, const Interval& x, const Interval& y,
 Panel Projection(const BoxPolynomialPanel& p, const Interval& x) {
   Panel panel;
   const int n = static_cast<int>(p.coefficients.size()) - 1;
-  panel.setup = TicsFor("y", 0, n, 3) + "unset grid\nset xlabel 'x (m)'\nset ylabel 'degree'\nset xrange " +
-                Range(x) + "\nset yrange [-0.5:" + std::to_string(n) + ".5]\nunset key\n";
+  panel.setup = TicsFor("y", 0, n, 3) +
+                "unset grid\nset xlabel 'x (m)'\nset ylabel 'degree'\nset xrange " + Range(x) +
+                "\nset yrange [-0.5:" + std::to_string(n) + ".5]\nunset key\n";
   AddCoefficients(
       p,
       [](const Box& b, int k) {
@@ -103,8 +104,9 @@ void PlotBoxPolynomialFigure(const FigureText& text, const std::vector<BoxPolyno
   if (panels.empty()) return Skip(text, out);
   Figure f;
   f.name = text.name;
-  f.title = Wrapped(text.title + "; framed red: the coefficient of degree n - q; red cross: the truth",
-                    kPrintWidthIn);
+  f.title =
+      Wrapped(text.title + "; framed red: the coefficient of degree n - q; red cross: the truth",
+              kPrintWidthIn);
   // Two panels a row, each's boxes above its projection (a square plot,
   // then a flat one), so that the figure prints at the page's width.
   f.cols = 2;

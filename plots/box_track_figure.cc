@@ -32,9 +32,10 @@ void PlotBoxTrackFigure(const FigureText& text,
     const bool last = run == panels.back().second;
     panel.setup = "set title " + MultiLine(Wrapped(title, kPrintWidthIn / f.cols)) +
                   " noenhanced\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset size ratio -1\n"
-                  "set xrange [" + std::to_string(x.lo()) + ":" + std::to_string(x.hi()) +
-                  "]\nset yrange [" + std::to_string(y.lo()) + ":" + std::to_string(y.hi()) +
-                  "]\n" + (last ? kFooterKey : "unset key\n");
+                  "set xrange [" +
+                  std::to_string(x.lo()) + ":" + std::to_string(x.hi()) + "]\nset yrange [" +
+                  std::to_string(y.lo()) + ":" + std::to_string(y.hi()) + "]\n" +
+                  (last ? kFooterKey : "unset key\n");
     Series map = MapSeries(map_points);
     if (HasPoint(map)) panel.series.push_back(std::move(map));
     Series boxes = BoxesSeries(*run, 1, "box of every step");

@@ -16,7 +16,8 @@ bool SameValue(double a, double b) {
   return a == b || std::fabs(a - b) <= 1e-9 * std::max(std::fabs(a), std::fabs(b));
 }
 
-bool SameRows(const std::vector<std::vector<double>>& a, const std::vector<std::vector<double>>& b) {
+bool SameRows(const std::vector<std::vector<double>>& a,
+              const std::vector<std::vector<double>>& b) {
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i) {
     if (a[i].size() != b[i].size()) return false;
@@ -39,9 +40,8 @@ std::vector<std::vector<std::size_t>> EqualGroups(
     const std::vector<std::vector<std::vector<double>>>& rows) {
   std::vector<std::vector<std::size_t>> groups;
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    auto same = std::find_if(groups.begin(), groups.end(), [&](const auto& g) {
-      return SameRows(rows[g.front()], rows[i]);
-    });
+    auto same = std::find_if(groups.begin(), groups.end(),
+                             [&](const auto& g) { return SameRows(rows[g.front()], rows[i]); });
     if (same == groups.end())
       groups.push_back({i});
     else
@@ -53,13 +53,14 @@ std::vector<std::vector<std::size_t>> EqualGroups(
 std::string JoinedLabel(const std::vector<std::string>& labels,
                         const std::vector<std::size_t>& group) {
   const std::string suffix = Suffix(labels.at(group.front()));
-  const bool shared = !suffix.empty() && std::all_of(group.begin(), group.end(), [&](std::size_t i) {
-    return Suffix(labels.at(i)) == suffix;
-  });
+  const bool shared =
+      !suffix.empty() && std::all_of(group.begin(), group.end(),
+                                     [&](std::size_t i) { return Suffix(labels.at(i)) == suffix; });
   std::string out;
   for (std::size_t i : group) {
     const std::string& label = labels.at(i);
-    out += (out.empty() ? "" : " = ") + (shared ? label.substr(0, label.size() - suffix.size()) : label);
+    out += (out.empty() ? "" : " = ") +
+           (shared ? label.substr(0, label.size() - suffix.size()) : label);
   }
   return out + (shared ? suffix : "");
 }
@@ -69,9 +70,8 @@ void NoteEqualSeries(const std::string& figure, const std::vector<std::string>& 
                      PlotOutput* out) {
   for (const auto& g : groups) {
     if (g.size() < 2) continue;
-    out->messages.push_back(figure + ": note: " + JoinedLabel(labels, g) +
-                            " draw the same values" + (where.empty() ? "" : " (" + where + ")") +
-                            " and are drawn once");
+    out->messages.push_back(figure + ": note: " + JoinedLabel(labels, g) + " draw the same values" +
+                            (where.empty() ? "" : " (" + where + ")") + " and are drawn once");
   }
 }
 

@@ -198,7 +198,8 @@ void Render(const Figure& f, const std::string& out_dir, PlotOutput* out) {
       if (multiplot) {
         gp << "set multiplot";
         if (!by_hand) gp << " layout " << f.rows << "," << f.cols;
-        if (!f.title.empty()) gp << " title " << MultiLine(Wrapped(f.title, f.width_in)) << " noenhanced";
+        if (!f.title.empty())
+          gp << " title " << MultiLine(Wrapped(f.title, f.width_in)) << " noenhanced";
         gp << "\n";
       }
       for (std::size_t i = 0; i < f.panels.size(); ++i)

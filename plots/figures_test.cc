@@ -128,8 +128,7 @@ TEST(FiguresTest, EqualSeriesAreGroupedAndDecadesDetected) {
       {{1, 2}, {2, nan}}, {{1, 3}, {2, nan}}, {{1, 2 + 1e-12}, {2, nan}}, {{1, 2}}};
   EXPECT_EQ(EqualGroups(rows), (std::vector<std::vector<std::size_t>>{{0, 2}, {1}, {3}}));
   EXPECT_EQ(JoinedLabel({"hc4 (seed 1)", "x", "bc4 (seed 1)"}, {0, 2}), "hc4 = bc4 (seed 1)");
-  EXPECT_EQ(JoinedLabel({"hc4 (seed 1)", "bc4 (seed 2)"}, {0, 1}),
-            "hc4 (seed 1) = bc4 (seed 2)");
+  EXPECT_EQ(JoinedLabel({"hc4 (seed 1)", "bc4 (seed 2)"}, {0, 1}), "hc4 (seed 1) = bc4 (seed 2)");
   EXPECT_TRUE(SpansDecades({1, 2, 5, 200}));
   EXPECT_FALSE(SpansDecades({16, 21}));
   EXPECT_FALSE(SpansDecades({0, 1, 200}));  // a log axis cannot draw 0

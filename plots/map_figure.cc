@@ -35,10 +35,9 @@ Panel ToPanel(const MapPanel& p, bool key, double width_in) {
   panel.setup = "set title " + MultiLine(Wrapped(p.title, width_in)) +
                 " noenhanced\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset size ratio -1\n" +
                 (key ? kFooterKey : "unset key\n") + TicsFor("x", f.x.lo(), f.x.hi(), 8) +
-                TicsFor("y", f.y.lo(), f.y.hi(), 6) +
-                "set xrange [" + std::to_string(f.x.lo()) + ":" + std::to_string(f.x.hi()) +
-                "]\nset yrange [" + std::to_string(f.y.lo()) + ":" + std::to_string(f.y.hi()) +
-                "]\n";
+                TicsFor("y", f.y.lo(), f.y.hi(), 6) + "set xrange [" + std::to_string(f.x.lo()) +
+                ":" + std::to_string(f.x.hi()) + "]\nset yrange [" + std::to_string(f.y.lo()) +
+                ":" + std::to_string(f.y.hi()) + "]\n";
   Series walls{"using 1:2:3:4 with boxxyerror fs solid 1.0 noborder lc rgb '#c8c8c8' title 'map'",
                {}, ""};
   for (const std::vector<double>& c : WallCells(f, kMaxWallCells))
@@ -82,7 +81,8 @@ double PanelHeight(const MapPanel& p, double width_in, double max_plot_in) {
   const double plot_width = width_in - 0.8;
   const double plot = std::min(max_plot_in, plot_width * f.y.Width() / std::max(1e-9, f.x.Width()));
   const std::string title = Wrapped(p.title, width_in);
-  return plot + 0.55 + 0.17 * (1 + static_cast<double>(std::count(title.begin(), title.end(), '\n')));
+  return plot + 0.55 +
+         0.17 * (1 + static_cast<double>(std::count(title.begin(), title.end(), '\n')));
 }
 
 bool HasLayerPoint(const MapPanel& p) {

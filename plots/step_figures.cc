@@ -200,8 +200,10 @@ void PlotStepValueFigure(const FigureText& text, const std::string& y_label,
       auto same = std::find_if(groups.begin() + before, groups.end(), [&](const auto& g) {
         return title_extra(*drawn[g.front()]) == title_extra(*drawn[i]);
       });
-      if (same == groups.end()) groups.push_back({i});
-      else same->push_back(i);
+      if (same == groups.end())
+        groups.push_back({i});
+      else
+        same->push_back(i);
     }
   }
   std::vector<std::string> names;
@@ -211,12 +213,12 @@ void PlotStepValueFigure(const FigureText& text, const std::string& y_label,
   for (const auto& r : rows) steps = std::max(steps, r.size());
   const std::size_t window = steps > kLongRun ? (steps / 40) | 1 : 1;
   Panel panel;
-  panel.setup = "set title " +
-                Quote(text.title + (window > 1 ? ": running median over " +
-                                                     std::to_string(window) + " steps"
-                                               : "")) +
-                " noenhanced\nset xlabel 'step'\nset ylabel " + Quote(y_label) +
-                "\nset logscale y\nset key top right noenhanced\nset autoscale xfix\n";
+  panel.setup =
+      "set title " +
+      Quote(text.title +
+            (window > 1 ? ": running median over " + std::to_string(window) + " steps" : "")) +
+      " noenhanced\nset xlabel 'step'\nset ylabel " + Quote(y_label) +
+      "\nset logscale y\nset key top right noenhanced\nset autoscale xfix\n";
   // Each line its own dash, so that lines that nearly coincide stay apart.
   for (std::size_t k = 0; k < groups.size(); ++k) {
     const auto& g = groups[k];

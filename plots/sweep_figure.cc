@@ -36,8 +36,7 @@ Panel QuantityPanel(const Quantity& q, const std::string& x_label,
   p.setup = "set title " + Quote(q.title) + "\nset xlabel " + Quote(x_label) + "\nset ylabel " +
             Quote(q.y_label) + "\nset key " + q.key + " noenhanced\nset autoscale xfix\n" +
             (SpansDecades(xs) ? "set logscale x\n" : "") +
-            (SpansDecades(ys) ? "set logscale y\n"
-                              : TicsFor("y", y_lo, y_hi, 5));
+            (SpansDecades(ys) ? "set logscale y\n" : TicsFor("y", y_lo, y_hi, 5));
   for (const auto& g : groups) {
     Series s{"using 1:2 " + styles[g.front()] + " title " + Quote(JoinedLabel(labels, g)),
              q.rows[g.front()], ""};

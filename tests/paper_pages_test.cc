@@ -9,12 +9,11 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 #include <regex>
 #include <string>
 #include <vector>
-
-#include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 
 #include "tests/cli_helpers.h"
 
@@ -91,31 +90,31 @@ class PaperPagesTest : public ::testing::Test {
     // and areas of equal runs (hc4, bc3 and bc4 agree on this track), a
     // window sweep over a decade, box polynomials, accumulators, the city
     // and a short marina drive.
-    const std::string spec = WriteFile(
-        "paper_pages.yaml",
-        "name: paper-pages\n"
-        "seeds: [1]\n"
-        "experiments:\n"
-        "  - name: table1\n"
-        "    algorithms: [hc4, bc3, bc4]\n"
-        "    problems: [{name: car-track, params: {w: 5, steps: 60}}]\n"
-        "  - name: window\n"
-        "    algorithms: [hc4, {name: hc4, params: {carry: none}}]\n"
-        "    problems: [{name: car-track, params: {w: [1, 4, 20], steps: 30}}]\n"
-        "  - name: fig5_2\n"
-        "    algorithms: [{name: polynomial, params: {approximation: c3, p: [1, 10]}}]\n"
-        "    problems: [{name: line-intersection, params: {lines: 20, outliers: 7}}]\n"
-        "  - name: lines-accumulator\n"
-        "    algorithms: [accumulator]\n"
-        "    problems: [{name: line-intersection, params: {lines: 20, outliers: 7}}]\n"
-        "  - name: city-roads\n"
-        "    algorithms: [hc4]\n"
-        "    problems: [{name: city-roads, params: {steps: 40}}, "
-        "{name: city-roads, params: {roads: false, steps: 40}}]\n"
-        "  - name: marina-drive\n"
-        "    algorithms: [{name: q-relaxed, params: {mode: pave, epsilon: 2}}, "
-        "{name: particle-filter, params: {inject: 0}}]\n"
-        "    problems: [{name: marina-sonar, params: {start: known, steps: 60}}]\n");
+    const std::string spec =
+        WriteFile("paper_pages.yaml",
+                  "name: paper-pages\n"
+                  "seeds: [1]\n"
+                  "experiments:\n"
+                  "  - name: table1\n"
+                  "    algorithms: [hc4, bc3, bc4]\n"
+                  "    problems: [{name: car-track, params: {w: 5, steps: 60}}]\n"
+                  "  - name: window\n"
+                  "    algorithms: [hc4, {name: hc4, params: {carry: none}}]\n"
+                  "    problems: [{name: car-track, params: {w: [1, 4, 20], steps: 30}}]\n"
+                  "  - name: fig5_2\n"
+                  "    algorithms: [{name: polynomial, params: {approximation: c3, p: [1, 10]}}]\n"
+                  "    problems: [{name: line-intersection, params: {lines: 20, outliers: 7}}]\n"
+                  "  - name: lines-accumulator\n"
+                  "    algorithms: [accumulator]\n"
+                  "    problems: [{name: line-intersection, params: {lines: 20, outliers: 7}}]\n"
+                  "  - name: city-roads\n"
+                  "    algorithms: [hc4]\n"
+                  "    problems: [{name: city-roads, params: {steps: 40}}, "
+                  "{name: city-roads, params: {roads: false, steps: 40}}]\n"
+                  "  - name: marina-drive\n"
+                  "    algorithms: [{name: q-relaxed, params: {mode: pave, epsilon: 2}}, "
+                  "{name: particle-filter, params: {inject: 0}}]\n"
+                  "    problems: [{name: marina-sonar, params: {start: known, steps: 60}}]\n");
     run_ = Icpbench("run " + spec + " --out " + dir_ + " --jobs 2");
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
@@ -153,7 +152,8 @@ TEST_F(PaperPagesTest, FiguresPrintAtTheirSizeAndNoPageIsBlank) {
   }
 
   // Every page of the paper holds something.
-  const std::vector<std::string> pages = Render(paper_dir + "/icpbench.pdf", (pngs / "page").string(), 40);
+  const std::vector<std::string> pages =
+      Render(paper_dir + "/icpbench.pdf", (pngs / "page").string(), 40);
   ASSERT_GE(pages.size(), 5u);
   for (const std::string& page : pages)
     EXPECT_GE(Share(page, false), kMinPageInk) << page << " is empty or near blank";
