@@ -92,11 +92,19 @@ void PlotSweepFigure(const FigureText& text, const std::string& x_label,
   std::vector<const Quantity*> shown = {&area};
   if (window_area) shown.push_back(&window);
   shown.push_back(&time);
+  // Each group of equal lines noted once, with the panels it is equal in.
+  std::vector<std::pair<std::vector<std::size_t>, std::string>> equal;
   for (const Quantity* q : shown) {
     const std::vector<std::vector<std::size_t>> groups = EqualGroups(q->rows);
-    NoteEqualSeries(text.name, labels, groups, "in the panel '" + q->title + "'", out);
+    for (const auto& g : groups) {
+      if (g.size() < 2) continue;
+      auto same = std::find_if(equal.begin(), equal.end(), [&](const auto& e) { return e.first == g; });
+      if (same == equal.end()) equal.push_back({g, "in '" + q->title + "'"});
+      else same->second += ", '" + q->title + "'";
+    }
     f.panels.push_back(QuantityPanel(*q, x_label, labels, styles, groups));
   }
+  for (const auto& [group, where] : equal) NoteEqualSeries(text.name, labels, {group}, where, out);
   f.rows = static_cast<int>(f.panels.size());
   f.height_in = 0.3 + 2.3 * f.rows;
   Render(f, out_dir, out);
