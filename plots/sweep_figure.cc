@@ -98,9 +98,12 @@ void PlotSweepFigure(const FigureText& text, const std::string& x_label,
     const std::vector<std::vector<std::size_t>> groups = EqualGroups(q->rows);
     for (const auto& g : groups) {
       if (g.size() < 2) continue;
-      auto same = std::find_if(equal.begin(), equal.end(), [&](const auto& e) { return e.first == g; });
-      if (same == equal.end()) equal.push_back({g, "in '" + q->title + "'"});
-      else same->second += ", '" + q->title + "'";
+      auto same =
+          std::find_if(equal.begin(), equal.end(), [&](const auto& e) { return e.first == g; });
+      if (same == equal.end())
+        equal.push_back({g, "in '" + q->title + "'"});
+      else
+        same->second += ", '" + q->title + "'";
     }
     f.panels.push_back(QuantityPanel(*q, x_label, labels, styles, groups));
   }
