@@ -46,11 +46,15 @@ void SetTerminal(Gnuplot& gp, Terminal terminal, const Figure& f, const std::str
   gp << "set output " << Quote(path) << "\n";
 }
 
+// A figure's title is centred on the whole figure, wider than a panel's
+// plot, which Wrapped assumes.
+constexpr double kTitleWidth = 8.0 / 7.0;
+
 // Where panel i of a figure placed by hand goes: "set origin ..., set
 // size ..." in screen fractions, rows from the top below the title, the
 // footer strip left free.
 std::string Placement(const Figure& f, std::size_t i) {
-  const std::string wrapped = Wrapped(f.title, f.width_in);
+  const std::string wrapped = Wrapped(f.title, kTitleWidth * f.width_in);
   const int lines =
       f.title.empty() ? 0 : 1 + static_cast<int>(std::count(wrapped.begin(), wrapped.end(), '\n'));
   const double title = lines * 0.2 / f.height_in, footer = f.footer_in / f.height_in;
@@ -199,7 +203,7 @@ void Render(const Figure& f, const std::string& out_dir, PlotOutput* out) {
         gp << "set multiplot";
         if (!by_hand) gp << " layout " << f.rows << "," << f.cols;
         if (!f.title.empty())
-          gp << " title " << MultiLine(Wrapped(f.title, f.width_in)) << " noenhanced";
+          gp << " title " << MultiLine(Wrapped(f.title, kTitleWidth * f.width_in)) << " noenhanced";
         gp << "\n";
       }
       for (std::size_t i = 0; i < f.panels.size(); ++i)
