@@ -30,13 +30,20 @@ bool HasRunOf(const std::vector<RunRecord>& runs, bool (*of)(const std::string& 
                      [&](const RunRecord& r) { return of(ExperimentOf(r)); });
 }
 
-// A figure drawn from the store, or why it is not.
+// A figure drawn from the store, or why it is not. The figures are drawn at
+// the size the page prints them (plots/figures_internal.h, kPrintWidthIn and
+// kPrintMaxHeightIn), so that their 8-pt text prints at 8 pt; the caption
+// adds what the drawing noted ("NAME: note: hc4 = bc4 draw the same values
+// ... and are drawn once").
 std::string FigureTex(const FigureSet& figures, const std::string& name,
                       const std::string& caption) {
   if (std::filesystem::is_regular_file(figures.dir + "/" + name + ".pdf")) {
-    return "\\begin{figure}[htbp]\n\\centering\n\\includegraphics[width=\\linewidth,height=0.42"
+    std::string notes;
+    for (const std::string& m : figures.skipped)
+      if (m.rfind(name + ": note: ", 0) == 0) notes += "; " + m.substr(name.size() + 8);
+    return "\\begin{figure}[htbp]\n\\centering\n\\includegraphics[width=\\linewidth,height=0.75"
            "\\textheight,keepaspectratio]{figures/" +
-           name + ".pdf}\n\\caption{" + TexEscape(caption + " (" + name + ")") +
+           name + ".pdf}\n\\caption{" + TexEscape(caption + notes + " (" + name + ")") +
            "}\n\\end{figure}\n\n";
   }
   std::string why = "no figure was written";
@@ -178,9 +185,16 @@ std::string Paper000Tex(const std::vector<RunRecord>& runs, const std::vector<Co
   out << ClaimsTex("Paper 000: published vs measured", rows);
   if (has_runs) {
     out << "\\subsection{Figures}\n";
-    out << FigureTex(figures, "fig2_window", "Fig. 2: mean area and time per CSP against w");
-    out << FigureTex(figures, "fig3_corridors", "Fig. 3: interval error corridors over the lap");
-    out << FigureTex(figures, "fig4_area", "Fig. 4: x-y area over the lap");
+    out << FigureTex(figures, "fig2_window",
+                     "Fig. 2: mean area (of the newest state, of the window states) and mean "
+                     "time per CSP against w, a panel each, on log axes where the values span "
+                     "a decade");
+    out << FigureTex(figures, "fig3_corridors",
+                     "Fig. 3: interval error corridors over the lap, a band per algorithm over "
+                     "the GPS box (grey)");
+    out << FigureTex(figures, "fig4_area",
+                     "Fig. 4: x-y area over the lap, log scale; over more than 400 steps the "
+                     "running median of a 40th of them");
   }
   out << "\\subsection{Discussion}\n" << DiscussionTex(rows);
   return out.str();
@@ -241,14 +255,18 @@ std::string Thesis003Tex(const std::vector<RunRecord>& runs,
                      "Fig. 4.17: dead-reckoning boxes (a) against the boxes on the roads (b)");
   if (marina) {
     out << FigureTex(figures, "fig6_7_dead_reckoning",
-                     "Fig. 6.7: dead-reckoning boxes and their centre against the truth");
+                     "Fig. 6.7: dead-reckoning boxes (every 50th step) and their centre against "
+                     "the truth, the frame fitted to the track (wider boxes cut at its edges)");
     out << FigureTex(figures, "fig6_8_marina_tracks",
-                     "Fig. 6.8: set-membership boxes and centres against the truth, one panel "
-                     "per start (known, the 10,368 m² area, unknown)");
+                     "Fig. 6.8: set-membership boxes (every 20th step) and centres against the "
+                     "truth, one panel per start (known, the 10,368 m² area, unknown), each "
+                     "frame fitted to the track");
     out << FigureTex(figures, "fig6_9_particles",
                      "Fig. 6.9: 600 particles over the 10,368 m² prior and the filter's mean "
                      "track");
-    out << FigureTex(figures, "fig6_errors", "Centre error over time, both methods");
+    out << FigureTex(figures, "fig6_errors",
+                     "Centre error over time, both methods (log scale; over more than 400 steps "
+                     "the running median of a 40th of them)");
   }
   out << "\\subsection{Discussion}\n" << DiscussionTex(rows);
   return out.str();

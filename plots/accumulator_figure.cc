@@ -129,7 +129,7 @@ void PlotAccumulatorFigure(const FigureText& text, const cv::Mat& counts, const 
   }
   Panel panel;
   panel.setup = data.str() + "set title " + MultiLine(text.title) + " noenhanced\nunset grid\n" +
-                "set xlabel 'x'\nset ylabel 'y'\n" +
+                "set xlabel 'x (m)'\nset ylabel 'y (m)'\n" +
                 (side <= kMaxEqualScales * std::min(range_x.Width(), range_y.Width())
                      ? "set size ratio -1\n"
                      : "set size square\n") +
@@ -162,7 +162,7 @@ void PlotAccumulatorFigure(const FigureText& text, const cv::Mat& counts, const 
     for (const auto& [px, py] : m.points) s.rows.push_back({px, py});
     if (HasPoint(s)) panel.series.push_back(std::move(s));
   }
-  RenderPanel(text.name, 7, 6, panel, out_dir, out);
+  RenderPanel(text.name, kPrintWidthIn, 5.4, panel, out_dir, out);
 }
 
 }  // namespace icp

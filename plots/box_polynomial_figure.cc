@@ -28,7 +28,7 @@ constexpr char kGreyBoxes[] =
     "using 1:2:3:4:5 with boxxyerror fs solid 1.0 noborder lc rgb variable notitle";
 constexpr char kWhiteBox[] =
     "using 1:2:3:4 with boxxyerror fs solid 1.0 border lc rgb '#d62728' lw 1.5 lc rgb 'white' "
-    "title 'coefficient n - q'";
+    "notitle";
 
 // The coefficients drawn as boxes {x, y, half width, half height} of
 // row_of(coefficient k, k): the grey ones, then the white one.
@@ -56,9 +56,9 @@ Panel Boxes(const BoxPolynomialPanel& p, const Interval& x, const Interval& y,
             const std::vector<std::array<double, 4>>& segments, const std::vector<double>& truth) {
   Panel panel;
   panel.setup = "set title " + MultiLine(p.title) +
-                " noenhanced\nunset grid\nset size ratio -1\nset xlabel 'x'\nset ylabel 'y'\n"
-                "set xrange " + Range(x) + "\nset yrange " + Range(y) +
-                "\nset key outside bottom center horizontal noenhanced\n";
+                " noenhanced\nunset grid\nset size ratio -1\nset ylabel 'y (m)'\n"
+                "set xrange " +
+                Range(x) + "\nset yrange " + Range(y) + "\nunset key\n";
   AddCoefficients(
       p,
       [](const Box& b, int) {
@@ -71,9 +71,9 @@ Panel Boxes(const BoxPolynomialPanel& p, const Interval& x, const Interval& y,
   for (const auto& [x0, y0, x1, y1] : segments) lines.rows.push_back({x0, y0, x1, y1});
   panel.series.push_back(std::move(lines));
   if (truth.size() >= 2)
-    panel.series.push_back(
-        {"using 1:2 with points pt 2 ps 1.5 lw 2 lc rgb '#d62728' title 'truth'",
-         {{truth[0], truth[1]}}, ""});
+    panel.series.push_back({"using 1:2 with points pt 2 ps 1.5 lw 2 lc rgb '#d62728' notitle",
+                            {{truth[0], truth[1]}},
+                            ""});
   return panel;
 }
 
@@ -81,10 +81,9 @@ Panel Boxes(const BoxPolynomialPanel& p, const Interval& x, const Interval& y,
 Panel Projection(const BoxPolynomialPanel& p, const Interval& x) {
   Panel panel;
   const int n = static_cast<int>(p.coefficients.size()) - 1;
-  panel.setup = "set title " + MultiLine(p.title.substr(0, p.title.find('\n')) +
-                                         ": projection on x") +
-                " noenhanced\nunset grid\nset xlabel 'x'\nset ylabel 'degree'\nset xrange " +
-                Range(x) + "\nset yrange [-0.5:" + std::to_string(n) + ".5]\nunset key\n";
+  panel.setup = TicsFor("y", 0, n, 3) +
+                "unset grid\nset xlabel 'x (m)'\nset ylabel 'degree'\nset xrange " + Range(x) +
+                "\nset yrange [-0.5:" + std::to_string(n) + ".5]\nunset key\n";
   AddCoefficients(
       p,
       [](const Box& b, int k) {
@@ -105,13 +104,27 @@ void PlotBoxPolynomialFigure(const FigureText& text, const std::vector<BoxPolyno
   if (panels.empty()) return Skip(text, out);
   Figure f;
   f.name = text.name;
-  f.title = text.title;
-  f.rows = 2;
-  f.cols = static_cast<int>(panels.size());
-  f.width_in = 4.2 * f.cols;
-  f.height_in = 9;
-  for (const BoxPolynomialPanel& p : panels) f.panels.push_back(Boxes(p, x, y, segments, truth));
-  for (const BoxPolynomialPanel& p : panels) f.panels.push_back(Projection(p, x));
+  f.title =
+      Wrapped(text.title + "; framed red: the coefficient of degree n - q; red cross: the truth",
+              kPrintWidthIn);
+  // Two panels a row, each's boxes above its projection (a square plot,
+  // then a flat one), so that the figure prints at the page's width.
+  f.cols = 2;
+  const int pairs = (static_cast<int>(panels.size()) + 1) / 2;
+  f.rows = 2 * pairs;
+  for (int r = 0; r < pairs; ++r) f.row_weights.insert(f.row_weights.end(), {2.3, 1.5});
+  f.height_in = std::min(kPrintMaxHeightIn, 0.4 + 3.8 * pairs);
+  const Panel none{"unset border\nunset tics\nunset key\nunset grid\nset xrange [0:1]\n", {}};
+  for (int r = 0; r < pairs; ++r) {
+    for (int c = 0; c < 2; ++c) {
+      const std::size_t i = static_cast<std::size_t>(2 * r + c);
+      f.panels.push_back(i < panels.size() ? Boxes(panels[i], x, y, segments, truth) : none);
+    }
+    for (int c = 0; c < 2; ++c) {
+      const std::size_t i = static_cast<std::size_t>(2 * r + c);
+      f.panels.push_back(i < panels.size() ? Projection(panels[i], x) : none);
+    }
+  }
   Render(f, out_dir, out);
 }
 

@@ -23,7 +23,7 @@ struct BoxPolynomialPanel {
   int white = -1;                  // the degree drawn white; -1: none
 };
 
-// The figure: one column per panel, the boxes above their projection, over
+// The figure: two panels a row, each one's boxes above its projection, over
 // the search rectangle x by y; segments {x0, y0, x1, y1} (the lines) and
 // the truth (when given) on top of the boxes. Empty coefficients are not
 // drawn. Skipped (text.skip_reason) without panels.

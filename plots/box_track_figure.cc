@@ -1,6 +1,7 @@
 // Runs side by side on their map, each panel one run's boxes at every step
 // over the truth: how wide a set estimate grows along a route (thesis 003
 // Fig. 4.17: dead reckoning, then the same with the road map).
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,15 +25,17 @@ void PlotBoxTrackFigure(const FigureText& text,
   f.name = text.name;
   f.title = text.title;
   f.cols = static_cast<int>(panels.size());
-  f.width_in = 6 * f.cols;
-  f.height_in = 6.6;
+  f.footer_in = FooterHeight({"map", "box of every step", "truth"});
+  f.height_in = std::min(kPrintMaxHeightIn, 1.2 + kPrintWidthIn / f.cols);
   for (const auto& [title, run] : panels) {
     Panel panel;
-    panel.setup = "set title " + MultiLine(title) +
+    const bool last = run == panels.back().second;
+    panel.setup = "set title " + MultiLine(Wrapped(title, kPrintWidthIn / f.cols)) +
                   " noenhanced\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset size ratio -1\n"
-                  "set xrange [" + std::to_string(x.lo()) + ":" + std::to_string(x.hi()) +
-                  "]\nset yrange [" + std::to_string(y.lo()) + ":" + std::to_string(y.hi()) +
-                  "]\nset key outside bottom center horizontal noenhanced\n";
+                  "set xrange [" +
+                  std::to_string(x.lo()) + ":" + std::to_string(x.hi()) + "]\nset yrange [" +
+                  std::to_string(y.lo()) + ":" + std::to_string(y.hi()) + "]\n" +
+                  (last ? kFooterKey : "unset key\n");
     Series map = MapSeries(map_points);
     if (HasPoint(map)) panel.series.push_back(std::move(map));
     Series boxes = BoxesSeries(*run, 1, "box of every step");

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iterator>
 #include <set>
+#include <sstream>
 #include <utility>
 
 #include "plots/figures_internal.h"
@@ -18,7 +19,10 @@ namespace icp::detail::plots {
 
 namespace {
 
-constexpr double kPixelsPerInch = 110;  // PNG size from the PDF size in inches
+// PNG size from the PDF size in inches; its fonts and lines scaled so that
+// it looks as the PDF does (cairo's PNG takes a point for a pixel).
+constexpr double kPixelsPerInch = 150;
+constexpr double kPngScale = kPixelsPerInch / 72;
 
 enum class Terminal { kPng, kPdf };
 
@@ -33,16 +37,45 @@ void SetTerminal(Gnuplot& gp, Terminal terminal, const Figure& f, const std::str
   gp << "set encoding utf8\n";
   if (terminal == Terminal::kPng) {
     gp << "set terminal pngcairo enhanced size " << static_cast<int>(f.width_in * kPixelsPerInch)
-       << "," << static_cast<int>(f.height_in * kPixelsPerInch) << " font 'Sans,10'\n";
+       << "," << static_cast<int>(f.height_in * kPixelsPerInch) << " font 'Sans,"
+       << std::lround(kFontPt * kPngScale) << "' linewidth " << kPngScale / 2 << "\n";
   } else {
     gp << "set terminal pdfcairo enhanced size " << f.width_in << "in," << f.height_in
-       << "in font 'Sans,8'\n";
+       << "in font 'Sans," << kFontPt << "'\n";
   }
   gp << "set output " << Quote(path) << "\n";
 }
 
-void DrawPanel(Gnuplot& gp, const Panel& panel) {
-  gp << "reset\nset encoding utf8\nset grid\n" << panel.setup << "\n";
+// A figure's title is centred on the whole figure, wider than a panel's
+// plot, which Wrapped assumes.
+constexpr double kTitleWidth = 8.0 / 7.0;
+
+// Where panel i of a figure placed by hand goes: "set origin ..., set
+// size ..." in screen fractions, rows from the top below the title, the
+// footer strip left free.
+std::string Placement(const Figure& f, std::size_t i) {
+  const std::string wrapped = Wrapped(f.title, kTitleWidth * f.width_in);
+  const int lines =
+      f.title.empty() ? 0 : 1 + static_cast<int>(std::count(wrapped.begin(), wrapped.end(), '\n'));
+  const double title = lines * 0.2 / f.height_in, footer = f.footer_in / f.height_in;
+  const double avail = std::max(0.1, 1 - title - footer);
+  std::vector<double> w = f.row_weights;
+  w.resize(static_cast<std::size_t>(f.rows), 1.0);
+  double total = 0;
+  for (double x : w) total += x;
+  const std::size_t row = i / static_cast<std::size_t>(f.cols), col = i % f.cols;
+  double above = 0;
+  for (std::size_t r = 0; r < row; ++r) above += w[r];
+  const double h = w[row] / total * avail;
+  const double y = 1 - title - above / total * avail - h;
+  std::ostringstream out;
+  out << "set origin " << static_cast<double>(col) / f.cols << "," << y << "\nset size "
+      << 1.0 / f.cols << "," << h << "\n";
+  return out.str();
+}
+
+void DrawPanel(Gnuplot& gp, const Panel& panel, const std::string& placement) {
+  gp << "reset\nset encoding utf8\nset grid\n" << placement << panel.setup << "\n";
   std::vector<const Series*> drawn;
   for (const Series& s : panel.series) {
     if (HasPoint(s)) drawn.push_back(&s);
@@ -66,6 +99,50 @@ void DrawPanel(Gnuplot& gp, const Panel& panel) {
 }  // namespace
 
 std::string Colour(const std::string& algorithm) { return DisplayOf(algorithm).colour; }
+
+std::string Wrapped(const std::string& text, double width_in) {
+  // A character of the sans font is at most about 0.7 of its size wide
+  // (measured on the rendered titles); a panel's title is centred on its
+  // plot, narrower than the panel: 0.8.
+  const std::size_t per_line = static_cast<std::size_t>(width_in * 72 / (0.8 * kFontPt));
+  std::string out;
+  std::istringstream paragraphs(text);
+  for (std::string paragraph; std::getline(paragraphs, paragraph);) {
+    std::string line;
+    std::istringstream words(paragraph);
+    for (std::string word; words >> word;) {
+      if (!line.empty() && line.size() + 1 + word.size() > per_line) {
+        out += line + "\n";
+        line.clear();
+      }
+      line += (line.empty() ? "" : " ") + word;
+    }
+    out += line + "\n";
+  }
+  if (!out.empty()) out.pop_back();
+  return out;
+}
+
+double FooterHeight(const std::vector<std::string>& titles) {
+  std::size_t longest = 0;
+  for (const std::string& t : titles) longest = std::max(longest, t.size());
+  const std::size_t rows = longest > 28 ? titles.size() : (titles.size() + 1) / 2;
+  return 0.1 + 0.16 * static_cast<double>(rows);
+}
+
+std::string TicsFor(const std::string& axis, double lo, double hi, int max_tics) {
+  if (!std::isfinite(lo) || !std::isfinite(hi) || !(hi > lo) || max_tics < 2) return "";
+  const double raw = (hi - lo) / (max_tics - 1);
+  const double decade = std::pow(10, std::floor(std::log10(raw)));
+  double step = decade;
+  for (double m : {1.0, 2.0, 2.5, 5.0, 10.0}) {
+    step = m * decade;
+    if (step >= raw) break;
+  }
+  std::ostringstream out;
+  out << "set " << axis << "tics " << step << "\n";
+  return out.str();
+}
 
 std::string Quote(const std::string& text) {
   std::string out = "'";
@@ -120,13 +197,17 @@ void Render(const Figure& f, const std::string& out_dir, PlotOutput* out) {
     Gnuplot gp("gnuplot");
     for (const auto& [terminal, path] : outputs) {
       SetTerminal(gp, terminal, f, path);
-      const bool multiplot = f.panels.size() > 1;
+      const bool by_hand = !f.row_weights.empty() || f.footer_in > 0;
+      const bool multiplot = f.panels.size() > 1 || by_hand;
       if (multiplot) {
-        gp << "set multiplot layout " << f.rows << "," << f.cols;
-        if (!f.title.empty()) gp << " title " << Quote(f.title) << " noenhanced";
+        gp << "set multiplot";
+        if (!by_hand) gp << " layout " << f.rows << "," << f.cols;
+        if (!f.title.empty())
+          gp << " title " << MultiLine(Wrapped(f.title, kTitleWidth * f.width_in)) << " noenhanced";
         gp << "\n";
       }
-      for (const Panel& p : f.panels) DrawPanel(gp, p);
+      for (std::size_t i = 0; i < f.panels.size(); ++i)
+        DrawPanel(gp, f.panels[i], by_hand ? Placement(f, i) : "");
       if (multiplot) gp << "unset multiplot\n";
       gp << "unset output\n";
     }

@@ -28,16 +28,46 @@ struct Panel {
   std::vector<Series> series;
 };
 
+// The size the paper prints a figure at: its template's text width (17 cm)
+// and at most 0.75 of its text height (FigureTex in paper/sections.cc). A
+// figure drawn no larger, with kFontPt fonts, prints its text at kFontPt or
+// more (the paper never shrinks it); tests/paper_pages_test.cc checks it.
+inline constexpr double kPrintWidthIn = 6.5;
+inline constexpr double kPrintMaxHeightIn = 7.5;
+inline constexpr int kFontPt = 8;
+
 // A figure: panels in a rows x cols multiplot (one panel: no multiplot).
 struct Figure {
   std::string name;  // file name without extension
   std::string title;
-  double width_in = 8;
-  double height_in = 5;
+  double width_in = kPrintWidthIn;
+  double height_in = 4;
   int rows = 1;
   int cols = 1;
   std::vector<Panel> panels;
+  // Placed by hand instead of gnuplot's equal layout when either is set:
+  // the rows' relative heights (empty: equal), and a strip this high at the
+  // bottom for a legend set 'at screen' (FooterKey) by one of the panels.
+  std::vector<double> row_weights;
+  double footer_in = 0;
 };
+
+// A panel's legend in the figure's footer strip (Figure::footer_in), as wide
+// as the page, in at most two rows.
+inline constexpr char kFooterKey[] =
+    "set key at screen 0.5, screen 0.01 center bottom horizontal maxrows 2 noenhanced\n";
+
+// The height of the footer strip a kFooterKey legend of these entries
+// needs: two entries a row when they are short, else one.
+double FooterHeight(const std::vector<std::string>& titles);
+
+// text broken at spaces into lines of about what width_in holds at kFontPt
+// ('\n' between them), for titles that would run over their panel.
+std::string Wrapped(const std::string& text, double width_in);
+
+// "set xtics STEP\n" (axis "x", "y") with a round step giving at most
+// max_tics tics over [lo, hi]; "" when the range is not finite.
+std::string TicsFor(const std::string& axis, double lo, double hi, int max_tics);
 
 // Colours by algorithm, the same in every figure.
 std::string Colour(const std::string& algorithm);
@@ -47,6 +77,30 @@ std::string Quote(const std::string& text);
 
 // A gnuplot double-quoted string, so that a '\n' in text breaks the line.
 std::string MultiLine(const std::string& text);
+
+// Series that draw the same data (rows equal to a relative 1e-9, NaN
+// equal to NaN): groups of indices into rows, each group in the order of its
+// first member, its members in order.
+std::vector<std::vector<std::size_t>> EqualGroups(
+    const std::vector<std::vector<std::vector<double>>>& rows);
+
+// The legend entry of a group of equal series, "hc4 = bc3 = bc4 (seed 1)":
+// the labels joined by " = ", a parenthesised suffix they share written once.
+std::string JoinedLabel(const std::vector<std::string>& labels,
+                        const std::vector<std::size_t>& group);
+
+// Records, for the figure's caption (paper/sections.cc FigureTex reads
+// "NAME: note: ..."), that the series of each group of several were drawn
+// once: "hc4 = bc3 = bc4 draw the same values (where: ...) and are drawn once".
+void NoteEqualSeries(const std::string& figure, const std::vector<std::string>& labels,
+                     const std::vector<std::vector<std::size_t>>& groups, const std::string& where,
+                     PlotOutput* out);
+
+// True when the positive finite values of v span at least kLogSpan (a
+// decade): the axis reads better on a log scale. False when some value is
+// not positive (a log scale cannot draw it).
+inline constexpr double kLogSpan = 10;
+bool SpansDecades(const std::vector<double>& v);
 
 // v when finite, else NaN (gnuplot leaves a gap); Positive also for v <= 0
 // (a log scale cannot draw it).
@@ -105,25 +159,36 @@ namespace icp {
 using detail::plots::BoxesSeries;
 using detail::plots::Colour;
 using detail::plots::CountRunsOnly;
+using detail::plots::EqualGroups;
 using detail::plots::Figure;
 using detail::plots::Finite;
-using detail::plots::MapSeries;
+using detail::plots::FooterHeight;
 using detail::plots::HasPoint;
+using detail::plots::JoinedLabel;
+using detail::plots::kFontPt;
+using detail::plots::kFooterKey;
 using detail::plots::kNaN;
+using detail::plots::kPrintMaxHeightIn;
+using detail::plots::kPrintWidthIn;
+using detail::plots::MapSeries;
 using detail::plots::MultiLine;
+using detail::plots::NoteEqualSeries;
 using detail::plots::NoteRunsOnly;
 using detail::plots::Panel;
 using detail::plots::Positive;
 using detail::plots::Quote;
+using detail::plots::RecordedWithRunsOnly;
 using detail::plots::Render;
 using detail::plots::RenderPanel;
-using detail::plots::RunsOnlyOf;
-using detail::plots::RecordedWithRunsOnly;
 using detail::plots::RunCount;
+using detail::plots::RunsOnlyOf;
 using detail::plots::RunsOnlyText;
 using detail::plots::Series;
 using detail::plots::Skip;
+using detail::plots::SpansDecades;
+using detail::plots::TicsFor;
 using detail::plots::TruthSeries;
+using detail::plots::Wrapped;
 }  // namespace icp
 
 #endif  // ICPBENCH_PLOTS_FIGURES_INTERNAL_H_

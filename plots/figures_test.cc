@@ -5,11 +5,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "harness/metrics.h"
+#include "plots/figures_internal.h"
 #include "plots/figures_testing.h"
 
 namespace icp {
@@ -102,7 +104,13 @@ TEST(FiguresTest, WritesEveryKindAsPngAndPdfCallersFirst) {
     PlotAreaFigure({"area", "Area", "none"}, lap, out_dir, out);
   };
   const PlotOutput out = PlotRuns(runs, dir.string(), more);
-  EXPECT_TRUE(out.messages.empty()) << out.messages.front();
+  // hc4 and bc3 are made with the same boxes: drawn once, and said so.
+  EXPECT_EQ(out.messages,
+            (std::vector<std::string>{
+                "corridors: note: hc4 = bc3 (seed 1) draw the same values (equal corridors at "
+                "every step) and are drawn once",
+                "area: note: hc4 = bc3 (seed 1) draw the same values (at every step) and are drawn "
+                "once"}));
   const std::vector<std::string> expected =
       FigureFiles(dir, {"sweep", "corridors", "area", "fig_timing", "fig_profile_time",
                         "fig_profile_area"});
@@ -113,6 +121,20 @@ TEST(FiguresTest, WritesEveryKindAsPngAndPdfCallersFirst) {
     EXPECT_EQ(Head(path, 4), path.ends_with(".png") ? "\x89PNG" : "%PDF") << path;
   }
   fs::remove_all(dir);
+}
+
+TEST(FiguresTest, EqualSeriesAreGroupedAndDecadesDetected) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<std::vector<std::vector<double>>> rows = {
+      {{1, 2}, {2, nan}}, {{1, 3}, {2, nan}}, {{1, 2 + 1e-12}, {2, nan}}, {{1, 2}}};
+  EXPECT_EQ(EqualGroups(rows), (std::vector<std::vector<std::size_t>>{{0, 2}, {1}, {3}}));
+  EXPECT_EQ(JoinedLabel({"hc4 (seed 1)", "x", "bc4 (seed 1)"}, {0, 2}), "hc4 = bc4 (seed 1)");
+  EXPECT_EQ(JoinedLabel({"hc4 (seed 1)", "bc4 (seed 2)"}, {0, 1}), "hc4 (seed 1) = bc4 (seed 2)");
+  EXPECT_TRUE(SpansDecades({1, 2, 5, 200}));
+  EXPECT_FALSE(SpansDecades({16, 21}));
+  EXPECT_FALSE(SpansDecades({0, 1, 200}));  // a log axis cannot draw 0
+  EXPECT_EQ(TicsFor("x", 0, 1999, 5), "set xtics 500\n");
+  EXPECT_EQ(Wrapped("aaa bbb ccc", 0.2), "aaa\nbbb\nccc");  // 0.2 in holds 2 characters a line
 }
 
 TEST(FiguresTest, GpsCorridorIsTheGpsBoxAboutTheTruth) {

@@ -27,15 +27,17 @@ std::vector<double> CentreAndHalves(const std::vector<double>& b) {
 
 std::string Title(const std::string& t) { return t.empty() ? "notitle" : "title " + Quote(t); }
 
-Panel ToPanel(const MapPanel& p) {
+// The panel, its title wrapped to width_in; its legend in the figure's
+// footer, or none when key is false.
+Panel ToPanel(const MapPanel& p, bool key, double width_in) {
   const MapFrame& f = p.frame;
   Panel panel;
-  panel.setup = "set title " + MultiLine(p.title) +
-                " noenhanced\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset size ratio -1\n"
-                "set key outside right top vertical noenhanced\n"
-                "set xrange [" + std::to_string(f.x.lo()) + ":" + std::to_string(f.x.hi()) +
-                "]\nset yrange [" + std::to_string(f.y.lo()) + ":" + std::to_string(f.y.hi()) +
-                "]\n";
+  panel.setup = "set title " + MultiLine(Wrapped(p.title, width_in)) +
+                " noenhanced\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset size ratio -1\n" +
+                (key ? kFooterKey : "unset key\n") + TicsFor("x", f.x.lo(), f.x.hi(), 8) +
+                TicsFor("y", f.y.lo(), f.y.hi(), 6) + "set xrange [" + std::to_string(f.x.lo()) +
+                ":" + std::to_string(f.x.hi()) + "]\nset yrange [" + std::to_string(f.y.lo()) +
+                ":" + std::to_string(f.y.hi()) + "]\n";
   Series walls{"using 1:2:3:4 with boxxyerror fs solid 1.0 noborder lc rgb '#c8c8c8' title 'map'",
                {}, ""};
   for (const std::vector<double>& c : WallCells(f, kMaxWallCells))
@@ -64,6 +66,25 @@ Panel ToPanel(const MapPanel& p) {
   return panel;
 }
 
+// The legend entries of a panel, in order.
+std::vector<std::string> LegendOf(const MapPanel& p) {
+  std::vector<std::string> titles = {"map"};
+  for (const MapLayer& l : p.layers)
+    if (!l.title.empty()) titles.push_back(l.title + "\t" + l.colour);
+  return titles;
+}
+
+// The height a panel of frame f takes at the given width: its plot at equal
+// scales (at most max_plot_in high), its title lines and axis labels.
+double PanelHeight(const MapPanel& p, double width_in, double max_plot_in) {
+  const MapFrame& f = p.frame;
+  const double plot_width = width_in - 0.8;
+  const double plot = std::min(max_plot_in, plot_width * f.y.Width() / std::max(1e-9, f.x.Width()));
+  const std::string title = Wrapped(p.title, width_in);
+  return plot + 0.55 +
+         0.17 * (1 + static_cast<double>(std::count(title.begin(), title.end(), '\n')));
+}
+
 bool HasLayerPoint(const MapPanel& p) {
   return std::any_of(p.layers.begin(), p.layers.end(), [](const MapLayer& l) {
     return std::any_of(l.rows.begin(), l.rows.end(), [](const std::vector<double>& r) {
@@ -86,14 +107,18 @@ void FrameToShow(const std::vector<MapLayer>& layers, double margin, const Inter
                  const Interval& y_bounds, MapFrame* frame) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   double x0 = kInf, x1 = -kInf, y0 = kInf, y1 = -kInf;
-  for (const MapLayer& l : layers) {
-    const bool box = l.kind == MapLayer::Kind::kBoxes;
-    for (const std::vector<double>& r : l.rows) {
-      if (!std::all_of(r.begin(), r.end(), [](double v) { return std::isfinite(v); })) continue;
-      x0 = std::min(x0, r[0]), x1 = std::max(x1, box ? r[1] : r[0]);
-      y0 = std::min(y0, box ? r[2] : r[1]), y1 = std::max(y1, box ? r[3] : r[1]);
+  auto fit = [&](bool boxes) {
+    for (const MapLayer& l : layers) {
+      if ((l.kind == MapLayer::Kind::kBoxes) != boxes) continue;
+      for (const std::vector<double>& r : l.rows) {
+        if (!std::all_of(r.begin(), r.end(), [](double v) { return std::isfinite(v); })) continue;
+        x0 = std::min(x0, r[0]), x1 = std::max(x1, boxes ? r[1] : r[0]);
+        y0 = std::min(y0, boxes ? r[2] : r[1]), y1 = std::max(y1, boxes ? r[3] : r[1]);
+      }
     }
-  }
+  };
+  fit(false);              // the tracks and points
+  if (x0 > x1) fit(true);  // else the boxes
   if (x0 > x1) {
     frame->x = x_bounds, frame->y = y_bounds;
     return;
@@ -133,12 +158,32 @@ void PlotMapFigure(const FigureText& text, const std::vector<MapPanel>& panels, 
   if (std::none_of(panels.begin(), panels.end(), HasLayerPoint)) return Skip(text, out);
   Figure f;
   f.name = text.name;
-  f.title = panels.size() > 1 ? text.title : "";
+  f.title = panels.size() > 1 ? Wrapped(text.title, kPrintWidthIn) : "";
   f.cols = std::max(1, std::min(cols, static_cast<int>(panels.size())));
   f.rows = (static_cast<int>(panels.size()) + f.cols - 1) / f.cols;
-  f.width_in = 11 * f.cols;
-  f.height_in = 3.5 * f.rows + (panels.size() > 1 ? 0.5 : 0);
-  for (const MapPanel& p : panels) f.panels.push_back(ToPanel(p));
+  // One legend, in the footer, when the panels' entries are the same; else
+  // none (the caption names the layers).
+  bool same = true;
+  for (const MapPanel& p : panels) same = same && LegendOf(p) == LegendOf(panels.front());
+  std::vector<std::string> entries = {"map"};
+  for (const MapLayer& l : panels.back().layers)
+    if (!l.title.empty()) entries.push_back(l.title);
+  f.footer_in = same ? FooterHeight(entries) : 0;
+  const double width = kPrintWidthIn / f.cols;
+  const double title = f.title.empty() ? 0 : 0.25;
+  const double max_plot = (kPrintMaxHeightIn - title - f.footer_in) / f.rows - 0.9;
+  double height = title + f.footer_in;
+  for (int row = 0; row < f.rows; ++row) {
+    double tallest = 0;
+    for (int c = 0; c < f.cols && row * f.cols + c < static_cast<int>(panels.size()); ++c)
+      tallest = std::max(tallest, PanelHeight(panels[static_cast<std::size_t>(row * f.cols + c)],
+                                              width, max_plot));
+    f.row_weights.push_back(tallest);
+    height += tallest;
+  }
+  f.height_in = std::min(kPrintMaxHeightIn, height);
+  for (std::size_t i = 0; i < panels.size(); ++i)
+    f.panels.push_back(ToPanel(panels[i], same && i + 1 == panels.size(), width));
   Render(f, out_dir, out);
 }
 

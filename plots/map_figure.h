@@ -43,8 +43,11 @@ struct MapPanel {
   std::vector<MapLayer> layers;
 };
 
-// The frame that shows every box and point of layers with margin metres on
-// each side, cut to bounds; bounds when the layers hold nothing finite.
+// The frame that shows every track and point of layers with margin metres
+// on each side, cut to bounds: the track fills the figure, and boxes wider
+// than it (dead reckoning, an unknown start) are cut at its edges. The
+// boxes' when the layers hold no track or point; bounds when they hold
+// nothing finite.
 void FrameToShow(const std::vector<MapLayer>& layers, double margin, const Interval& x_bounds,
                  const Interval& y_bounds, MapFrame* frame);
 
@@ -52,7 +55,9 @@ void FrameToShow(const std::vector<MapLayer>& layers, double margin, const Inter
 Interval MapXBounds(const MapFrame& frame);
 Interval MapYBounds(const MapFrame& frame);
 
-// The panels in rows of cols, equal scales; skipped with
+// The panels in rows of cols, equal scales, as wide as the paper prints
+// them, each row as high as its frames need; one legend below them when
+// the panels' layers have the same titles and colours; skipped with
 // text.skip_reason when no panel has a layer with a point.
 void PlotMapFigure(const FigureText& text, const std::vector<MapPanel>& panels, int cols,
                    const std::string& out_dir, PlotOutput* out);

@@ -41,21 +41,27 @@ TEST(MapFigureTest, WallCellsPlaceSetPixelsInTheWorld) {
   EXPECT_EQ(WallCells(left, 100).size(), 1u);
 }
 
-TEST(MapFigureTest, FrameShowsEveryBoxAndPointCutToTheBounds) {
+TEST(MapFigureTest, FrameFitsTheTracksAndPointsCutToTheBounds) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<MapLayer> layers = {
-      {MapLayer::Kind::kBoxes, "", "red", {{5, 6, 7, 8}, {nan, 1, 2, 3}}},
+      {MapLayer::Kind::kBoxes, "", "red", {{5, 60, 7, 80}, {nan, 1, 2, 3}}},
       {MapLayer::Kind::kTrack, "", "black", {{9, 4}, {nan, nan}}},
+      {MapLayer::Kind::kPoints, "", "green", {{12, 6}}},
   };
   MapFrame f;
-  FrameToShow(layers, 1, Interval(0, 100), Interval(0, 100), &f);
-  EXPECT_EQ(f.x.lo(), 4);
-  EXPECT_EQ(f.x.hi(), 10);
+  FrameToShow(layers, 1, Interval(0, 100), Interval(0, 100), &f);  // the wide box is cut
+  EXPECT_EQ(f.x.lo(), 8);
+  EXPECT_EQ(f.x.hi(), 13);
   EXPECT_EQ(f.y.lo(), 3);
-  EXPECT_EQ(f.y.hi(), 9);
+  EXPECT_EQ(f.y.hi(), 7);
   FrameToShow(layers, 10, Interval(0, 100), Interval(5, 100), &f);
   EXPECT_EQ(f.x.lo(), 0);
   EXPECT_EQ(f.y.lo(), 5);
+  FrameToShow({layers[0]}, 1, Interval(0, 100), Interval(0, 100), &f);  // boxes alone: theirs
+  EXPECT_EQ(f.x.lo(), 4);
+  EXPECT_EQ(f.x.hi(), 61);
+  EXPECT_EQ(f.y.lo(), 6);
+  EXPECT_EQ(f.y.hi(), 81);
   FrameToShow({}, 1, Interval(0, 3), Interval(0, 4), &f);
   EXPECT_EQ(f.x.hi(), 3);
   EXPECT_EQ(f.y.hi(), 4);

@@ -84,7 +84,7 @@ void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecor
   // the runs compare at a glance.
   std::vector<const RunRecord*> shown;
   std::vector<std::string> shown_labels;
-  std::vector<std::vector<std::vector<double>>> corridors[2];
+  std::vector<std::vector<std::vector<double>>> corridors[2], both;
   std::vector<std::vector<double>> all[2];
   for (std::size_t n = 0; n < runs.size(); ++n) {
     const RunRecord* r = runs[n];
@@ -94,13 +94,20 @@ void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecor
     if (!HasPoint(probe[0]) && !HasPoint(probe[1])) continue;
     shown.push_back(r);
     shown_labels.push_back(labels.at(n));
+    both.push_back(rows[0]);
+    both.back().insert(both.back().end(), rows[1].begin(), rows[1].end());
     for (int k = 0; k < 2; ++k) {
       all[k].insert(all[k].end(), rows[k].begin(), rows[k].end());
+      const auto gps = GpsCorridorRows(*r, kVars[k]);
+      all[k].insert(all[k].end(), gps.begin(), gps.end());
       corridors[k].push_back(std::move(rows[k]));
     }
   }
   if (shown.empty()) return Skip(text, out, runs);
   NoteRunsOnly(text, runs, out);
+  // Runs whose corridors are equal at every step: one row of panels.
+  const std::vector<std::vector<std::size_t>> groups = EqualGroups(both);
+  NoteEqualSeries(text.name, shown_labels, groups, "equal corridors at every step", out);
   // One step axis for all, so a shorter run shows as shorter.
   double last_step = 0;
   for (const RunRecord* r : shown) {
@@ -113,30 +120,30 @@ void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecor
   bool gps = false;
   for (const RunRecord* r : shown)
     for (const char* var : kVars) gps = gps || HasPoint({"", GpsCorridorRows(*r, var), ""});
-  f.title = text.title + ": solid lo - truth, dashed hi - truth" +
+  // Over many steps the bounds are drawn as a filled band (lines would
+  // merge at the printer's resolution), the GPS box underneath in grey.
+  f.title = text.title + "\nband: the box's [lo - truth, hi - truth]; black: the truth (0)" +
             (gps ? "; grey: the GPS box" : "");
-  f.width_in = 10;
   f.cols = 2;
-  f.rows = static_cast<int>(shown.size());
-  f.height_in = 0.6 + 2.2 * f.rows;
-  for (std::size_t i = 0; i < shown.size(); ++i) {
-    const RunRecord& r = *shown[i];
+  f.rows = static_cast<int>(groups.size());
+  f.height_in = std::min(kPrintMaxHeightIn, 0.5 + 1.9 * f.rows);
+  for (std::size_t i = 0; i < groups.size(); ++i) {
+    const std::size_t first = groups[i].front();
+    const RunRecord& r = *shown[first];
     const std::string colour = Quote(Colour(r.spec.algorithm));
     for (int k = 0; k < 2; ++k) {
       Panel p;
-      p.setup = "set title " + Quote(shown_labels[i] + ": " + kVars[k]) + " noenhanced\n" +
-                "set ylabel 'error in " + kVars[k] + " (m)'\n" + CorridorRange(all[k]) +
-                (i + 1 == shown.size() ? "set xlabel 'step'\n" : "") +
-                "unset key\n" + x_range;
-      const auto& rows = corridors[k][i];
+      p.setup = "set title " + Quote(JoinedLabel(shown_labels, groups[i]) + ": " + kVars[k]) +
+                " noenhanced\n" + "set ylabel 'error in " + kVars[k] + " (m)'\n" +
+                CorridorRange(all[k]) + (i + 1 == groups.size() ? "set xlabel 'step'\n" : "") +
+                "unset key\n" + x_range + TicsFor("x", 0, std::max(1.0, last_step), 5);
+      const auto& rows = corridors[k][first];
       p.series = {
-          {"using 1:2:3 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.35 notitle",
+          {"using 1:2:3 with filledcurves fc rgb '#b4b4b4' fs solid 1.0 notitle",
            GpsCorridorRows(r, kVars[k]), ""},
-          {"using 1:2:3 with filledcurves fc rgb " + colour + " fs transparent solid 0.25 notitle",
+          {"using 1:2:3 with filledcurves fc rgb " + colour + " fs transparent solid 0.75 notitle",
            rows, ""},
-          {"using 1:2 with lines lw 1.2 lc rgb " + colour + " notitle", rows, ""},
-          {"using 1:3 with lines lw 1.2 dt 2 lc rgb " + colour + " notitle", rows, ""},
-          {"with lines lw 1 lc rgb 'black' notitle", {}, "0"}};
+          {"with lines lw 1.5 lc rgb 'black' notitle", {}, "0"}};
       f.panels.push_back(std::move(p));
     }
   }
@@ -144,27 +151,85 @@ void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecor
 }
 
 namespace {
+
+// Over more steps than this a line per step merges into a band at the
+// printer's resolution: a running median is drawn instead.
+constexpr std::size_t kLongRun = 400;
+
+// The median of rows' values (column 1) over the window of steps centred on
+// each row (NaN left out), window odd.
+std::vector<std::vector<double>> RunningMedian(const std::vector<std::vector<double>>& rows,
+                                               std::size_t window) {
+  std::vector<std::vector<double>> out;
+  const std::size_t half = window / 2;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    std::vector<double> values;
+    for (std::size_t j = i >= half ? i - half : 0; j < std::min(rows.size(), i + half + 1); ++j)
+      if (!std::isnan(rows[j][1])) values.push_back(rows[j][1]);
+    out.push_back({rows[i][0], values.empty() ? kNaN : Quantile(values, 0.5)});
+  }
+  return out;
+}
+
 // One line per run of a per-step value against the step, log scale, each
-// line titled by its run and what title_extra says of it.
+// line titled by its run and what title_extra says of it; runs with equal
+// values drawn once; over long runs the running median of a 40th of them.
 void PlotStepValueFigure(const FigureText& text, const std::string& y_label,
                          const std::vector<const RunRecord*>& runs,
                          const std::function<double(const StepRecord&)>& value,
                          const std::function<std::string(const RunRecord&)>& title_extra,
                          const std::string& out_dir, PlotOutput* out) {
-  Panel panel;
-  panel.setup = "set title " + Quote(text.title) + " noenhanced\nset xlabel 'step'\nset ylabel " +
-                Quote(y_label) + "\nset logscale y\nset key top right noenhanced\n";
+  std::vector<std::vector<std::vector<double>>> rows;
+  std::vector<const RunRecord*> drawn;
   for (const RunRecord* r : runs) {
-    Series s{"using 1:2 with lines lw 1.5 lc rgb " + Quote(Colour(r->spec.algorithm)) +
-                 " title " + Quote(RunLabel(*r) + title_extra(*r)),
-             {}, ""};
+    Series s{"", {}, ""};
     for (const StepRecord& step : r->steps)
       s.rows.push_back({static_cast<double>(step.step), Positive(value(step))});
-    if (HasPoint(s)) panel.series.push_back(std::move(s));
+    if (!HasPoint(s)) continue;
+    drawn.push_back(r);
+    rows.push_back(std::move(s.rows));
   }
-  if (panel.series.empty()) return Skip(text, out, runs);
+  if (drawn.empty()) return Skip(text, out, runs);
   NoteRunsOnly(text, runs, out);
-  RenderPanel(text.name, 9, 4.5, panel, out_dir, out);
+  // Runs with the same values at every step and the same title extra: one
+  // line under the joined label.
+  std::vector<std::vector<std::size_t>> groups;
+  for (const auto& equal : EqualGroups(rows)) {
+    const std::size_t before = groups.size();
+    for (std::size_t i : equal) {
+      auto same = std::find_if(groups.begin() + before, groups.end(), [&](const auto& g) {
+        return title_extra(*drawn[g.front()]) == title_extra(*drawn[i]);
+      });
+      if (same == groups.end())
+        groups.push_back({i});
+      else
+        same->push_back(i);
+    }
+  }
+  std::vector<std::string> names;
+  for (const RunRecord* r : drawn) names.push_back(RunLabel(*r));
+  NoteEqualSeries(text.name, names, groups, "at every step", out);
+  std::size_t steps = 0;
+  for (const auto& r : rows) steps = std::max(steps, r.size());
+  const std::size_t window = steps > kLongRun ? (steps / 40) | 1 : 1;
+  Panel panel;
+  panel.setup =
+      "set title " +
+      Quote(text.title +
+            (window > 1 ? ": running median over " + std::to_string(window) + " steps" : "")) +
+      " noenhanced\nset xlabel 'step'\nset ylabel " + Quote(y_label) +
+      "\nset logscale y\nset key top right noenhanced\nset autoscale xfix\n";
+  // Each line its own dash, so that lines that nearly coincide stay apart.
+  for (std::size_t k = 0; k < groups.size(); ++k) {
+    const auto& g = groups[k];
+    const RunRecord& r = *drawn[g.front()];
+    panel.series.push_back({"using 1:2 with lines lw 2 dt " + std::to_string(1 + k % 5) +
+                                " lc rgb " + Quote(Colour(r.spec.algorithm)) + " title " +
+                                Quote(JoinedLabel(names, g) + title_extra(r)),
+                            window > 1 ? RunningMedian(rows[g.front()], window) : rows[g.front()],
+                            ""});
+  }
+  RenderPanel(text.name, kPrintWidthIn, 3.6, panel, out_dir, out);
 }
 }  // namespace
 

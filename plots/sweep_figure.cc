@@ -1,5 +1,6 @@
 // The sweep figure: mean areas and mean time per CSP against the value of a
-// swept problem parameter, one line per configuration.
+// swept problem parameter, one line per configuration; configurations whose
+// line coincides drawn once under a joined label.
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -12,6 +13,39 @@
 #include "report/report.h"
 
 namespace icp {
+
+namespace {
+
+// One quantity against the swept value: a panel of one line per group of
+// configurations with equal values; log axes where the values span decades.
+struct Quantity {
+  std::string title, y_label, key;
+  std::vector<std::vector<std::vector<double>>> rows;  // per configuration {value, y}
+};
+
+Panel QuantityPanel(const Quantity& q, const std::string& x_label,
+                    const std::vector<std::string>& labels, const std::vector<std::string>& styles,
+                    const std::vector<std::vector<std::size_t>>& groups) {
+  std::vector<double> xs, ys;
+  for (const auto& rows : q.rows)
+    for (const auto& row : rows) xs.push_back(row[0]), ys.push_back(row[1]);
+  double y_lo = INFINITY, y_hi = -INFINITY;
+  for (double y : ys)
+    if (std::isfinite(y)) y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
+  Panel p;
+  p.setup = "set title " + Quote(q.title) + "\nset xlabel " + Quote(x_label) + "\nset ylabel " +
+            Quote(q.y_label) + "\nset key " + q.key + " noenhanced\nset autoscale xfix\n" +
+            (SpansDecades(xs) ? "set logscale x\n" : "") +
+            (SpansDecades(ys) ? "set logscale y\n" : TicsFor("y", y_lo, y_hi, 5));
+  for (const auto& g : groups) {
+    Series s{"using 1:2 " + styles[g.front()] + " title " + Quote(JoinedLabel(labels, g)),
+             q.rows[g.front()], ""};
+    if (HasPoint(s)) p.series.push_back(std::move(s));
+  }
+  return p;
+}
+
+}  // namespace
 
 void PlotSweepFigure(const FigureText& text, const std::string& x_label,
                      const std::vector<SweepPoint>& points, const std::string& out_dir,
@@ -30,43 +64,52 @@ void PlotSweepFigure(const FigureText& text, const std::string& x_label,
   const bool window_area = std::any_of(points.begin(), points.end(), [](const SweepPoint& p) {
     return std::isfinite(p.mean_window_area);
   });
-  Figure f;
-  f.name = text.name;
-  f.title = text.title;
-  f.cols = window_area ? 3 : 2;
-  f.width_in = 5 * f.cols;
-  f.height_in = 4.2;
-  Panel area, window, time;
-  area.setup = "set title 'Mean x-y area of the newest state'\nset xlabel " + Quote(x_label) +
-               "\nset ylabel 'area (m^2)'\nset key top right noenhanced\n";
-  window.setup = "set title 'Mean x-y area of the window states'\nset xlabel " +
-                 Quote(x_label) + "\nset ylabel 'area (m^2)'\nset key top right noenhanced\n";
-  time.setup = "set title 'Mean time per CSP'\nset xlabel " + Quote(x_label) +
-               "\nset ylabel 'time (ms)'\nset key top left noenhanced\n";
+  Quantity area{"Mean x-y area of the newest state", "area (m^2)", "top right", {}};
+  Quantity window{"Mean x-y area of the window states", "area (m^2)", "top right", {}};
+  Quantity time{"Mean time per CSP", "time (ms)", "bottom right", {}};
   // An algorithm's colour for all its configurations; its second, third ...
   // configuration dashed and marked differently, so they stay apart.
+  std::vector<std::string> labels, styles;
   std::map<std::string, int> configurations;
   for (std::size_t i = 0; i < points.size();) {
     const std::string& label = points[i].label;
     const int nth = configurations[points[i].algorithm]++;
-    const std::string style = "with linespoints lw 2 dt " + std::to_string(1 + nth % 5) + " pt " +
-                              std::to_string(7 + 2 * (nth % 3)) + " ps 0.7 lc rgb " +
-                              Quote(Colour(points[i].algorithm)) + " title " + Quote(label);
-    Series a{"using 1:2 " + style, {}, ""};
-    Series w{"using 1:2 " + style, {}, ""};
-    Series t{"using 1:2 " + style, {}, ""};
+    labels.push_back(label);
+    styles.push_back("with linespoints lw 2 dt " + std::to_string(1 + nth % 5) + " pt " +
+                     std::to_string(7 + 2 * (nth % 3)) + " ps 0.7 lc rgb " +
+                     Quote(Colour(points[i].algorithm)));
+    for (Quantity* q : {&area, &window, &time}) q->rows.emplace_back();
     for (; i < points.size() && points[i].label == label; ++i) {
-      a.rows.push_back({points[i].value, Finite(points[i].mean_area)});
-      w.rows.push_back({points[i].value, Finite(points[i].mean_window_area)});
-      t.rows.push_back({points[i].value, Finite(points[i].mean_time_s * 1e3)});
+      area.rows.back().push_back({points[i].value, Finite(points[i].mean_area)});
+      window.rows.back().push_back({points[i].value, Finite(points[i].mean_window_area)});
+      time.rows.back().push_back({points[i].value, Finite(points[i].mean_time_s * 1e3)});
     }
-    area.series.push_back(std::move(a));
-    if (HasPoint(w)) window.series.push_back(std::move(w));
-    time.series.push_back(std::move(t));
   }
-  f.panels = {area};
-  if (window_area) f.panels.push_back(window);
-  f.panels.push_back(time);
+  // One panel a row, each as wide as the page prints it.
+  Figure f;
+  f.name = text.name;
+  f.title = text.title;
+  std::vector<const Quantity*> shown = {&area};
+  if (window_area) shown.push_back(&window);
+  shown.push_back(&time);
+  // Each group of equal lines noted once, with the panels it is equal in.
+  std::vector<std::pair<std::vector<std::size_t>, std::string>> equal;
+  for (const Quantity* q : shown) {
+    const std::vector<std::vector<std::size_t>> groups = EqualGroups(q->rows);
+    for (const auto& g : groups) {
+      if (g.size() < 2) continue;
+      auto same =
+          std::find_if(equal.begin(), equal.end(), [&](const auto& e) { return e.first == g; });
+      if (same == equal.end())
+        equal.push_back({g, "in '" + q->title + "'"});
+      else
+        same->second += ", '" + q->title + "'";
+    }
+    f.panels.push_back(QuantityPanel(*q, x_label, labels, styles, groups));
+  }
+  for (const auto& [group, where] : equal) NoteEqualSeries(text.name, labels, {group}, where, out);
+  f.rows = static_cast<int>(f.panels.size());
+  f.height_in = 0.3 + 2.3 * f.rows;
   Render(f, out_dir, out);
 }
 

@@ -40,8 +40,10 @@ void PlotTimingFigure(const FigureText& text, const std::vector<const GroupSumma
                 "set pointsize 0.3\nset boxwidth 0.5\n"
                 "set xtics (" + xtics + ") noenhanced\nset xrange [0.4:" +
                 std::to_string(panel.series.size() + 0.6) + "]\nset grid noxtics\n";
-  RenderPanel(text.name, std::max(4.0, 1.4 * static_cast<double>(panel.series.size()) + 1.5),
-              4.5, panel, out_dir, out);
+  RenderPanel(
+      text.name,
+      std::min(kPrintWidthIn, std::max(3.5, 0.9 * static_cast<double>(panel.series.size()) + 1.2)),
+      3.4, panel, out_dir, out);
 }
 
 std::vector<const GroupSummary*> TimingGroups(const std::vector<GroupSummary>& groups,

@@ -93,7 +93,7 @@ void PlotTrackFigure(const FigureText& text,
     }
     if (HasPoint(centres)) panel.series.push_back(std::move(centres));
   }
-  RenderPanel(text.name, 8, 8, panel, out_dir, out);
+  RenderPanel(text.name, kPrintWidthIn, kPrintWidthIn, panel, out_dir, out);
 }
 
 }  // namespace icp

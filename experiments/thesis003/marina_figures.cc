@@ -28,11 +28,12 @@ constexpr const char* kBoxColour = "#e377c2";  // the thesis' pink boxes
 constexpr const char* kCentreColour = "#d62728";
 constexpr const char* kReckonedColour = "#1f77b4";
 constexpr const char* kParticleColour = "#2ca02c";
-// Boxes drawn: every set-membership step (about a metre wide, they show as
-// a band along the track, see-through), every 50th dead-reckoning box (they
+// Boxes drawn: every 20th set-membership step (about a metre wide, drawn at
+// every step they merge into one band; 20 steps apart, about 12 m, they
+// stay apart on the printed page), every 50th dead-reckoning box (they
 // grow, so fewer keep the drawing readable); particles: the whole first
 // cloud, then 60 of every 10th step.
-constexpr int kSetBoxesEvery = 1;
+constexpr int kSetBoxesEvery = 20;
 constexpr int kReckonedBoxesEvery = 50;
 constexpr int kParticlesEvery = 10;
 constexpr int kParticlesPerStep = 60;
