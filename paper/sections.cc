@@ -315,31 +315,39 @@ std::string ProfilesTex(const std::vector<RunRecord>& runs, const FigureSet& fig
 
 std::string PerformanceTex(const std::vector<RunRecord>& runs, const FigureSet& figures) {
   const std::vector<GroupSummary> groups = SummariseGroups(runs);
+  std::vector<double> times;
+  for (const GroupSummary& g : groups)
+    if (g.ok > 0 && g.metrics.steps > 0) times.push_back(g.metrics.time_median_s);
+  const Unit unit = TimeUnit(times);
   TextTable t;
   t.title = "Time per step of every configuration";
-  t.headers = {"algorithm",   "problem",  "runs",      "steps",
-               "median (µs)", "p90 (µs)", "mean (µs)", "mean / HC4"};
-  t.numeric = {false, false, true, true, true, true, true, true};
+  t.headers = {"algorithm", "problem", "runs", "steps", "median (" + unit.name + ")",
+               "mean (" + unit.name + ") [95% CI]", "mean / HC4 [95% CI]"};
+  t.numeric = {false, false, true, true, true, true, true};
   t.omit_if_empty = true;
   for (const GroupSummary& g : groups) {
     if (g.ok == 0 || g.metrics.steps == 0) continue;
-    double hc4 = std::numeric_limits<double>::quiet_NaN();
+    MedianInterval to_hc4;
     for (const GroupSummary& h : groups) {
       if (h.algorithm == "hc4" && h.algorithm_params.empty() && h.ok > 0 &&
           h.problem == g.problem && h.problem_params == g.problem_params)
-        hc4 = h.metrics.time_mean_s;
+        to_hc4 = PairedRatio(g, h, RunMeanTime);
     }
-    t.rows.push_back(
-        {WithParams(DisplayOf(g.algorithm).label, g.algorithm_params),
-         WithParams(g.problem, g.problem_params), OkRunsCell(g), std::to_string(g.metrics.steps),
-         FormatNumber(g.metrics.time_median_s * 1e6), FormatNumber(g.metrics.time_p90_s * 1e6),
-         FormatNumber(g.metrics.time_mean_s * 1e6), FormatRatio(g.metrics.time_mean_s, hc4)});
+    t.rows.push_back({WithParams(DisplayOf(g.algorithm).label, g.algorithm_params),
+                      WithParams(g.problem, g.problem_params), OkRunsCell(g),
+                      std::to_string(g.metrics.steps),
+                      FormatNumber(g.metrics.time_median_s * unit.scale),
+                      FormatWithInterval(RunMedian(g, RunMeanTime), unit.scale),
+                      FormatWithInterval(to_hc4)});
   }
   t.notes.push_back(
-      "Solve time per step over the steps of each configuration's ok runs (for ICP the "
-      "contraction of one window alone, building it excluded), on the machines of the first "
-      "page; mean / HC4 divides by HC4 at default parameters on the same problem configuration "
-      "(— where there is none).");
+      "Solve time per step (for ICP the contraction of one window alone, building it "
+      "excluded), on the machines of the first page. Median: over the steps of each "
+      "configuration's ok runs. Mean: each run's mean, then the median over the runs (seeds) "
+      "with its 95% confidence interval (order statistics, from 6 runs on), rounded to the "
+      "interval's leading digit. Mean / HC4: per seed, the run's mean over HC4's on the same "
+      "instance (HC4 at default parameters on the same problem configuration), then their "
+      "median and interval (— where there is none).");
   if (t.rows.empty())
     t.notes.push_back("No ok run in the store: icpbench run specs/default.yaml produces them.");
   std::ostringstream out;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "report/report.h"
 
@@ -49,6 +50,54 @@ std::string FormatNumber(double v) {
     if (out.back() == '.') out.pop_back();
   }
   return out;
+}
+
+namespace {
+
+// v rounded to a multiple of step (a power of ten) toward floor, nearest or
+// ceil; a quotient within rounding error of an integer counts as one.
+double RoundTo(double v, double step, double (*mode)(double)) {
+  double q = v / step;
+  if (std::fabs(q - std::round(q)) < 1e-9 * std::max(1.0, std::fabs(q))) q = std::round(q);
+  const double r = mode(q) * step;
+  return r == 0 ? 0 : r;  // no "-0"
+}
+
+std::string Fixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+}  // namespace
+
+std::string FormatWithInterval(const MedianInterval& m, double scale) {
+  const double v = m.median * scale, lo = m.lo * scale, hi = m.hi * scale;
+  if (std::isnan(v) || std::isnan(lo) || std::isnan(hi) || !std::isfinite(v) || !(hi > lo))
+    return FormatNumber(v);
+  const double half = (hi - lo) / 2;
+  int exponent = static_cast<int>(std::floor(std::log10(half)));
+  if (half < 2 * std::pow(10.0, exponent)) --exponent;  // leading digit 1: one more
+  // At most 6 significant digits, whatever the interval.
+  if (v != 0) exponent = std::max(exponent, static_cast<int>(std::floor(std::log10(std::fabs(v)))) - 5);
+  const double step = std::pow(10.0, exponent);
+  const int decimals = std::max(0, -exponent);
+  // The bounds rounded outward, so the printed interval still holds the computed one.
+  return Fixed(RoundTo(v, step, std::round), decimals) + " [" +
+         Fixed(RoundTo(lo, step, std::floor), decimals) + ", " +
+         Fixed(RoundTo(hi, step, std::ceil), decimals) + "]";
+}
+
+Unit TimeUnit(const std::vector<double>& seconds) {
+  std::vector<double> magnitudes;
+  for (double s : seconds)
+    if (std::isfinite(s) && s != 0) magnitudes.push_back(std::fabs(s));
+  if (magnitudes.empty()) return {"µs", 1e6};
+  std::nth_element(magnitudes.begin(), magnitudes.begin() + magnitudes.size() / 2, magnitudes.end());
+  const double median = magnitudes[magnitudes.size() / 2];
+  for (const Unit& u : {Unit{"s", 1}, Unit{"ms", 1e3}, Unit{"µs", 1e6}})
+    if (median * u.scale >= 1) return u;
+  return {"ns", 1e9};
 }
 
 std::string WithParams(const std::string& name, const ParamMap& params) {

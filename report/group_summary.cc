@@ -108,7 +108,20 @@ std::string SeedList(std::vector<std::uint64_t> seeds) {
   return out;
 }
 
+// The run's steps' window_mean_area (see SweepPoint).
+void AppendWindowAreas(const RunRecord& run, std::vector<double>* areas) {
+  for (const StepRecord& s : run.steps) {
+    if (auto a = NumberProperty(s.properties, "window_mean_area")) areas->push_back(*a);
+  }
+}
+
 }  // namespace
+
+double RunMeanWindowArea(const RunRecord& run) {
+  std::vector<double> areas;
+  AppendWindowAreas(run, &areas);
+  return Mean(areas);
+}
 
 bool RecordedRunsOnly(const RunRecord& run) {
   return run.status == RunStatus::kOk && run.steps.empty() && run.metrics.steps > 0;
@@ -219,11 +232,7 @@ std::vector<SweepPoint> ParamSweep(const std::vector<RunRecord>& runs, const std
     for (const auto& [value, members] : by_value) {
       const GroupSummary g = Summarise(members);
       std::vector<double> window_areas;
-      for (const RunRecord* r : members) {
-        for (const StepRecord& s : r->steps) {
-          if (auto a = NumberProperty(s.properties, "window_mean_area")) window_areas.push_back(*a);
-        }
-      }
+      for (const RunRecord* r : members) AppendWindowAreas(*r, &window_areas);
       points.push_back({label, algorithm, value, g.ok, g.metrics.steps, g.metrics.mean_area,
                         g.metrics.time_mean_s, Mean(window_areas), members});
     }

@@ -4,7 +4,9 @@
 //   Runs per configuration: one row per (algorithm, algorithm params,
 //   problem, problem params), aggregated over seeds: run counts by status,
 //   CSPs, mean area, consistency rate (paper 004 eq. 31), centre RMSE and the
-//   solve time per CSP (median, p90, mean with a bootstrap 95 % interval).
+//   solve time per CSP (median, p90, mean). Mean area and mean time are the
+//   median over the runs (seeds) of each run's mean with its 95 % interval
+//   (MedianWithInterval); the others pool the steps.
 //   Below it (md, tex) a short list of the failed, timed-out and skipped
 //   runs with their reasons.
 //
@@ -17,12 +19,14 @@
 // its ok runs (every CSP weighs the same, whichever seed it came from). When
 // some ok run of the group has no step records loaded, the runs' stored
 // metrics are combined instead, weighted by their step counts (root of the
-// weighted mean square for the RMSE); median, p90 and the interval of the
-// mean then cannot be pooled and are shown only for a single run.
+// weighted mean square for the RMSE); the time median and p90 then cannot be
+// pooled and are shown only for a single run.
 //
 // Parameters show as "k=v,k2=v2" ("default" in md/tex, an empty field in CSV
 // when none were given). Numbers have about 4 significant digits
-// (FormatNumber), a missing one (NaN) shows as "—". Times are µs per CSP.
+// (FormatNumber), a median with an interval the digits its interval supports
+// (FormatWithInterval); a missing one (NaN) shows as "—". Times are per CSP,
+// each column in one unit picked from its values (TimeUnit).
 //
 // CSV holds the runs-per-configuration table only, one header row then one
 // row per group, RFC 4180 quoting, 6 significant digits, NaN as an empty
@@ -30,7 +34,9 @@
 #ifndef ICPBENCH_REPORT_REPORT_H_
 #define ICPBENCH_REPORT_REPORT_H_
 
+#include <cstddef>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -139,6 +145,36 @@ struct SweepPoint {
 std::vector<SweepPoint> ParamSweep(const std::vector<RunRecord>& runs, const std::string& problem,
                                    const std::string& param);
 
+// The median of values (one per run: a seed) with a distribution-free 95 %
+// confidence interval of the median from order statistics: [x_(k),
+// x_(n+1-k)] for the largest k whose coverage 1 - 2 P(Binomial(n, 1/2) < k)
+// is at least 0.95. No such k below n = 6 values (with 6, [min, max] covers
+// 1 - 2/64 = 96.9 %): lo and hi are then NaN. NaN values are left out.
+struct MedianInterval {
+  int n = 0;
+  double median = std::numeric_limits<double>::quiet_NaN();  // NaN for no values
+  double lo = std::numeric_limits<double>::quiet_NaN();      // NaN when n < 6
+  double hi = std::numeric_limits<double>::quiet_NaN();
+  double coverage = std::numeric_limits<double>::quiet_NaN();  // exact; NaN when n < 6
+};
+MedianInterval MedianWithInterval(std::vector<double> values);
+// The runs whose values the tables summarise: value(run) for each ok run of
+// the group (its stored metrics are there with or without step rows).
+MedianInterval RunMedian(const GroupSummary& group,
+                         const std::function<double(const RunRecord&)>& value);
+// Per seed, value(a's run) / value(b's run) over the seeds where both groups
+// have an ok run (a paired comparison: the same instance), then their
+// median with its interval; e.g. time_mean_s of BC4 over HC4.
+MedianInterval PairedRatio(const GroupSummary& a, const GroupSummary& b,
+                           const std::function<double(const RunRecord&)>& value);
+// A run's mean solve time per step and mean area: the values RunMedian is
+// most often given.
+double RunMeanTime(const RunRecord& run);
+double RunMeanArea(const RunRecord& run);
+// The mean over a run's steps of window_mean_area (see SweepPoint); NaN
+// without steps or the property.
+double RunMeanWindowArea(const RunRecord& run);
+
 // How tables and figures show an algorithm: its registry display data; for
 // one no longer registered (an old store), its name, order 1000 and grey.
 Display DisplayOf(const std::string& algorithm);
@@ -161,6 +197,29 @@ std::string FormatRatio(double a, double b);
 // (trailing zeros dropped: 0.52, 1400, 0.4873; integers from 1e4 on),
 // exponent form otherwise; "—" for NaN, "∞"/"-∞" for infinities.
 std::string FormatNumber(double v);
+// A median with its interval, rounded to what the interval supports: to the
+// decimal of the leading digit of its half-width (one more when that digit is
+// 1), e.g. 18.2 [17.9, 18.6], 0.0712 [0.0700, 0.0731], 1400 [1300, 1500];
+// the values are multiplied by scale (a column's unit) first. Without an
+// interval (fewer than 6 values) or with one of zero width, FormatNumber of
+// the median; "—" for none.
+std::string FormatWithInterval(const MedianInterval& m, double scale = 1);
+// A column's unit for times in seconds: the largest of s, ms, µs and ns in
+// which the median magnitude of the column's non-zero values is at least 1
+// (µs when it has none), so one column has one unit and, unless it spans
+// more than three decades below its median, no exponent.
+struct Unit {
+  std::string name;  // "ms"
+  double scale;      // seconds -> unit: 1e3
+};
+Unit TimeUnit(const std::vector<double>& seconds);
+// Long entries of a table's text columns, moved under it: every non-numeric
+// cell longer than max_chars becomes a marker "(a)", "(b)", ... (equal texts
+// share one) and a note "(a) text" comes first under the table. TexTable does
+// this with kMaxTexCellChars, so one long cell cannot shrink a whole table.
+inline constexpr std::size_t kMaxTexCellChars = 36;
+TextTable WithLongCellsAsNotes(TextTable table, std::size_t max_chars);
+
 // LaTeX text for a table cell: _ & % # { } $ ~ ^ \ escaped, the few
 // non-ASCII signs of the tables (— µ ² × ∞ … ≤ ≥ § − ± ≈, Greek letters
 // such as ρ τ θ) and < > | (which the default text font lacks) written as

@@ -1,7 +1,9 @@
 // How a TextTable is written: Markdown and LaTeX (cells escaped for each),
 // and the CSV fields and numbers.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <ostream>
 #include <sstream>
 #include <string>
@@ -77,6 +79,17 @@ std::string CsvField(const std::string& text) {
 
 using detail::report::OneLine;
 
+namespace {
+
+// a, b, ..., z, aa, ab, ...: the markers of long cells.
+std::string MarkerName(std::size_t index) {
+  std::string name;
+  for (std::size_t i = index + 1; i > 0; i = (i - 1) / 26) name.insert(name.begin(), 'a' + (i - 1) % 26);
+  return name;
+}
+
+}  // namespace
+
 std::string TexEscape(const std::string& text) {
   static const std::vector<std::pair<std::string, std::string>> kMap = {
       {"\\", "\\textbackslash{}"}, {"_", "\\_"}, {"&", "\\&"}, {"%", "\\%"}, {"#", "\\#"},
@@ -105,7 +118,30 @@ std::string TexEscape(const std::string& text) {
   return out;
 }
 
-std::string TexTable(const TextTable& t) {
+TextTable WithLongCellsAsNotes(TextTable table, std::size_t max_chars) {
+  std::map<std::string, std::string> markers;  // text -> "(a)"
+  std::vector<std::string> notes;
+  for (auto& row : table.rows) {
+    for (std::size_t i = 0; i < row.size(); ++i) {
+      const bool numeric = i < table.numeric.size() && table.numeric[i];
+      // Characters, not bytes: "²" is one.
+      const std::size_t length = static_cast<std::size_t>(std::count_if(
+          row[i].begin(), row[i].end(), [](char c) { return (c & 0xC0) != 0x80; }));
+      if (numeric || length <= max_chars) continue;
+      auto [it, added] = markers.emplace(row[i], "");
+      if (added) {
+        it->second = "(" + MarkerName(markers.size() - 1) + ")";
+        notes.push_back(it->second + " " + row[i]);
+      }
+      row[i] = it->second;
+    }
+  }
+  table.notes.insert(table.notes.begin(), notes.begin(), notes.end());  // right below it
+  return table;
+}
+
+std::string TexTable(const TextTable& table) {
+  const TextTable t = WithLongCellsAsNotes(table, kMaxTexCellChars);
   std::ostringstream out;
   out << "% " << OneLine(t.title) << "\n";
   if (!t.rows.empty() || !t.omit_if_empty) {

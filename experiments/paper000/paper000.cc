@@ -13,8 +13,6 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr const char* kDash = "—";
 
-double MeanMs(const GroupSummary* g) { return g ? g->metrics.time_mean_s * 1e3 : kNaN; }
-
 // HC4 at default parameters on g's problem configuration, among the groups:
 // what "measured / HC4" divides by.
 const GroupSummary* Hc4Reference(const std::vector<const GroupSummary*>& groups,
@@ -28,13 +26,16 @@ const GroupSummary* Hc4Reference(const std::vector<const GroupSummary*>& groups,
 }
 
 TextTable PublishedTable(const std::vector<GroupSummary>& all_groups) {
+  const std::vector<const GroupSummary*> groups = Paper000Table1Groups(all_groups);
+  std::vector<double> times;
+  for (const GroupSummary* g : groups) times.push_back(RunMedian(*g, RunMeanTime).median);
+  const Unit unit = TimeUnit(times);
   TextTable t;
   t.title = "Paper 000 Table 1: time per CSP, published vs measured (car-track, w = 20)";
-  t.headers = {"algorithm",      "published (ms)",  "measured (ms)",
-               "measured / published", "speed-up (published / measured)",
-               "published / HC4", "measured / HC4", "CSPs", "problem params"};
+  t.headers = {"algorithm", "published (ms)", "measured (" + unit.name + ") [95% CI]",
+               "speed-up (published / measured) [95% CI]", "published / HC4",
+               "measured / HC4 [95% CI]", "runs", "CSPs", "problem params"};
   t.numeric = {false, true, true, true, true, true, true, true, false};
-  const std::vector<const GroupSummary*> groups = Paper000Table1Groups(all_groups);
   // The published algorithms and any other that experiment table1 ran.
   std::vector<std::string> algorithms;
   for (const PublishedTime& p : Paper000PublishedTimes()) algorithms.push_back(p.algorithm);
@@ -53,41 +54,61 @@ TextTable PublishedTable(const std::vector<GroupSummary>& all_groups) {
       if (g->algorithm == algorithm) rows.push_back(g);
     if (rows.empty()) rows.push_back(nullptr);  // a published algorithm not run: dashes
     for (const GroupSummary* g : rows) {
-      const double measured = MeanMs(g);
+      MedianInterval measured, speed_up, to_hc4;
+      if (g) {
+        measured = RunMedian(*g, RunMeanTime);
+        // published / measured falls as measured grows: the interval's ends swap.
+        const double published_s = published * 1e-3;
+        speed_up = measured;
+        speed_up.median = published_s / measured.median;
+        speed_up.lo = published_s / measured.hi;
+        speed_up.hi = published_s / measured.lo;
+        if (const GroupSummary* hc4 = Hc4Reference(groups, *g))
+          to_hc4 = PairedRatio(*g, *hc4, RunMeanTime);
+      }
       t.rows.push_back({WithParams(DisplayOf(algorithm).label, g ? g->algorithm_params : ParamMap{}),
-                        FormatNumber(published), FormatNumber(measured),
-                        FormatRatio(measured, published), FormatRatio(published, measured),
-                        FormatRatio(published, hc4_published),
-                        FormatRatio(measured, g ? MeanMs(Hc4Reference(groups, *g)) : kNaN),
+                        FormatNumber(published), FormatWithInterval(measured, unit.scale),
+                        FormatWithInterval(speed_up), FormatRatio(published, hc4_published),
+                        FormatWithInterval(to_hc4), g ? OkRunsCell(*g) : kDash,
                         g ? std::to_string(g->metrics.steps) : kDash,
                         g ? ParamsCell(g->problem_params) : kDash});
     }
   }
   t.notes.push_back(
-      "Measured: mean solve time per CSP over the ok runs (every seed) of each configuration "
-      "with a run of experiment table1; non-default algorithm parameters follow the label; "
-      "measured / HC4 divides by HC4 at default parameters on the same problem configuration. "
-      "Published: paper 000 Table 1 (one lap, 2000 CSPs, w = 20). — : no such runs in the "
-      "store.");
+      "Measured: each run's mean solve time per CSP, then the median over the ok runs (one "
+      "per seed) of each configuration with a run of experiment table1, with the 95% "
+      "confidence interval of that median (order statistics, from 6 runs on), rounded to the "
+      "interval's leading digit; the speed-up divides the published time by both. Measured / HC4: per "
+      "seed, the run's time over HC4's on the same instance (HC4 at default parameters on the "
+      "same problem configuration), then their median and interval. Non-default algorithm "
+      "parameters follow the label; CSPs: over all the runs. Published: paper 000 Table 1 "
+      "(one lap, 2000 CSPs, w = 20). — : no such runs in the store.");
   return t;
 }
 
 TextTable SweepTable(const std::vector<SweepPoint>& points) {
+  std::vector<double> times;
+  for (const SweepPoint& p : points) times.push_back(p.mean_time_s);
+  const Unit unit = TimeUnit(times);
   TextTable t;
   t.title = "Window sweep on car-track (paper 000 Fig. 2)";
-  t.headers = {"configuration", "w", "runs", "CSPs", "mean area (m²)",
-               "mean area over the window (m²)", "mean time (ms)"};
+  t.headers = {"configuration", "w", "runs", "CSPs", "mean area (m²) [95% CI]",
+               "mean area over the window (m²) [95% CI]",
+               "mean time (" + unit.name + ") [95% CI]"};
   t.numeric = {false, true, true, true, true, true, true};
   for (const SweepPoint& p : points) {
+    const GroupSummary g = Summarise(p.ok_runs);
     t.rows.push_back({p.label, FormatNumber(p.value), std::to_string(p.runs),
-                      std::to_string(p.steps), FormatNumber(p.mean_area),
-                      FormatNumber(p.mean_window_area), FormatNumber(p.mean_time_s * 1e3)});
+                      std::to_string(p.steps), FormatWithInterval(RunMedian(g, RunMeanArea)),
+                      FormatWithInterval(RunMedian(g, RunMeanWindowArea)),
+                      FormatWithInterval(RunMedian(g, RunMeanTime), unit.scale)});
   }
   t.notes.push_back(
-      "mean area: the newest state's box (the real-time localization); mean area over the "
-      "window: the mean x-y area of all the window's states, averaged over the steps (the "
-      "later states smoothed by the window's measurements: paper 004's post-localization "
-      "reading of Fig. 2).");
+      "Each run's mean over its CSPs, then the median over the runs (seeds) with its 95% "
+      "confidence interval (order statistics, from 6 runs on). mean area: the newest state's "
+      "box (the real-time localization); mean area over the window: the mean x-y area of all "
+      "the window's states, averaged over the steps (the later states smoothed by the "
+      "window's measurements: paper 004's post-localization reading of Fig. 2).");
   t.omit_if_empty = true;
   if (points.empty()) t.notes.push_back("No car-track configuration was run at several w.");
   return t;

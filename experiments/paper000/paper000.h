@@ -10,9 +10,9 @@
 //           ok runs, pooled over all its runs (every seed).
 //   window  Fig. 2 (area and time against w): every car-track configuration
 //           (w aside) with an ok run of experiment window, at every w it was
-//           run at. A run two experiments plan is stored under the first,
-//           so specs/default.yaml's hc4 and bc4 at w = 20 are table1's, and
-//           Fig. 2 still shows them.
+//           run at. A run two experiments plan is stored under the first
+//           (specs/default.yaml's window runs half a lap, so its w = 20
+//           runs are its own).
 //
 // The window-sweep table lists every car-track configuration run at two or
 // more w, whatever the experiment (so the GPS-outage sweep is there too).
@@ -68,7 +68,8 @@ std::vector<SweepPoint> Paper000WindowSweep(const std::vector<RunRecord>& runs);
 std::vector<SweepPoint> Paper000Fig2Points(const std::vector<SweepPoint>& sweep);
 
 // The report's tables: Table 1 published vs measured, then the window sweep
-// (Fig. 2 as text, ms per CSP).
+// (Fig. 2 as text): medians over the runs (seeds) with their 95 % intervals
+// (MedianWithInterval), ratios to HC4 paired by seed.
 std::vector<TextTable> Paper000Tables(const std::vector<RunRecord>& runs);
 
 // The figures fig2_window, fig3_corridors and fig4_area.

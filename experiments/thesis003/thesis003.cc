@@ -28,6 +28,16 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr const char* kDash = "—";
 
 TextTable RelaxedTable(const std::vector<RunRecord>& runs) {
+  std::vector<const GroupSummary*> groups;
+  const std::vector<GroupSummary> all = SummariseGroups(runs);
+  std::vector<double> times;
+  for (const GroupSummary& g : all) {
+    if (!HasExperiment(g, kThesis003RelaxedLines) && !HasExperiment(g, kThesis003RelaxedBeacons))
+      continue;
+    groups.push_back(&g);
+    times.push_back(RunMedian(g, RunMeanTime).median);
+  }
+  const Unit unit = TimeUnit(times);
   TextTable t;
   t.title = "Thesis 003: relaxed solvers";
   t.headers = {"configuration",
@@ -35,18 +45,17 @@ TextTable RelaxedTable(const std::vector<RunRecord>& runs) {
                "runs",
                "steps",
                "consistency",
-               "mean area (m²)",
+               "mean area (m²) [95% CI]",
                "mean q",
                "mean true outliers",
                "q ≤ true outliers",
                "empty",
-               "median time (ms)"};
+               "time per step (" + unit.name + ") [95% CI]"};
   t.numeric = {false, false, true, true, true, true, true, true, true, true, true};
-  for (const GroupSummary& g : SummariseGroups(runs)) {
-    if (!HasExperiment(g, kThesis003RelaxedLines) && !HasExperiment(g, kThesis003RelaxedBeacons))
-      continue;
+  for (const GroupSummary* group : groups) {
+    const GroupSummary& g = *group;
     int steps = 0, known = 0, contained = 0, empty = 0, compared = 0, q_within = 0;
-    std::vector<double> areas, qs, outliers, times;
+    std::vector<double> qs, outliers;
     for (const RunRecord* r : g.ok_runs) {
       for (const StepRecord& s : r->steps) {
         ++steps;
@@ -54,9 +63,7 @@ TextTable RelaxedTable(const std::vector<RunRecord>& runs) {
           ++known;
           contained += s.contained;
         }
-        const bool is_empty = IsEmptyEstimate(s);
-        empty += is_empty;
-        if (!is_empty && std::isfinite(s.area)) areas.push_back(s.area);
+        empty += IsEmptyEstimate(s);
         const std::optional<double> q = NumberProperty(s.properties, "q");
         const std::optional<double> k = NumberProperty(s.properties, "true_outliers");
         if (q) qs.push_back(*q);
@@ -65,21 +72,23 @@ TextTable RelaxedTable(const std::vector<RunRecord>& runs) {
           ++compared;
           q_within += *q <= *k;
         }
-        times.push_back(s.solve_time_s);
       }
     }
     t.rows.push_back({WithParams(DisplayOf(g.algorithm).label, g.algorithm_params),
                       WithParams(g.problem, g.problem_params), OkRunsCell(g), std::to_string(steps),
-                      FormatRatio(contained, known), FormatNumber(Mean(areas)), FormatNumber(Mean(qs)),
-                      FormatNumber(Mean(outliers)), FormatRatio(q_within, compared), FormatRatio(empty, steps),
-                      FormatNumber(Quantile(times, 0.5) * 1e3)});
+                      FormatRatio(contained, known), FormatWithInterval(RunMedian(g, RunMeanArea)),
+                      FormatNumber(Mean(qs)), FormatNumber(Mean(outliers)),
+                      FormatRatio(q_within, compared), FormatRatio(empty, steps),
+                      FormatWithInterval(RunMedian(g, RunMeanTime), unit.scale)});
     for (const std::string& p : g.problems) t.items.push_back(ProblemItem(g, p));
   }
   t.notes.push_back(
       "Every configuration with a run of experiment relaxed-lines or relaxed-beacons, over the "
       "steps of its ok runs (every seed); runs: ok runs (of all, when some failed). "
-      "Consistency: share of the steps whose estimate holds the truth. Mean area: over the "
-      "steps with a non-empty estimate. q: the number of measurements the solver found it must "
+      "Consistency: share of the steps whose estimate holds the truth. Mean area (over the "
+      "steps with a non-empty estimate) and time per step: each run's mean, then the median "
+      "over the runs (seeds) with its 95% confidence interval (order statistics, from 6 runs "
+      "on). q: the number of measurements the solver found it must "
       "drop (step property q); true outliers: how many were wrong; q ≤ true outliers: share of "
       "the steps where the solver dropped no more than the truth requires. Empty: share of the "
       "steps with an empty estimate (ICP once an outlier is in). — : no such value (HC4 "

@@ -185,9 +185,13 @@ TEST(Thesis003Test, TableFromHandMadeRuns) {
   };
   const std::string md = Md(runs);
   EXPECT_EQ(MarkdownRow(md, "q-relaxed"),
-            "| q-relaxed | line-intersection {lines=20,outliers=3} | 2 of 3 | 3 | 0.6667 | 4 | 3 | "
+            "| q-relaxed | line-intersection {lines=20,outliers=3} | 2 of 3 | 3 | 0.6667 | 4.5 | 3 | "
             "3 | 0.6667 | 0 | 2 |")
       << md;
+  // Area and time: the median over the runs of each run's mean (areas 3 and
+  // 6, times 2 and 2 ms), in the unit the column's values pick.
+  EXPECT_NE(md.find("| mean area (m²) [95% CI] |"), std::string::npos);
+  EXPECT_NE(md.find("| time per step (ms) [95% CI] |"), std::string::npos);
   EXPECT_EQ(MarkdownRow(md, "HC4"),
             "| HC4 | beacon-ranges {outliers=1,scenario=random} | 1 | 2 | 0.5 | 1 | — | 0.5 | — | "
             "0.5 | 1 |");
