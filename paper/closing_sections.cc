@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "paper/claims.h"
 #include "paper/sections.h"
 #include "report/performance_profile.h"
 #include "report/report.h"
@@ -60,7 +61,8 @@ std::vector<ComparisonRow> PaperComparisons::All() const {
 }
 
 PaperComparisons ComparePapers(const std::vector<RunRecord>& runs) {
-  return {Paper000Comparison(runs), Thesis003Comparison(runs), Paper004Comparison(runs)};
+  return {EvaluateClaims(ClaimsOf("paper000"), runs), Thesis003Comparison(runs),
+          Paper004Comparison(runs)};
 }
 
 std::string TallyTex(const PaperComparisons& comparisons) {

@@ -29,6 +29,11 @@ struct ComparisonRow {
   std::string rule;       // "within a factor 1.5"
   Verdict verdict = Verdict::kNoData;
   std::string reason;  // why it differs, or which spec produces the runs
+  // From a claims file (paper/claims.h); empty for rows made in code.
+  std::string id{};     // "table1-bc3-ratio"
+  std::string where{};  // "Table 1"
+  std::string quote{};  // the paper's words
+  std::string note{};   // e.g. where the source contradicts itself
 };
 
 // How many rows have each verdict.
@@ -51,9 +56,9 @@ bool WithinFactor(double measured, double published, double factor);
 // and reason follow in the list below, numbered like the rows.
 TextTable ComparisonTable(const std::string& title, const std::vector<ComparisonRow>& rows);
 
-// The comparisons of each seed paper, from the runs of a store (with their
-// steps, as LoadRunsFromDirectory gives them).
-std::vector<ComparisonRow> Paper000Comparison(const std::vector<RunRecord>& runs);
+// The comparisons of the seed papers not yet in claims files (paper 000's
+// are experiments/paper000/claims.yaml, paper/claims.h), from the runs of a
+// store (with their steps, as LoadRunsFromDirectory gives them).
 std::vector<ComparisonRow> Thesis003Comparison(const std::vector<RunRecord>& runs);
 std::vector<ComparisonRow> Paper004Comparison(const std::vector<RunRecord>& runs);
 

@@ -7,7 +7,6 @@
 #include <string>
 #include <vector>
 
-#include "experiments/paper000/paper000.h"
 #include "experiments/paper004/paper004.h"
 #include "report/report_testing.h"
 
@@ -23,13 +22,6 @@ const ComparisonRow& Row(const std::vector<ComparisonRow>& rows, const std::stri
   static const ComparisonRow kNone{"(no such row)", "", "", "", Verdict::kNoData, ""};
   ADD_FAILURE() << "no row " << item;
   return kNone;
-}
-
-// A run whose every step has the given x-y area.
-RunRecord WithArea(RunRecord run, double area) {
-  for (StepRecord& s : run.steps) s.area = area;
-  run.metrics = ComputeMetrics(run.steps);
-  return run;
 }
 
 TEST(ComparisonTest, WithinFactorIsSymmetricAndRejectsNonPositive) {
@@ -54,7 +46,7 @@ TEST(ComparisonTest, TallyCountsEachVerdict) {
 
 TEST(ComparisonTest, AnEmptyStoreGivesNoDataRowsThatNameTheirSpec) {
   for (const auto& rows :
-       {Paper000Comparison({}), Thesis003Comparison({}), Paper004Comparison({})}) {
+       {Thesis003Comparison({}), Paper004Comparison({})}) {
     ASSERT_FALSE(rows.empty());
     for (const ComparisonRow& r : rows) {
       EXPECT_EQ(r.verdict, Verdict::kNoData) << r.item;
@@ -66,98 +58,6 @@ TEST(ComparisonTest, AnEmptyStoreGivesNoDataRowsThatNameTheirSpec) {
   const std::vector<ComparisonRow> rows = Paper004Comparison({});  // Row refers into it
   const ComparisonRow& post = Row(rows, "§4.2, Fig. 13: post-localization stays consistent");
   EXPECT_NE(post.reason.find("specs/default.yaml (experiment window)"), std::string::npos) << post.reason;
-}
-
-TEST(ComparisonTest, Table1RatiosToHc4DecideTheVerdicts) {
-  auto t1 = [](RunRecord r) { return InExperiment(std::move(r), kPaper000Table1); };
-  std::vector<RunRecord> runs = {
-      t1(MakeRun("hc4", {}, {}, 1, {0.4e-3})), t1(MakeRun("bc3", {}, {}, 1, {0.8e-3})),
-      t1(MakeRun("bc4", {}, {}, 1, {0.45e-3})), t1(MakeRun("3b-bc4", {}, {}, 1, {1.2}))};
-  std::vector<ComparisonRow> rows = Paper000Comparison(runs);
-  EXPECT_EQ(Row(rows, "Table 1: BC3 / HC4").measured, "2");
-  EXPECT_EQ(Row(rows, "Table 1: BC3 / HC4").verdict, Verdict::kMatch);
-  EXPECT_EQ(Row(rows, "Table 1: 3B-BC4 / HC4").verdict, Verdict::kMatch);  // 3000 vs 2692
-  EXPECT_EQ(Row(rows, "Table 1: algorithms by time").verdict, Verdict::kMatch);
-  EXPECT_EQ(Row(rows, "Table 1: algorithms by time").measured, "HC4 < BC4 < BC3 < 3B-BC4");
-  // 0.4 ms against the published 0.52: within the factor.
-  EXPECT_EQ(Row(rows, "Table 1: HC4, ms per CSP").verdict, Verdict::kMatch);
-  EXPECT_EQ(Row(rows, "Fig. 3: every box holds the truth").verdict, Verdict::kMatch);
-  EXPECT_EQ(Row(rows, "Fig. 4: HC4, BC3 and BC4 give similar areas").verdict, Verdict::kMatch);
-  // Same areas: 3B-BC4 is not tighter.
-  EXPECT_EQ(Row(rows, "Fig. 4: 3B-BC4 slightly tighter than the others").verdict,
-            Verdict::kDiffers);
-
-  runs[1] = t1(MakeRun("bc3", {}, {}, 1, {20e-3}));  // 50 x HC4
-  runs[0] = t1(MakeRun("hc4", {}, {}, 1, {0.02e-3}));
-  rows = Paper000Comparison(runs);
-  EXPECT_EQ(Row(rows, "Table 1: BC3 / HC4").verdict, Verdict::kDiffers);
-  EXPECT_EQ(Row(rows, "Table 1: BC3 / HC4").reason, kNotMeasured);
-  // With the stored work counters the reason is measured: per CSP, from them.
-  runs[0].properties = {{"revise_calls", std::int64_t{240}}};
-  runs[1].properties = {{"revise_calls", std::int64_t{280}},
-                        {"newton_steps", std::int64_t{160}},
-                        {"bisections", std::int64_t{40}}};
-  rows = Paper000Comparison(runs);
-  const std::string reason = Row(rows, "Table 1: BC3 / HC4").reason;
-  EXPECT_NE(reason.find("BC3 revised 280 constraints (HC4: 240)"), std::string::npos) << reason;
-  EXPECT_NE(reason.find("160 Newton steps and 40 bisections"), std::string::npos) << reason;
-  EXPECT_NE(reason.find("HC4 runs 26x faster than published, BC3 0.051x"), std::string::npos)
-      << reason;
-  runs[3].properties = {{"inner_calls", std::int64_t{300}}, {"revise_calls", std::int64_t{24000}}};
-  rows = Paper000Comparison(runs);
-  const std::string three_b = Row(rows, "Table 1: 3B-BC4 / HC4").reason;  // 60000x HC4
-  EXPECT_NE(three_b.find("ran 300 inner contractions (shaving trials) with 24000 revisions, "
-                         "100x HC4's 240, and a revision cost 600x one of HC4's"),
-            std::string::npos)
-      << three_b;
-  const ComparisonRow& absolute = Row(rows, "Table 1: HC4, ms per CSP");
-  EXPECT_EQ(absolute.verdict, Verdict::kDiffers);
-  EXPECT_NE(absolute.reason.find("by construction"), std::string::npos);
-}
-
-TEST(ComparisonTest, Fig2FlatCarriedWindowsCiteTheMemorylessRow) {
-  auto window = [](const std::string& carry, double w, double area) {
-    ParamMap params;
-    if (!carry.empty()) params["carry"] = carry;
-    return InExperiment(
-        WithArea(MakeRun("hc4", params, {{"w", FormatNumber(w)}}, 1, {1e-5 * w, 1e-5 * w}), area),
-        kPaper000Window);
-  };
-  const std::vector<RunRecord> runs = {window("", 1, 16),        window("", 20, 16),
-                                       window("", 50, 16),       window("none", 1, 21.3),
-                                       window("none", 20, 17.8), window("none", 50, 16.8)};
-  const std::vector<ComparisonRow> rows = Paper000Comparison(runs);
-  const ComparisonRow& memoryless = Row(rows, "Fig. 2: area, w = 1 to 20, hc4 {carry=none}");
-  EXPECT_EQ(memoryless.verdict, Verdict::kMatch) << memoryless.measured;
-  const ComparisonRow& carried = Row(rows, "Fig. 2: area, w = 1 to 20, hc4");
-  EXPECT_EQ(carried.verdict, Verdict::kDiffers);
-  EXPECT_EQ(carried.measured, "0 % (16 to 16 m²)");
-  // The reason cites the memoryless row by its number.
-  std::size_t number = 0;
-  for (std::size_t i = 0; i < rows.size(); ++i)
-    if (&rows[i] == &memoryless) number = i + 1;
-  EXPECT_NE(carried.reason.find("carry=none, row " + std::to_string(number) + ")"),
-            std::string::npos)
-      << carried.reason;
-  EXPECT_EQ(Row(rows, "Fig. 2: area, w = 20 to 50, hc4 {carry=none}").verdict, Verdict::kMatch);
-  EXPECT_EQ(Row(rows, "Fig. 2: time per CSP grows linearly with w").verdict, Verdict::kMatch);
-}
-
-// Carried windows read as the mean area over the window's states (the steps'
-// window_mean_area): 10 -> 8.5 m² is paper 000's fall within 5 points.
-TEST(ComparisonTest, Fig2AsTheWindowsMeanArea) {
-  auto window = [](double w, double window_area) {
-    RunRecord r = WithArea(MakeRun("hc4", {}, {{"w", FormatNumber(w)}}, 1, {1e-5, 1e-5}), 16);
-    for (StepRecord& s : r.steps) s.properties.push_back({"window_mean_area", window_area});
-    return InExperiment(std::move(r), kPaper000Window);
-  };
-  const std::vector<ComparisonRow> rows =
-      Paper000Comparison({window(1, 10), window(20, 8.5), window(50, 8.4)});
-  const ComparisonRow& fall = Row(rows, "Fig. 2 as the mean area over the window's states, w = 1 to 20, hc4");
-  EXPECT_EQ(fall.verdict, Verdict::kMatch) << fall.measured;
-  EXPECT_EQ(fall.measured, "-15 % (10 to 8.5 m²)");
-  EXPECT_EQ(Row(rows, "Fig. 2 as the mean area over the window's states, w = 20 to 50, hc4").verdict,
-            Verdict::kMatch);
 }
 
 TEST(ComparisonTest, Paper004ConsistencyFollowsTheSteps) {

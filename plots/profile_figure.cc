@@ -49,7 +49,7 @@ void PlotProfileFigure(const FigureText& text, const std::vector<RunRecord>& run
                 // Long configuration labels: the key beside the plot, at the width of
                 // the paper's text so that its font keeps its size.
                 "set key outside right top noenhanced spacing 0.9\n";
-  RenderPanel(text.name, 6.7, 5, panel, out_dir, out);
+  RenderPanel(text.name, kPrintWidthIn, 4.5, panel, out_dir, out);
 }
 
 }  // namespace icp
