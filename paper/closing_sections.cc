@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "paper/claims.h"
 #include "paper/sections.h"
 #include "report/performance_profile.h"
@@ -69,6 +71,26 @@ std::string TallyTex(const PaperComparisons& comparisons) {
   const std::vector<ComparisonRow> all = comparisons.All();
   return "\\newcommand{\\icpbenchtally}{" + TexEscape(TallyOf(all)) +
          "}\n\\newcommand{\\icpbenchclaims}{" + std::to_string(all.size()) + "}\n";
+}
+
+std::string ClaimsJson(const PaperComparisons& comparisons) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& [paper, rows] : {std::pair{"paper000", &comparisons.paper000},
+                                    std::pair{"thesis003", &comparisons.thesis003},
+                                    std::pair{"paper004", &comparisons.paper004}})
+    for (const ComparisonRow& r : *rows)
+      out.push_back({{"paper", paper},
+                     {"id", r.id},
+                     {"item", r.item},
+                     {"where", r.where},
+                     {"quote", r.quote},
+                     {"published", r.published},
+                     {"measured", r.measured},
+                     {"rule", r.rule},
+                     {"verdict", std::string(ToString(r.verdict))},
+                     {"reason", r.reason},
+                     {"note", r.note}});
+  return out.dump(2) + "\n";
 }
 
 std::string DiscussionTex(const std::vector<ComparisonRow>& rows) {

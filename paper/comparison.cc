@@ -55,8 +55,12 @@ TextTable ComparisonTable(const std::string& title, const std::vector<Comparison
     const std::string n = std::to_string(i + 1);
     t.rows.push_back({n, r.item, r.published, r.measured, std::string(ToString(r.verdict))});
     // The rule and the reason below the table keep its columns narrow.
-    t.items.push_back(n + ". " + r.item + ": " + std::string(ToString(r.verdict)) +
-                      " (rule: " + r.rule + ")" + (r.reason.empty() ? "" : "; " + r.reason));
+    std::string item = n + ". " + r.item;
+    if (!r.quote.empty()) item += " (" + r.where + ": \"" + r.quote + "\")";
+    item += ": " + std::string(ToString(r.verdict)) + " (rule: " + r.rule + ")" +
+            (r.reason.empty() ? "" : "; " + r.reason);
+    if (!r.note.empty()) item += " Note: " + r.note;
+    t.items.push_back(item);
   }
   t.notes.push_back(
       "Each verdict follows its rule, applied by paper/ to the numbers of this store; the rules, "

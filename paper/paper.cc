@@ -38,6 +38,7 @@ PaperSources GeneratePaper(const std::vector<RunRecord>& runs, const std::string
       {std::string(kName) + ".tex", PaperTemplate()},
       {"generated/meta.tex", MetaTex(runs)},
       {"generated/tally.tex", TallyTex(rows)},
+      {"claims.json", ClaimsJson(rows)},
       {"generated/provenance.tex", ProvenanceTex(runs, store_path)},
       {"generated/paper000.tex", Paper000Tex(runs, rows.paper000, figures)},
       {"generated/thesis003.tex", Thesis003Tex(runs, rows.thesis003, figures)},

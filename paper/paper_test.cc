@@ -4,6 +4,7 @@
 #include "paper/paper.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <unistd.h>
 
 #include <filesystem>
@@ -100,6 +101,13 @@ TEST(PaperTest, TheTallyCountsTheComparisonRows) {
   EXPECT_LT(main.find("\\appendix"), main.find("\\input{generated/registry}"));
   EXPECT_LT(main.find("\\appendix"), main.find("\\input{generated/performance}"));
   EXPECT_EQ(main.find("every table and figure"), std::string::npos);
+  // claims.json holds every row, with the claims file's id, place and quote.
+  const nlohmann::json claims = nlohmann::json::parse(files.at("claims.json"));
+  ASSERT_EQ(claims.size(), rows.All().size());
+  EXPECT_EQ(claims[0]["paper"], "paper000");
+  EXPECT_EQ(claims[0]["id"], rows.paper000[0].id);
+  EXPECT_FALSE(claims[0]["quote"].get<std::string>().empty());
+  EXPECT_EQ(claims[0]["verdict"], std::string(ToString(rows.paper000[0].verdict)));
 }
 
 TEST(PaperTest, LongTablesAreCutIntoParts) {

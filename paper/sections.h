@@ -54,6 +54,11 @@ std::string PerformanceTex(const std::vector<RunRecord>& runs, const FigureSet& 
 // \icpbenchtally, "Verdicts: N match, N differ, N no data" over every row,
 // and \icpbenchclaims, their number: what the abstract states.
 std::string TallyTex(const PaperComparisons& comparisons);
+// DIR/paper/claims.json, what the results browser's Claims view shows: one
+// object per row, {paper, id, item, where, quote, published, measured, rule,
+// verdict, reason, note} (id, where, quote and note empty for rows made in
+// code).
+std::string ClaimsJson(const PaperComparisons& comparisons);
 // A paper's discussion: a paragraph for each difference (rows that share a
 // reason share it), what the rows without data need, or that nothing differs.
 std::string DiscussionTex(const std::vector<ComparisonRow>& rows);
