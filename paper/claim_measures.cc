@@ -282,6 +282,7 @@ const ClaimFunctions& ClaimFunctionsRegistry() {
                   {"fastest", MeasureFastest}, {"lowest", MeasureLowest},
                   {"linear_r2", MeasureLinearR2}};
     AddPaper000ClaimFunctions(&f);
+    AddPaper004ClaimFunctions(&f);
     return f;
   }();
   return functions;

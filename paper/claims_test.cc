@@ -293,5 +293,21 @@ TEST(Paper000ClaimsTest, EveryDifferenceHasAReason) {
   EXPECT_GE(differ, 8);
 }
 
+TEST(Paper004ClaimsTest, ConsistencyIsJudgedOnEveryStep) {
+  std::vector<RunRecord> runs = {InExperiment(MakeRun("hc4", {}, {}, 1, {1e-5, 1e-5}), "table1")};
+  EXPECT_EQ(Row(EvaluateClaims(ClaimsOf("paper004"), runs), "eq31-consistent").verdict,
+            Verdict::kMatch);
+  runs[0].steps[1].contained = 0;
+  runs[0].metrics = ComputeMetrics(runs[0].steps);
+  const ComparisonRow r = Row(EvaluateClaims(ClaimsOf("paper004"), runs), "eq31-consistent");
+  EXPECT_EQ(r.verdict, Verdict::kDiffers);
+  EXPECT_NE(r.measured.find("lowest 0.5"), std::string::npos) << r.measured;
+  EXPECT_FALSE(r.reason.empty());
+  // Post-localization needs the window sweep: no data, naming the spec.
+  const ComparisonRow pl = Row(EvaluateClaims(ClaimsOf("paper004"), runs), "pl-narrower");
+  EXPECT_EQ(pl.verdict, Verdict::kNoData);
+  EXPECT_NE(pl.reason.find("experiment window"), std::string::npos) << pl.reason;
+}
+
 }  // namespace
 }  // namespace icp

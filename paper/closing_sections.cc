@@ -64,7 +64,7 @@ std::vector<ComparisonRow> PaperComparisons::All() const {
 
 PaperComparisons ComparePapers(const std::vector<RunRecord>& runs) {
   return {EvaluateClaims(ClaimsOf("paper000"), runs), Thesis003Comparison(runs),
-          Paper004Comparison(runs)};
+          EvaluateClaims(ClaimsOf("paper004"), runs)};
 }
 
 std::string TallyTex(const PaperComparisons& comparisons) {

@@ -57,10 +57,9 @@ bool WithinFactor(double measured, double published, double factor);
 TextTable ComparisonTable(const std::string& title, const std::vector<ComparisonRow>& rows);
 
 // The comparisons of the seed papers not yet in claims files (paper 000's
-// are experiments/paper000/claims.yaml, paper/claims.h), from the runs of a
+// and paper 004's are experiments/<paper>/claims.yaml, paper/claims.h), from the runs of a
 // store (with their steps, as LoadRunsFromDirectory gives them).
 std::vector<ComparisonRow> Thesis003Comparison(const std::vector<RunRecord>& runs);
-std::vector<ComparisonRow> Paper004Comparison(const std::vector<RunRecord>& runs);
 
 }  // namespace icp
 

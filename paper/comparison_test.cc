@@ -7,7 +7,6 @@
 #include <string>
 #include <vector>
 
-#include "experiments/paper004/paper004.h"
 #include "report/report_testing.h"
 
 namespace icp {
@@ -46,7 +45,7 @@ TEST(ComparisonTest, TallyCountsEachVerdict) {
 
 TEST(ComparisonTest, AnEmptyStoreGivesNoDataRowsThatNameTheirSpec) {
   for (const auto& rows :
-       {Thesis003Comparison({}), Paper004Comparison({})}) {
+       {Thesis003Comparison({})}) {
     ASSERT_FALSE(rows.empty());
     for (const ComparisonRow& r : rows) {
       EXPECT_EQ(r.verdict, Verdict::kNoData) << r.item;
@@ -55,20 +54,6 @@ TEST(ComparisonTest, AnEmptyStoreGivesNoDataRowsThatNameTheirSpec) {
           << r.item << ": " << r.reason;
     }
   }
-  const std::vector<ComparisonRow> rows = Paper004Comparison({});  // Row refers into it
-  const ComparisonRow& post = Row(rows, "§4.2, Fig. 13: post-localization stays consistent");
-  EXPECT_NE(post.reason.find("specs/default.yaml (experiment window)"), std::string::npos) << post.reason;
-}
-
-TEST(ComparisonTest, Paper004ConsistencyFollowsTheSteps) {
-  std::vector<RunRecord> runs = {MakeRun("hc4", {}, {}, 1, {1e-5, 1e-5})};
-  const std::string item = "eq. 31: every ICP box holds the truth";
-  EXPECT_EQ(Row(Paper004Comparison(runs), item).verdict, Verdict::kMatch);
-  runs[0].steps[1].contained = 0;
-  runs[0].metrics = ComputeMetrics(runs[0].steps);
-  const ComparisonRow r = Row(Paper004Comparison(runs), item);
-  EXPECT_EQ(r.verdict, Verdict::kDiffers);
-  EXPECT_NE(r.measured.find("lowest 0.5"), std::string::npos) << r.measured;
 }
 
 // A marina run of q-relaxed: steps that hold the truth (1) or miss it (0),

@@ -108,7 +108,8 @@ TextTable SweepTable(const std::vector<SweepPoint>& points) {
       "confidence interval (order statistics, from 6 runs on). mean area: the newest state's "
       "box (the real-time localization); mean area over the window: the mean x-y area of all "
       "the window's states, averaged over the steps (the later states smoothed by the "
-      "window's measurements: paper 004's post-localization reading of Fig. 2).");
+      "window's measurements; not the post-localized area of the paper 004 table, which "
+      "counts each state once, as the last window holding it leaves it).");
   t.omit_if_empty = true;
   if (points.empty()) t.notes.push_back("No car-track configuration was run at several w.");
   return t;

@@ -70,8 +70,10 @@ TextTable PostLocalizationTable(const std::vector<RunRecord>& runs) {
   }
   t.notes.push_back(
       "RTL (real-time localization): the newest state's box at each step. PL "
-      "(post-localization, paper 004 §4.2): each state's box once the window has moved past "
-      "it, i.e. narrowed by the later measurements of every window that held it; states: "
+      "(post-localization, paper 004 §4.2): each state's box as the last window that held it "
+      "leaves it. With carried windows (carry=first) that box holds what the earlier windows "
+      "knew and the later measurements add; with memoryless ones (carry=none) only that "
+      "window's measurements, so it can be wider than the state's real-time box. States: "
       "how many left a window (the last w of a drive never do). Consistent: the box holds "
       "the true state (eq. 31, heading modulo 2π); width: the mean of hi − lo of the "
       "interval error (eq. 30). Pooled over the ok runs (every seed) of each configuration.");
