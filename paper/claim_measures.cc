@@ -25,15 +25,10 @@ std::string Metric(const YAML::Node& measure) {
   return measure["metric"].as<std::string>();
 }
 
-// The selectors under key, one or a list.
+// The selectors under key; the measure needs at least one.
 std::vector<RunSelector> Selectors(const YAML::Node& measure, const char* key) {
-  const YAML::Node n = measure[key];
-  if (!n) throw ClaimsError(std::string("the measure needs '") + key + "'");
-  std::vector<RunSelector> out;
-  if (n.IsSequence())
-    for (const YAML::Node& e : n) out.push_back(ParseSelector(e));
-  else
-    out.push_back(ParseSelector(n));
+  std::vector<RunSelector> out = SelectorsUnder(measure, key);
+  if (out.empty()) throw ClaimsError(std::string("the measure needs '") + key + "'");
   return out;
 }
 

@@ -195,16 +195,21 @@ bool Selects(const RunSelector& s, const RunSpec& spec, const std::string& exper
   return true;
 }
 
+std::vector<RunSelector> SelectorsUnder(const YAML::Node& node, const char* key) {
+  std::vector<RunSelector> out;
+  const YAML::Node n = node[key];
+  if (!n) return out;
+  if (n.IsSequence())
+    for (const YAML::Node& e : n) out.push_back(ParseSelector(e));
+  else
+    out.push_back(ParseSelector(n));
+  return out;
+}
+
 std::vector<RunSelector> SelectorsOf(const YAML::Node& measure) {
   std::vector<RunSelector> out;
-  for (const char* key : {"runs", "of", "from", "to"}) {
-    const YAML::Node n = measure[key];
-    if (!n) continue;
-    if (n.IsSequence())
-      for (const YAML::Node& e : n) out.push_back(ParseSelector(e));
-    else
-      out.push_back(ParseSelector(n));
-  }
+  for (const char* key : {"runs", "of", "from", "to"})
+    for (RunSelector& s : SelectorsUnder(measure, key)) out.push_back(std::move(s));
   return out;
 }
 

@@ -125,8 +125,11 @@ RunSelector ParseSelector(const YAML::Node& node);
 bool Selects(const RunSelector& selector, const RunSpec& spec, const std::string& experiment);
 // "{experiment window, hc4 {carry=none}, car-track {w=20}}".
 std::string SelectorText(const RunSelector& selector);
+// The selectors under one key of a measure (one or a list); none when the
+// key is absent.
+std::vector<RunSelector> SelectorsUnder(const YAML::Node& node, const char* key);
 // The selectors a measure (or an if_differs) names under runs, of, from and
-// to, each one or a list.
+// to.
 std::vector<RunSelector> SelectorsOf(const YAML::Node& measure);
 
 // The messages for selectors of a claims file that no run of the spec
