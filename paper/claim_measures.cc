@@ -5,6 +5,8 @@
 #include <limits>
 #include <optional>
 
+#include "harness/metrics.h"
+
 namespace icp {
 
 namespace {
@@ -229,6 +231,13 @@ double RunMetric(const RunRecord& run, const std::string& metric) {
   if (metric == "area") return RunMeanArea(run);
   if (metric == "consistency") return run.metrics.consistency_rate;
   if (metric == "centre_rmse") return run.metrics.centre_rmse;
+  if (metric == "run_time_s") return run.metrics.time_mean_s * run.metrics.steps;
+  if (metric == "median_centre_error") {
+    std::vector<double> errors;
+    for (const StepRecord& s : run.steps)
+      if (std::isfinite(s.centre_error)) errors.push_back(s.centre_error);
+    return errors.empty() ? kNaN : Quantile(errors, 0.5);
+  }
   if (metric.rfind("property:", 0) == 0)
     return NumberProperty(run.properties, metric.substr(9)).value_or(kNaN);
   throw ClaimsError("unknown metric '" + metric + "'");
@@ -254,7 +263,8 @@ std::string UnitOf(const std::string& metric) {
   if (metric == "time_ms") return " ms";
   if (metric == "time_us") return " µs";
   if (metric == "area") return " m²";
-  if (metric == "centre_rmse") return " m";
+  if (metric == "centre_rmse" || metric == "median_centre_error") return " m";
+  if (metric == "run_time_s") return " s";
   return "";
 }
 
@@ -264,8 +274,14 @@ std::string LabelOf(const RunSelector& s, const GroupSummary* group) {
   return WithParams(DisplayOf(group->algorithm).label, group->algorithm_params);
 }
 
+RunSelector ExplainedSelector(const Claim& claim, const char* key) {
+  const YAML::Node node = claim.if_differs[key] ? claim.if_differs[key] : claim.measure[key];
+  if (!node) throw ClaimsError(std::string("the explainer needs '") + key + "'");
+  return ParseSelector(node);
+}
+
 std::string MissingRuns(const ClaimContext& context, const RunSelector& s) {
-  return "no ok run matches " + SelectorText(s) + ": icpbench run " + context.file.spec +
+  return "no ok run matches " + SelectorText(s) + ": icpbench run " + context.spec +
          " produces them";
 }
 
@@ -277,6 +293,7 @@ const ClaimFunctions& ClaimFunctionsRegistry() {
                   {"fastest", MeasureFastest}, {"lowest", MeasureLowest},
                   {"linear_r2", MeasureLinearR2}};
     AddPaper000ClaimFunctions(&f);
+    AddThesis003ClaimFunctions(&f);
     AddPaper004ClaimFunctions(&f);
     return f;
   }();

@@ -14,8 +14,9 @@
 //   linear_r2  over a problem parameter (`over`), the R² of the line through
 //              (value, median metric), the lowest over the list
 //
-// Metrics: time_ms, time_us (mean solve time per step), area (mean x-y area,
-// m²), consistency (share of steps holding the truth), centre_rmse (m), or
+// Metrics: time_ms, time_us (mean solve time per step), run_time_s (solve
+// time summed over a run), area (mean x-y area, m²), consistency (share of
+// steps holding the truth), centre_rmse, median_centre_error (m), or
 // property:NAME (a run property). A paper's own measures and explainers are
 // in paper/<paper>_claims.cc.
 #ifndef ICPBENCH_PAPER_CLAIM_MEASURES_H_
@@ -46,12 +47,17 @@ std::string UnitOf(const std::string& metric);
 // the algorithm's display label with its parameters.
 std::string LabelOf(const RunSelector& s, const GroupSummary* group);
 
+// The selector under key of an explainer's claim: its if_differs names it,
+// else its measure; throws ClaimsError when neither does.
+RunSelector ExplainedSelector(const Claim& claim, const char* key);
+
 // The missing-data text of a selector: "no ok run matches {...}: icpbench
 // run SPEC produces them".
 std::string MissingRuns(const ClaimContext& context, const RunSelector& s);
 
 // Each paper's measures and explainers (paper/<paper>_claims.cc).
 void AddPaper000ClaimFunctions(ClaimFunctions* functions);
+void AddThesis003ClaimFunctions(ClaimFunctions* functions);
 void AddPaper004ClaimFunctions(ClaimFunctions* functions);
 
 }  // namespace icp

@@ -76,7 +76,7 @@ Claim ParseClaim(const YAML::Node& node, const std::string& source) {
   std::string where = At(source, node);
   CheckKeys(node,
             {"id", "item", "where", "quote", "published", "published_text", "measure", "rule",
-             "tolerance", "if_differs", "note"},
+             "tolerance", "if_differs", "note", "spec"},
             where);
   Claim c;
   c.id = Text(node, "id", where);
@@ -85,6 +85,7 @@ Claim ParseClaim(const YAML::Node& node, const std::string& source) {
   c.where = Text(node, "where", where);
   c.quote = Text(node, "quote", where);
   c.note = Text(node, "note", where, false);
+  c.spec = Text(node, "spec", where, false);
   const std::string published = Text(node, "published", where);
   if (!AsNumber(published, &c.published)) c.published_text = published;
   if (node["published_text"]) c.published_text = Text(node, "published_text", where);
@@ -251,12 +252,20 @@ const ClaimsFile& ClaimsOf(const std::string& paper) {
   throw std::out_of_range("no claims file for " + paper);
 }
 
-ClaimContext::ClaimContext(const std::vector<RunRecord>& r, const ClaimsFile& f)
-    : runs(r), groups(SummariseGroups(r)), file(f) {}
+const std::string& ClaimsFile::SpecOf(const Claim& claim) const {
+  return claim.spec.empty() ? spec : claim.spec;
+}
 
-std::vector<std::string> UnplannedSelectors(const ClaimsFile& file, const Spec& spec) {
+ClaimContext::ClaimContext(const std::vector<RunRecord>& r)
+    : runs(r), groups(SummariseGroups(r)) {}
+
+std::vector<std::string> UnplannedSelectors(const ClaimsFile& file, const std::string& source_dir) {
   std::vector<std::string> out;
+  std::map<std::string, Spec> specs;
   for (const Claim& c : file.claims) {
+    const std::string& path = file.SpecOf(c);
+    if (!specs.count(path)) specs.emplace(path, LoadSpec(source_dir + "/" + path));
+    const Spec& spec = specs.at(path);
     std::vector<RunSelector> selectors = SelectorsOf(c.measure);
     for (const RunSelector& s : SelectorsOf(c.if_differs)) selectors.push_back(s);
     for (const RunSelector& s : selectors) {
@@ -264,7 +273,7 @@ std::vector<std::string> UnplannedSelectors(const ClaimsFile& file, const Spec& 
         return p.skip_reason.empty() && Selects(s, WithoutDefaults(p.spec), p.experiment);
       });
       if (!planned)
-        out.push_back("claim '" + c.id + "': no run of " + spec.file + " matches " +
+        out.push_back("claim '" + c.id + "': no run of " + path + " matches " +
                       SelectorText(s));
     }
   }
@@ -299,10 +308,15 @@ std::string RuleText(const Claim& c) {
 
 std::vector<ComparisonRow> EvaluateClaims(const ClaimsFile& file,
                                           const std::vector<RunRecord>& runs) {
-  const ClaimContext context(runs, file);
+  ClaimContext context(runs);
+  return EvaluateClaims(file, context);
+}
+
+std::vector<ComparisonRow> EvaluateClaims(const ClaimsFile& file, ClaimContext& context) {
   const ClaimFunctions& functions = ClaimFunctionsRegistry();
   std::vector<ComparisonRow> rows;
   for (const Claim& c : file.claims) {
+    context.spec = file.SpecOf(c);
     ComparisonRow r{c.item, c.published_text, "—", RuleText(c), Verdict::kNoData, ""};
     r.id = c.id, r.where = c.where, r.quote = c.quote, r.note = c.note;
     Measurement m;

@@ -14,6 +14,8 @@
 //     tolerance: "ratios cancel the machine; 1.5 allows another implementation"
 //     if_differs: {explain: bc3_work}   # or {because: "..."}: by construction
 //     note: "..."                       # optional: e.g. where the source contradicts itself
+//     spec: specs/marina.yaml           # optional: the spec making this claim's runs,
+//                                       # when not the file's
 //
 // Rules: within_factor F (|log(m/p)| <= log F; both positive), at_least X,
 // at_most X, below X, between [lo, hi], equals X, same_text (the measured
@@ -35,6 +37,7 @@
 
 #include <limits>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -71,6 +74,7 @@ struct Claim {
   std::string explain;         // a registered explainer (its keys in if_differs), or
   std::string because;         // a difference by construction
   YAML::Node if_differs;       // the explainer's keys
+  std::string spec;            // the spec making its runs; "": the file's
 };
 
 struct ClaimsFile {
@@ -79,6 +83,8 @@ struct ClaimsFile {
   std::string spec;   // the spec whose runs the claims read ("specs/default.yaml")
   std::string source; // where the text came from (errors)
   std::vector<Claim> claims;
+  // The spec that makes a claim's runs: its own, else the file's.
+  const std::string& SpecOf(const Claim& claim) const;
 };
 
 // Parses and checks a claims file: every key known, every measure and
@@ -101,13 +107,25 @@ struct Measurement {
   std::string missing;  // non-empty: no data
 };
 
-// What measures and explainers see: the store's runs and their groups.
+// What measures and explainers see: the store's runs and their groups,
+// summarised once per store, and the spec that makes the runs of the claim
+// being evaluated (MissingRuns names it). Measures that pool runs a costly
+// way keep the result in `cache` (Cached).
 struct ClaimContext {
   const std::vector<RunRecord>& runs;
   std::vector<GroupSummary> groups;  // SummariseGroups(runs)
-  const ClaimsFile& file;
-  explicit ClaimContext(const std::vector<RunRecord>& r, const ClaimsFile& f);
+  std::string spec;
+  mutable std::map<std::string, std::shared_ptr<const void>> cache;
+  explicit ClaimContext(const std::vector<RunRecord>& r);
 };
+
+// What make() returns, computed once per context under key.
+template <typename T, typename Make>
+const T& Cached(const ClaimContext& context, const std::string& key, Make make) {
+  std::shared_ptr<const void>& slot = context.cache[key];
+  if (!slot) slot = std::make_shared<const T>(make());
+  return *static_cast<const T*>(slot.get());
+}
 
 using MeasureFn = Measurement (*)(const YAML::Node& measure, const ClaimContext& context);
 // The measured reason of a difference; "" when the store cannot tell.
@@ -132,11 +150,14 @@ std::vector<RunSelector> SelectorsUnder(const YAML::Node& node, const char* key)
 // to.
 std::vector<RunSelector> SelectorsOf(const YAML::Node& measure);
 
-// The messages for selectors of a claims file that no run of the spec
-// matches ("claim 'ID': no run of specs/default.yaml matches {...}").
-std::vector<std::string> UnplannedSelectors(const ClaimsFile& file, const Spec& spec);
+// The messages for selectors of a claims file that no run of the claim's
+// spec (read under source_dir) matches ("claim 'ID': no run of
+// specs/default.yaml matches {...}").
+std::vector<std::string> UnplannedSelectors(const ClaimsFile& file, const std::string& source_dir);
 
-// Evaluates every claim of the file against the runs.
+// Evaluates every claim of the file against the context's runs.
+std::vector<ComparisonRow> EvaluateClaims(const ClaimsFile& file, ClaimContext& context);
+// The same with a context of its own (one file, or a test).
 std::vector<ComparisonRow> EvaluateClaims(const ClaimsFile& file,
                                           const std::vector<RunRecord>& runs);
 

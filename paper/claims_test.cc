@@ -9,11 +9,13 @@
 #include <vector>
 
 #include "paper/claim_measures.h"
+#include "paper/claims_testing.h"
 #include "report/report_testing.h"
 
 namespace icp {
 namespace {
 
+using testing::ClaimRow;
 using testing::InExperiment;
 using testing::MakeRun;
 
@@ -109,12 +111,12 @@ TEST(ClaimsRuleTest, EachRuleDecidesOnItsBounds) {
   EXPECT_EQ(RuleText(RuleClaim("between", {0.8, 1})), "between 0.8 and 1");
 }
 
-TEST(BuiltInClaimsTest, EveryFileParsesAndEverySelectorIsPlannedByTheDefaultSpec) {
+TEST(BuiltInClaimsTest, EveryFileParsesAndEverySelectorIsPlannedByItsSpec) {
   ASSERT_FALSE(BuiltInClaims().empty());
-  const Spec spec = LoadSpec(std::string(ICPBENCH_TEST_SOURCE_DIR) + "/specs/default.yaml");
   for (const ClaimsFile& f : BuiltInClaims()) {
     EXPECT_FALSE(f.claims.empty()) << f.source;
-    for (const std::string& message : UnplannedSelectors(f, spec)) ADD_FAILURE() << message;
+    for (const std::string& message : UnplannedSelectors(f, ICPBENCH_TEST_SOURCE_DIR))
+      ADD_FAILURE() << message;
   }
   EXPECT_EQ(ClaimsOf("paper000").paper, "paper000");
   EXPECT_THROW(ClaimsOf("paper999"), std::out_of_range);
@@ -134,14 +136,6 @@ TEST(SelectorTest, MatchesExperimentAlgorithmAndParameters) {
   const RunSelector by_default = ParseSelector(YAML::Load(
       "{experiment: window, problem_params: {w: " + ProblemDefaults("car-track")["w"] + "}}"));
   EXPECT_TRUE(Selects(by_default, {"hc4", {}, "car-track", {}, 1}, "window"));
-}
-
-const ComparisonRow& Row(const std::vector<ComparisonRow>& rows, const std::string& id) {
-  for (const ComparisonRow& r : rows)
-    if (r.id == id) return r;
-  static const ComparisonRow kNone{"(no such row)", "", "", "", Verdict::kNoData, ""};
-  ADD_FAILURE() << "no row " << id;
-  return kNone;
 }
 
 // A run whose every step has the given x-y area and GPS box widths.
@@ -181,20 +175,20 @@ TEST(Paper000ClaimsTest, AnEmptyStoreGivesNoDataRowsThatNameTheSpec) {
 TEST(Paper000ClaimsTest, Table1RatiosArePairedBySeedAndDecideTheVerdicts) {
   std::vector<RunRecord> runs = Table1(0.4e-3, 0.8e-3, 0.45e-3, 1.2);
   std::vector<ComparisonRow> rows = EvaluateClaims(ClaimsOf("paper000"), runs);
-  EXPECT_EQ(Row(rows, "table1-bc3-ratio").verdict, Verdict::kMatch);
-  EXPECT_NE(Row(rows, "table1-bc3-ratio").measured.find("2"), std::string::npos);
-  EXPECT_EQ(Row(rows, "table1-3b-ratio").verdict, Verdict::kMatch);  // 3000 vs 2692
-  EXPECT_FALSE(Row(rows, "table1-3b-ratio").note.empty());          // the source's contradiction
-  EXPECT_EQ(Row(rows, "table1-quickest").verdict, Verdict::kMatch);
-  EXPECT_EQ(Row(rows, "table1-hc4-ms").verdict, Verdict::kMatch);  // 0.4 against 0.52
-  EXPECT_EQ(Row(rows, "table1-3b-not-real-time").verdict, Verdict::kMatch);  // 1200 ms
-  EXPECT_EQ(Row(rows, "fig3-consistent").verdict, Verdict::kMatch);
-  EXPECT_EQ(Row(rows, "fig4-similar").verdict, Verdict::kMatch);
+  EXPECT_EQ(ClaimRow(rows, "table1-bc3-ratio").verdict, Verdict::kMatch);
+  EXPECT_NE(ClaimRow(rows, "table1-bc3-ratio").measured.find("2"), std::string::npos);
+  EXPECT_EQ(ClaimRow(rows, "table1-3b-ratio").verdict, Verdict::kMatch);  // 3000 vs 2692
+  EXPECT_FALSE(ClaimRow(rows, "table1-3b-ratio").note.empty());          // the source's contradiction
+  EXPECT_EQ(ClaimRow(rows, "table1-quickest").verdict, Verdict::kMatch);
+  EXPECT_EQ(ClaimRow(rows, "table1-hc4-ms").verdict, Verdict::kMatch);  // 0.4 against 0.52
+  EXPECT_EQ(ClaimRow(rows, "table1-3b-not-real-time").verdict, Verdict::kMatch);  // 1200 ms
+  EXPECT_EQ(ClaimRow(rows, "fig3-consistent").verdict, Verdict::kMatch);
+  EXPECT_EQ(ClaimRow(rows, "fig4-similar").verdict, Verdict::kMatch);
   // Equal areas: 3B-BC4 is not better; 2.5 times smaller is not "slightly".
-  EXPECT_EQ(Row(rows, "fig4-3b-slightly-better").verdict, Verdict::kDiffers);
+  EXPECT_EQ(ClaimRow(rows, "fig4-3b-slightly-better").verdict, Verdict::kDiffers);
   for (RunRecord& r : runs)
     if (r.spec.algorithm == "3b-bc4") r = WithArea(std::move(r), 6.4);
-  const ComparisonRow better = Row(EvaluateClaims(ClaimsOf("paper000"), runs), "fig4-3b-slightly-better");
+  const ComparisonRow better = ClaimRow(EvaluateClaims(ClaimsOf("paper000"), runs), "fig4-3b-slightly-better");
   EXPECT_EQ(better.verdict, Verdict::kDiffers);
   EXPECT_NE(better.reason.find("measured mean widths, 3B-BC4 against HC4: x 2 against 2;"),
             std::string::npos)
@@ -214,22 +208,22 @@ TEST(Paper000ClaimsTest, Table1RatiosArePairedBySeedAndDecideTheVerdicts) {
   runs[0].steps[1].contained = 0;
   runs[0].metrics = ComputeMetrics(runs[0].steps);
   rows = EvaluateClaims(ClaimsOf("paper000"), runs);
-  const ComparisonRow& bc3 = Row(rows, "table1-bc3-ratio");
+  const ComparisonRow& bc3 = ClaimRow(rows, "table1-bc3-ratio");
   EXPECT_EQ(bc3.verdict, Verdict::kDiffers);
   EXPECT_NE(bc3.reason.find("BC3 revised 280 constraints (HC4 240)"), std::string::npos)
       << bc3.reason;
   EXPECT_NE(bc3.reason.find("160 Newton steps and 40 bisections"), std::string::npos);
-  const ComparisonRow& real_time = Row(rows, "table1-3b-not-real-time");
+  const ComparisonRow& real_time = ClaimRow(rows, "table1-3b-not-real-time");
   EXPECT_EQ(real_time.verdict, Verdict::kDiffers);
   EXPECT_NE(real_time.reason.find("ran 300 inner contractions (shaving trials) with 24000 "
                                   "revisions, 100x HC4's, and a revision cost 2x one of HC4's"),
             std::string::npos)
       << real_time.reason;
-  const ComparisonRow& consistent = Row(rows, "fig3-consistent");
+  const ComparisonRow& consistent = ClaimRow(rows, "fig3-consistent");
   EXPECT_EQ(consistent.verdict, Verdict::kDiffers);  // one step of one seed is enough
   EXPECT_NE(consistent.measured.find("lowest 0.8333"), std::string::npos) << consistent.measured;
-  EXPECT_EQ(Row(rows, "table1-hc4-ms").verdict, Verdict::kDiffers);
-  EXPECT_NE(Row(rows, "table1-hc4-ms").reason.find("by construction"), std::string::npos);
+  EXPECT_EQ(ClaimRow(rows, "table1-hc4-ms").verdict, Verdict::kDiffers);
+  EXPECT_NE(ClaimRow(rows, "table1-hc4-ms").reason.find("by construction"), std::string::npos);
 }
 
 TEST(Paper000ClaimsTest, FlatCarriedWindowsDifferWithTheMemorylessFallAsTheirReason) {
@@ -249,13 +243,13 @@ TEST(Paper000ClaimsTest, FlatCarriedWindowsDifferWithTheMemorylessFallAsTheirRea
              {"none", 1, 21.3}, {"none", 20, 17.8}, {"none", 200, 17.1}})
       runs.push_back(window(carry, w, area, seed));
   const std::vector<ComparisonRow> rows = EvaluateClaims(ClaimsOf("paper000"), runs);
-  const ComparisonRow& fall = Row(rows, "fig2-fall-1-20");
+  const ComparisonRow& fall = ClaimRow(rows, "fig2-fall-1-20");
   EXPECT_EQ(fall.verdict, Verdict::kDiffers);
   EXPECT_NE(fall.measured.find("0 %"), std::string::npos) << fall.measured;
   EXPECT_NE(fall.reason.find("16.43 %"), std::string::npos) << fall.reason;  // 1 - 17.8 / 21.3
   EXPECT_NE(fall.reason.find("which the rule accepts"), std::string::npos) << fall.reason;
   EXPECT_NE(fall.reason.find("eq. 14"), std::string::npos);
-  const ComparisonRow& further = Row(rows, "fig2-fall-20-200");
+  const ComparisonRow& further = ClaimRow(rows, "fig2-fall-20-200");
   EXPECT_EQ(further.verdict, Verdict::kDiffers);  // 3.9 % memoryless
   EXPECT_NE(further.reason.find("which the rule accepts"), std::string::npos) << further.reason;
 }
@@ -295,16 +289,16 @@ TEST(Paper000ClaimsTest, EveryDifferenceHasAReason) {
 
 TEST(Paper004ClaimsTest, ConsistencyIsJudgedOnEveryStep) {
   std::vector<RunRecord> runs = {InExperiment(MakeRun("hc4", {}, {}, 1, {1e-5, 1e-5}), "table1")};
-  EXPECT_EQ(Row(EvaluateClaims(ClaimsOf("paper004"), runs), "eq31-consistent").verdict,
+  EXPECT_EQ(ClaimRow(EvaluateClaims(ClaimsOf("paper004"), runs), "eq31-consistent").verdict,
             Verdict::kMatch);
   runs[0].steps[1].contained = 0;
   runs[0].metrics = ComputeMetrics(runs[0].steps);
-  const ComparisonRow r = Row(EvaluateClaims(ClaimsOf("paper004"), runs), "eq31-consistent");
+  const ComparisonRow r = ClaimRow(EvaluateClaims(ClaimsOf("paper004"), runs), "eq31-consistent");
   EXPECT_EQ(r.verdict, Verdict::kDiffers);
   EXPECT_NE(r.measured.find("lowest 0.5"), std::string::npos) << r.measured;
   EXPECT_FALSE(r.reason.empty());
   // Post-localization needs the window sweep: no data, naming the spec.
-  const ComparisonRow pl = Row(EvaluateClaims(ClaimsOf("paper004"), runs), "pl-narrower");
+  const ComparisonRow pl = ClaimRow(EvaluateClaims(ClaimsOf("paper004"), runs), "pl-narrower");
   EXPECT_EQ(pl.verdict, Verdict::kNoData);
   EXPECT_NE(pl.reason.find("experiment window"), std::string::npos) << pl.reason;
 }

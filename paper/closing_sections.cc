@@ -63,8 +63,10 @@ std::vector<ComparisonRow> PaperComparisons::All() const {
 }
 
 PaperComparisons ComparePapers(const std::vector<RunRecord>& runs) {
-  return {EvaluateClaims(ClaimsOf("paper000"), runs), Thesis003Comparison(runs),
-          EvaluateClaims(ClaimsOf("paper004"), runs)};
+  ClaimContext context(runs);  // one summary of the store for every paper
+  return {EvaluateClaims(ClaimsOf("paper000"), context),
+          EvaluateClaims(ClaimsOf("thesis003"), context),
+          EvaluateClaims(ClaimsOf("paper004"), context)};
 }
 
 std::string TallyTex(const PaperComparisons& comparisons) {

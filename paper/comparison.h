@@ -56,11 +56,6 @@ bool WithinFactor(double measured, double published, double factor);
 // and reason follow in the list below, numbered like the rows.
 TextTable ComparisonTable(const std::string& title, const std::vector<ComparisonRow>& rows);
 
-// The comparisons of the seed papers not yet in claims files (paper 000's
-// and paper 004's are experiments/<paper>/claims.yaml, paper/claims.h), from the runs of a
-// store (with their steps, as LoadRunsFromDirectory gives them).
-std::vector<ComparisonRow> Thesis003Comparison(const std::vector<RunRecord>& runs);
-
 }  // namespace icp
 
 #endif  // ICPBENCH_PAPER_COMPARISON_H_

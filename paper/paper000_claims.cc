@@ -16,16 +16,9 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The selector under key: the claim's if_differs names it, else its measure.
-RunSelector SelectorOf(const Claim& claim, const char* key) {
-  const YAML::Node node = claim.if_differs[key] ? claim.if_differs[key] : claim.measure[key];
-  if (!node) throw ClaimsError(std::string("the explainer needs '") + key + "'");
-  return ParseSelector(node);
-}
-
 // The one configuration the selector under key picks; throws when none.
 const GroupSummary& Group(const Claim& claim, const char* key, const ClaimContext& context) {
-  const GroupSummary* g = OnlyMatch(context, SelectorOf(claim, key));
+  const GroupSummary* g = OnlyMatch(context, ExplainedSelector(claim, key));
   if (!g) throw ClaimsError(std::string("no configuration for '") + key + "'");
   return *g;
 }
@@ -62,7 +55,7 @@ Measurement MeasureGpsWidthRatio(const YAML::Node& measure, const ClaimContext& 
   const double x = MedianOver(*g, ratio("x")), y = MedianOver(*g, ratio("y"));
   if (std::isnan(x) || std::isnan(y)) {
     m.missing = "the runs record no GPS box (car-track's step annotations): rerun " +
-                context.file.spec;
+                context.spec;
     return m;
   }
   m.value = std::max(x, y);
@@ -151,7 +144,7 @@ std::string GpsBoxArea(const Claim& claim, const Measurement& measured,
 std::string ThreeBWidths(const Claim& claim, const Measurement&, const ClaimContext& context) {
   const GroupSummary& three_b = Group(claim, "runs", context);
   const GroupSummary& other = Group(claim, "of", context);
-  std::string out = "measured mean widths, 3B-BC4 against " + LabelOf(SelectorOf(claim, "of"), &other) + ":";
+  std::string out = "measured mean widths, 3B-BC4 against " + LabelOf(ExplainedSelector(claim, "of"), &other) + ":";
   std::string best;
   double best_ratio = 2;
   for (const char* var : {"x", "y", "theta"}) {

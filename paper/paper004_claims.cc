@@ -33,7 +33,10 @@ Measurement MeasurePostLocalization(const YAML::Node& measure, const ClaimContex
   Measurement m;
   int points = 0;
   std::string which;
-  for (const PostLocalizationPoint& p : Paper004PostLocalization(context.runs)) {
+  const auto& all_points = Cached<std::vector<PostLocalizationPoint>>(
+      context, "paper004/post_localization",
+      [&] { return Paper004PostLocalization(context.runs); });
+  for (const PostLocalizationPoint& p : all_points) {
     if (!Picks(selectors, p.point)) continue;
     const double v = quantity == "consistency" ? p.post.consistency_rate
                                                : WidthSum(p.post) / WidthSum(p.real_time);

@@ -285,6 +285,34 @@ TEST(FiguresTest, SweepNamesTheRunsItsWindowPanelLacks) {
   fs::remove_all(dir);
 }
 
+// Six seeds or more give each point of the sweep its 95 % interval, and the
+// panel titles say so; the parameters every line shares go to the title.
+TEST(FiguresTest, SweepPanelsClaimIntervalsOnlyWithSixSeeds) {
+  if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
+  const fs::path dir = TempDir("figures_sweep_seeds");
+  fs::create_directories(dir);
+  for (const int seeds : {3, 6}) {
+    std::vector<RunRecord> runs;
+    for (const auto& [a, time_s] : {std::pair{"hc4", 1e-5}, std::pair{"bc4", 2e-5}})
+      for (const char* w : {"1", "5"})
+        for (int seed = 1; seed <= seeds; ++seed) {
+          runs.push_back(MakeRun(a, "car-track", {{"w", w}, {"steps", "20"}}, seed, 20,
+                                 time_s * seed, 1));
+          runs.back().spec_file = "specs/t.yaml#window";
+        }
+    PlotOutput out;
+    PlotSweepFigure({"sweep", "", "none"}, "w", ParamSweep(runs, "car-track", "w"),
+                    dir.string(), &out);
+    EXPECT_EQ(out.files, FigureFiles(dir, {"sweep"}));
+    const std::string title = seeds >= 6 ? " (median of seeds, 95 % CI)" : "";
+    EXPECT_EQ(out.messages, (std::vector<std::string>{
+                                "sweep: note: hc4 = bc4 draw the same values (in 'Mean x-y area "
+                                "of the newest state" + title + "') and are drawn once"}))
+        << seeds << " seeds";
+  }
+  fs::remove_all(dir);
+}
+
 // A degenerate accumulator (one cell, one row or column of cells, a
 // zero-width side) draws its cells without a gnuplot warning: gnuplot's
 // image needs 2 x 2 points and a range of non-zero width.

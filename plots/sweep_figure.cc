@@ -1,8 +1,10 @@
 // The sweep figure: mean areas and mean time per CSP against the value of a
-// swept problem parameter, one line per configuration; configurations whose
-// line coincides drawn once under a joined label.
+// swept problem parameter, one line per configuration at the median of its
+// seeds' means with the 95 % interval of that median as error bars;
+// configurations whose line coincides drawn once under a joined label.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <string>
 #include <utility>
@@ -20,29 +22,66 @@ namespace {
 // configurations with equal values; log axes where the values span decades.
 struct Quantity {
   std::string title, y_label, key;
-  std::vector<std::vector<std::vector<double>>> rows;  // per configuration {value, y}
+  // per configuration {value, median, lo, hi}; lo = hi = median where the
+  // seeds are too few for an interval (MedianWithInterval)
+  std::vector<std::vector<std::vector<double>>> rows;
 };
+
+// The row of one swept value: the median over the runs of value(run), with
+// its 95 % interval.
+std::vector<double> MedianRow(const SweepPoint& p,
+                              const std::function<double(const RunRecord&)>& value) {
+  std::vector<double> values;
+  for (const RunRecord* run : p.ok_runs)
+    if (const double v = value(*run); std::isfinite(v)) values.push_back(v);
+  const MedianInterval m = MedianWithInterval(values);
+  const double median = Finite(m.median);
+  return {p.value, median, std::isnan(m.lo) ? median : m.lo, std::isnan(m.hi) ? median : m.hi};
+}
 
 Panel QuantityPanel(const Quantity& q, const std::string& x_label,
                     const std::vector<std::string>& labels, const std::vector<std::string>& styles,
                     const std::vector<std::vector<std::size_t>>& groups) {
   std::vector<double> xs, ys;
   for (const auto& rows : q.rows)
-    for (const auto& row : rows) xs.push_back(row[0]), ys.push_back(row[1]);
+    for (const auto& row : rows) {
+      xs.push_back(row[0]);
+      ys.insert(ys.end(), row.begin() + 1, row.end());
+    }
   double y_lo = INFINITY, y_hi = -INFINITY;
   for (double y : ys)
     if (std::isfinite(y)) y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
+  // The x range a little wider than the values, so that the end points'
+  // error bars are drawn whole.
+  const bool log_x = SpansDecades(xs);
+  const double x_lo = *std::min_element(xs.begin(), xs.end());
+  const double x_hi = *std::max_element(xs.begin(), xs.end());
+  const double pad = log_x ? 0 : 0.03 * std::max(x_hi - x_lo, 1e-9);
+  const double lo = log_x ? x_lo / 1.15 : x_lo - pad, hi = log_x ? x_hi * 1.15 : x_hi + pad;
   Panel p;
   p.setup = "set title " + Quote(q.title) + "\nset xlabel " + Quote(x_label) + "\nset ylabel " +
-            Quote(q.y_label) + "\nset key " + q.key + " noenhanced\nset autoscale xfix\n" +
-            (SpansDecades(xs) ? "set logscale x\n" : "") +
+            Quote(q.y_label) + "\nset key " + q.key + " noenhanced\nset xrange [" +
+            FormatNumber(lo) + ":" + FormatNumber(hi) + "]\n" +
+            (log_x ? "set logscale x\n" : "") +
             (SpansDecades(ys) ? "set logscale y\n" : TicsFor("y", y_lo, y_hi, 5));
   for (const auto& g : groups) {
-    Series s{"using 1:2 " + styles[g.front()] + " title " + Quote(JoinedLabel(labels, g)),
+    Series s{"using 1:2:3:4 " + styles[g.front()] + " title " + Quote(JoinedLabel(labels, g)),
              q.rows[g.front()], ""};
     if (HasPoint(s)) p.series.push_back(std::move(s));
   }
   return p;
+}
+
+// The " [...]" that ends every label (the problem parameters every line
+// shares), "" when they do not share one.
+std::string SharedSuffix(const std::vector<std::string>& labels) {
+  if (labels.empty()) return "";
+  const std::size_t open = labels.front().rfind(" [");
+  if (open == std::string::npos || labels.front().back() != ']') return "";
+  const std::string suffix = labels.front().substr(open);
+  for (const std::string& l : labels)
+    if (!l.ends_with(suffix)) return "";
+  return suffix;
 }
 
 }  // namespace
@@ -64,9 +103,16 @@ void PlotSweepFigure(const FigureText& text, const std::string& x_label,
   const bool window_area = std::any_of(points.begin(), points.end(), [](const SweepPoint& p) {
     return std::isfinite(p.mean_window_area);
   });
-  Quantity area{"Mean x-y area of the newest state", "area (m^2)", "top right", {}};
-  Quantity window{"Mean x-y area of the window states", "area (m^2)", "top right", {}};
-  Quantity time{"Mean time per CSP", "time (ms)", "bottom right", {}};
+  // Keys below the panels: the lines span the whole frame.
+  Quantity area{"Mean x-y area of the newest state", "area (m^2)", "below", {}};
+  Quantity window{"Mean x-y area of the window states", "area (m^2)", "below", {}};
+  Quantity time{"Mean time per CSP", "time (ms)", "below", {}};
+  const bool bars = std::any_of(points.begin(), points.end(),
+                                [](const SweepPoint& p) { return p.ok_runs.size() >= 6; });
+  if (bars) {
+    for (Quantity* q : {&area, &window, &time})
+      q->title += " (median of seeds, 95 % CI)";
+  }
   // An algorithm's colour for all its configurations; its second, third ...
   // configuration dashed and marked differently, so they stay apart.
   std::vector<std::string> labels, styles;
@@ -75,20 +121,25 @@ void PlotSweepFigure(const FigureText& text, const std::string& x_label,
     const std::string& label = points[i].label;
     const int nth = configurations[points[i].algorithm]++;
     labels.push_back(label);
-    styles.push_back("with linespoints lw 2 dt " + std::to_string(1 + nth % 5) + " pt " +
+    styles.push_back("with yerrorlines lw 2 dt " + std::to_string(1 + nth % 5) + " pt " +
                      std::to_string(7 + 2 * (nth % 3)) + " ps 0.7 lc rgb " +
                      Quote(Colour(points[i].algorithm)));
     for (Quantity* q : {&area, &window, &time}) q->rows.emplace_back();
     for (; i < points.size() && points[i].label == label; ++i) {
-      area.rows.back().push_back({points[i].value, Finite(points[i].mean_area)});
-      window.rows.back().push_back({points[i].value, Finite(points[i].mean_window_area)});
-      time.rows.back().push_back({points[i].value, Finite(points[i].mean_time_s * 1e3)});
+      area.rows.back().push_back(
+          MedianRow(points[i], [](const RunRecord& r) { return r.metrics.mean_area; }));
+      window.rows.back().push_back(MedianRow(points[i], RunMeanWindowArea));
+      time.rows.back().push_back(MedianRow(
+          points[i], [](const RunRecord& r) { return r.metrics.time_mean_s * 1e3; }));
     }
   }
+  // Parameters every line shares said once, in the title.
+  const std::string shared = SharedSuffix(labels);
+  for (std::string& l : labels) l.resize(l.size() - shared.size());
   // One panel a row, each as wide as the page prints it.
   Figure f;
   f.name = text.name;
-  f.title = text.title;
+  f.title = text.title + shared;
   std::vector<const Quantity*> shown = {&area};
   if (window_area) shown.push_back(&window);
   shown.push_back(&time);

@@ -18,7 +18,6 @@ double GuaranteeSummary::ConsistencyWhereHeld() const {
 GuaranteeSummary SummariseGuarantee(const GroupSummary& g) {
   GuaranteeSummary out;
   std::vector<double> reacquire;
-  std::map<std::string, int> categories;
   for (const RunRecord* r : g.ok_runs) {
     LossEpisodes episodes;
     for (const StepRecord& s : r->steps) {
@@ -30,13 +29,13 @@ GuaranteeSummary SummariseGuarantee(const GroupSummary& g) {
       for (const Property& p : s.properties)
         if (p.name == "miss_reason" && std::holds_alternative<std::string>(p.value)) {
           ++out.misses;
-          ++categories[MissCategory(std::get<std::string>(p.value))];
+          ++out.miss_categories[MissCategory(std::get<std::string>(p.value))];
         }
     }
     reacquire.insert(reacquire.end(), episodes.reacquire_steps().begin(),
                      episodes.reacquire_steps().end());
   }
-  for (const auto& [category, count] : categories)
+  for (const auto& [category, count] : out.miss_categories)
     if (count > out.dominant_count) out.dominant = category, out.dominant_count = count;
   out.median_reacquire = Quantile(reacquire, 0.5);
   return out;

@@ -6,6 +6,7 @@
 #ifndef ICPBENCH_EXPERIMENTS_THESIS003_GUARANTEE_COLUMNS_H_
 #define ICPBENCH_EXPERIMENTS_THESIS003_GUARANTEE_COLUMNS_H_
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@ struct GuaranteeSummary {
   int held = 0;            // ... equal to 1
   int held_contained = 0;  // ... whose estimate holds the truth
   int misses = 0;          // steps with a miss_reason
+  std::map<std::string, int> miss_categories;  // misses per category (MissCategory)
   std::string dominant;    // the most frequent miss category
   int dominant_count = 0;
   double median_reacquire = 0;          // NaN when no loss episode ended

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <opencv2/imgproc.hpp>
 #include <optional>
 #include <stdexcept>
 #include <variant>
@@ -284,32 +285,20 @@ AccumulatorMaximum FindMaximum(const cv::Mat& counts) {
   double max_count = 0;
   cv::minMaxLoc(counts, nullptr, &max_count);
   m.count = static_cast<int>(max_count);
+  cv::Mat at_maximum, labels, stats, centroids;
+  cv::compare(counts, max_count, at_maximum, cv::CMP_EQ);
+  const int labelled = cv::connectedComponentsWithStats(at_maximum, labels, stats, centroids, 8);
+  m.regions = labelled - 1;  // label 0 is the background
   m.row0 = counts.rows, m.col0 = counts.cols;
-  // Regions of maximum cells by flood fill over the 8 neighbours.
-  cv::Mat seen(counts.rows, counts.cols, CV_8U, cv::Scalar(0));
-  std::vector<std::pair<int, int>> stack;
-  for (int r = 0; r < counts.rows; ++r) {
-    for (int c = 0; c < counts.cols; ++c) {
-      if (counts.at<int>(r, c) != m.count || seen.at<unsigned char>(r, c)) continue;
-      ++m.regions;
-      stack.push_back({r, c});
-      seen.at<unsigned char>(r, c) = 1;
-      while (!stack.empty()) {
-        const auto [cr, cc] = stack.back();
-        stack.pop_back();
-        m.row0 = std::min(m.row0, cr), m.row1 = std::max(m.row1, cr + 1);
-        m.col0 = std::min(m.col0, cc), m.col1 = std::max(m.col1, cc + 1);
-        for (int dr = -1; dr <= 1; ++dr) {
-          for (int dc = -1; dc <= 1; ++dc) {
-            const int nr = cr + dr, nc = cc + dc;
-            if (nr < 0 || nc < 0 || nr >= counts.rows || nc >= counts.cols) continue;
-            if (counts.at<int>(nr, nc) != m.count || seen.at<unsigned char>(nr, nc)) continue;
-            seen.at<unsigned char>(nr, nc) = 1;
-            stack.push_back({nr, nc});
-          }
-        }
-      }
-    }
+  for (int i = 1; i < labelled; ++i) {
+    CellHull h;
+    h.col0 = stats.at<int>(i, cv::CC_STAT_LEFT);
+    h.row0 = stats.at<int>(i, cv::CC_STAT_TOP);
+    h.col1 = h.col0 + stats.at<int>(i, cv::CC_STAT_WIDTH);
+    h.row1 = h.row0 + stats.at<int>(i, cv::CC_STAT_HEIGHT);
+    m.hulls.push_back(h);
+    m.row0 = std::min(m.row0, h.row0), m.row1 = std::max(m.row1, h.row1);
+    m.col0 = std::min(m.col0, h.col0), m.col1 = std::max(m.col1, h.col1);
   }
   return m;
 }

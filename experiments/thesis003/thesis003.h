@@ -94,13 +94,18 @@ struct RecomputedAccumulator {
 // measurement-set view.
 RecomputedAccumulator RecomputeAccumulator(const RunRecord& run);
 
+// Cells [row0, row1) x [col0, col1).
+struct CellHull {
+  int row0 = 0, row1 = 0, col0 = 0, col1 = 0;
+};
 // Where counts reach their maximum: that maximum, the number of separate
-// (8-connected) regions of cells holding it, and the hull of those cells
-// as [row0, row1) x [col0, col1).
+// (8-connected) regions of cells holding it, the hull of all those cells
+// and each region's own hull.
 struct AccumulatorMaximum {
   int count = 0;
   int regions = 0;
   int row0 = 0, row1 = 0, col0 = 0, col1 = 0;
+  std::vector<CellHull> hulls;  // one per region, in label order
 };
 AccumulatorMaximum FindMaximum(const cv::Mat& counts);
 
