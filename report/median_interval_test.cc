@@ -144,5 +144,22 @@ TEST(LongCellsTest, MovedUnderTheTableWithSharedMarkers) {
   EXPECT_EQ(WithLongCellsAsNotes(t, kMaxTexCellChars).rows[0][0], squares);
 }
 
+TEST(LongCellsTest, WrappedColumnsKeepTheirCellsAndBreakAfterCommas) {
+  TextTable t;
+  t.title = "t";
+  t.headers = {"configuration", "value"};
+  t.numeric = {false, true};
+  t.wrap_cm = {4.5, 0};
+  const std::string long_text = "q-relaxed {auto_q=false,epsilon=2,mode=pave,outlier_share=0.3}";
+  t.rows = {{long_text, "1"}};
+  EXPECT_EQ(WithLongCellsAsNotes(t, 20).rows[0][0], long_text);
+  const std::string tex = TexTable(t);
+  EXPECT_NE(tex.find("\\begin{tabular}{>{\\raggedright\\arraybackslash}p{4.5cm}r}"),
+            std::string::npos)
+      << tex;
+  EXPECT_NE(tex.find("\\{auto\\_q=false,\\allowbreak{}epsilon=2,"), std::string::npos) << tex;
+  EXPECT_EQ(tex.find("(a)"), std::string::npos) << tex;
+}
+
 }  // namespace
 }  // namespace icp

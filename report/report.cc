@@ -82,7 +82,7 @@ std::string Report(const std::vector<RunRecord>& runs, const std::string& format
     out << "# icpbench report\n\n" << Overview(runs) << "\n\n";
     for (const TextTable& t : tables) WriteMarkdown(t, out);
   } else {
-    out << "% icpbench report; needs \\usepackage{booktabs,graphicx}\n% " << OneLine(Overview(runs))
+    out << "% icpbench report; needs \\usepackage{booktabs,graphicx,array}\n% " << OneLine(Overview(runs))
         << "\n\n";
     for (const TextTable& t : tables) out << TexTable(t);
   }

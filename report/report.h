@@ -52,6 +52,9 @@ struct TextTable {
   std::string title;
   std::vector<std::string> headers;
   std::vector<bool> numeric;  // right-aligned columns
+  // LaTeX only: the width (cm) of each column whose cells wrap, 0 for none;
+  // a wrapped column keeps its long cells instead of moving them to notes.
+  std::vector<double> wrap_cm{};
   std::vector<std::vector<std::string>> rows;
   std::vector<std::string> notes;  // paragraphs after the table
   std::vector<std::string> items;  // a bullet list after the notes

@@ -118,16 +118,32 @@ std::string TexEscape(const std::string& text) {
   return out;
 }
 
+namespace {
+
+// A wrapped cell escaped, with a break allowed after each comma, so that a
+// configuration's "{epsilon=2,mode=pave}" does not run into the next column.
+std::string BreakableAfterCommas(const std::string& text) {
+  std::string out;
+  for (char c : TexEscape(text)) {
+    out += c;
+    if (c == ',') out += "\\allowbreak{}";
+  }
+  return out;
+}
+
+}  // namespace
+
 TextTable WithLongCellsAsNotes(TextTable table, std::size_t max_chars) {
   std::map<std::string, std::string> markers;  // text -> "(a)"
   std::vector<std::string> notes;
   for (auto& row : table.rows) {
     for (std::size_t i = 0; i < row.size(); ++i) {
       const bool numeric = i < table.numeric.size() && table.numeric[i];
+      const bool wrapped = i < table.wrap_cm.size() && table.wrap_cm[i] > 0;
       // Characters, not bytes: "²" is one.
       const std::size_t length = static_cast<std::size_t>(std::count_if(
           row[i].begin(), row[i].end(), [](char c) { return (c & 0xC0) != 0x80; }));
-      if (numeric || length <= max_chars) continue;
+      if (numeric || wrapped || length <= max_chars) continue;
       auto [it, added] = markers.emplace(row[i], "");
       if (added) {
         it->second = "(" + MarkerName(markers.size() - 1) + ")";
@@ -150,14 +166,22 @@ std::string TexTable(const TextTable& table) {
         // Shrunk to the line width when wider, never enlarged.
         << "\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}{%\n"
         << "\\begin{tabular}{";
-    for (bool n : t.numeric) out << (n ? 'r' : 'l');
+    for (std::size_t i = 0; i < t.numeric.size(); ++i) {
+      if (i < t.wrap_cm.size() && t.wrap_cm[i] > 0)
+        out << ">{\\raggedright\\arraybackslash}p{" << FormatNumber(t.wrap_cm[i]) << "cm}";
+      else
+        out << (t.numeric[i] ? 'r' : 'l');
+    }
     out << "}\n\\toprule\n";
     for (std::size_t i = 0; i < t.headers.size(); ++i) {
       out << (i ? " & " : "") << TexEscape(t.headers[i]);
     }
     out << " \\\\\n\\midrule\n";
     for (const auto& row : t.rows) {
-      for (std::size_t i = 0; i < row.size(); ++i) out << (i ? " & " : "") << TexEscape(row[i]);
+      for (std::size_t i = 0; i < row.size(); ++i) {
+        const bool wrapped = i < t.wrap_cm.size() && t.wrap_cm[i] > 0;
+        out << (i ? " & " : "") << (wrapped ? BreakableAfterCommas(row[i]) : TexEscape(row[i]));
+      }
       out << " \\\\\n";
     }
     out << "\\bottomrule\n\\end{tabular}}\n\\end{table}\n\n";
