@@ -8,7 +8,7 @@ namespace icp {
 
 const std::vector<PaperInfo>& Papers() {
   static const std::vector<PaperInfo> kPapers = {
-      {"paper000", "HC4, BC3, BC4, 3B-BC4 on the car track: Table 1, Figs 2-4", &Paper000Tables,
+      {"paper000", "HC4, BC3, BC4, 3B-BC4 on the car track: Table 1, Figs 2-4", &Paper000ReportTables,
        &Paper000Figures},
       {"thesis003", "relaxed solvers on lines and beacons (Figs 5.2, 5.5-5.7, a table); marina sonar vs particle filter (ch. 6); the city without GPS (Fig. 4.17)",
        &Thesis003Tables, &Thesis003Figures},

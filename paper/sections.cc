@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "algorithms/registry.h"
+#include "experiments/paper000/own_experiments.h"
 #include "experiments/paper000/paper000.h"
 #include "experiments/paper004/paper004.h"
 #include "experiments/thesis003/city_roads.h"
@@ -195,6 +196,13 @@ std::string Paper000Tex(const std::vector<RunRecord>& runs, const std::vector<Co
     out << FigureTex(figures, "fig4_area",
                      "Fig. 4: x-y area over the lap, log scale; over more than 400 steps the "
                      "running median of a 40th of them");
+    out << "\\subsection{Beyond the paper}\n"
+        << Paragraph(
+               "Two experiments of the default suite ask what the paper does not: a drive "
+               "that starts with the heading unknown, and a GPS outage. No published value "
+               "compares with them; they show where the propagators differ when the data "
+               "stop constraining a variable.");
+    for (const TextTable& t : Paper000OwnExperimentTables(runs)) out << PagedTable(t);
   }
   out << "\\subsection{Discussion}\n" << DiscussionTex(rows);
   return out.str();

@@ -4,6 +4,7 @@
 #include <limits>
 #include <set>
 
+#include "experiments/paper000/own_experiments.h"
 #include "harness/spec.h"
 
 namespace icp {
@@ -203,6 +204,12 @@ std::vector<SweepPoint> Paper000Fig2Points(const std::vector<SweepPoint>& sweep)
 
 std::vector<TextTable> Paper000Tables(const std::vector<RunRecord>& runs) {
   return {PublishedTable(SummariseGroups(runs)), SweepTable(Paper000WindowSweep(runs))};
+}
+
+std::vector<TextTable> Paper000ReportTables(const std::vector<RunRecord>& runs) {
+  std::vector<TextTable> tables = Paper000Tables(runs);
+  for (TextTable& t : Paper000OwnExperimentTables(runs)) tables.push_back(std::move(t));
+  return tables;
 }
 
 void Paper000Figures(const std::vector<RunRecord>& runs, const std::string& out_dir,

@@ -71,6 +71,9 @@ std::vector<SweepPoint> Paper000Fig2Points(const std::vector<SweepPoint>& sweep)
 // (Fig. 2 as text): medians over the runs (seeds) with their 95 % intervals
 // (MedianWithInterval), ratios to HC4 paired by seed.
 std::vector<TextTable> Paper000Tables(const std::vector<RunRecord>& runs);
+// The report's: Paper000Tables, then the tables of the suite's own
+// experiments on the car track (own_experiments.h).
+std::vector<TextTable> Paper000ReportTables(const std::vector<RunRecord>& runs);
 
 // The figures fig2_window, fig3_corridors and fig4_area.
 void Paper000Figures(const std::vector<RunRecord>& runs, const std::string& out_dir,
