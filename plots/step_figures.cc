@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -171,6 +172,9 @@ std::vector<std::vector<double>> RunningMedian(const std::vector<std::vector<dou
   return out;
 }
 
+// Longer key labels make the key wider than the page (8-pt font, 6.5 in).
+constexpr std::size_t kMaxKeyLabelChars = 50;
+
 // One line per run of a per-step value against the step, log scale, each
 // line titled by its run and what title_extra says of it; runs with equal
 // values drawn once; over long runs the running median of a 40th of them.
@@ -209,16 +213,38 @@ void PlotStepValueFigure(const FigureText& text, const std::string& y_label,
   std::vector<std::string> names;
   for (const RunRecord* r : drawn) names.push_back(RunLabel(*r));
   NoteEqualSeries(text.name, names, groups, "at every step", out);
+  // A key wider than the page is not drawn: when a configuration's label is
+  // long and the algorithms tell the lines apart, the key names the
+  // algorithm and the title the whole configurations.
+  std::string configurations;
+  std::set<std::string> algorithms;
+  for (const RunRecord* r : drawn) algorithms.insert(r->spec.algorithm);
+  const bool long_label = std::any_of(names.begin(), names.end(), [](const std::string& n) {
+    return n.size() > kMaxKeyLabelChars;
+  });
+  if (long_label && algorithms.size() == drawn.size()) {
+    for (std::size_t i = 0; i < drawn.size(); ++i) {
+      configurations += (i ? "; " : "") + names[i];
+      names[i] = drawn[i]->spec.algorithm;
+    }
+  }
   std::size_t steps = 0;
   for (const auto& r : rows) steps = std::max(steps, r.size());
   const std::size_t window = steps > kLongRun ? (steps / 40) | 1 : 1;
   Panel panel;
   panel.setup =
       "set title " +
-      Quote(text.title +
-            (window > 1 ? ": running median over " + std::to_string(window) + " steps" : "")) +
+      MultiLine(Wrapped(text.title +
+                            (window > 1 ? ": running median over " + std::to_string(window) +
+                                              " steps"
+                                        : "") +
+                            (configurations.empty() ? "" : "\n" + configurations),
+                        // centred on the plot, which the y labels narrow
+                        0.8 * kPrintWidthIn)) +
       " noenhanced\nset xlabel 'step'\nset ylabel " + Quote(y_label) +
-      "\nset logscale y\nset key top right noenhanced\nset autoscale xfix\n";
+      // The key below: its labels name whole configurations, and the lines
+      // span the frame.
+      "\nset logscale y\nset key below noenhanced\nset autoscale xfix\n";
   // Each line its own dash, so that lines that nearly coincide stay apart.
   for (std::size_t k = 0; k < groups.size(); ++k) {
     const auto& g = groups[k];

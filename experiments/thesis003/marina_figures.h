@@ -39,6 +39,8 @@ namespace icp {
 // stored with `record: runs` (no steps to draw) count only where no run with
 // steps takes their place: as the reference when no ok run has steps, and as
 // an algorithm's run when it has none with steps; the figures name them.
+// Of an algorithm's configurations, the one the claims judge (q-relaxed
+// with auto_q=false, particle-filter with inject=0), else the first stored.
 std::vector<const RunRecord*> MarinaFigureRuns(const std::vector<RunRecord>& runs,
                                                const std::string& start = "");
 

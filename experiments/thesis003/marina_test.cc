@@ -101,7 +101,7 @@ TEST(MarinaTableTest, SaysWhichSpecMakesItsRunsWhenThereAreNone) {
   EXPECT_NE(Md({}).find("specs/marina.yaml"), std::string::npos);
 }
 
-TEST(MarinaFiguresTest, DrawOneSeedOfBothMethodsPreferringTheFullDriveAndAKnownStart) {
+TEST(MarinaFiguresTest, DrawOneSeedOfBothMethodsPreferringTheFullDriveAKnownStartAndTheJudgedConfiguration) {
   const std::vector<RunRecord> runs = {
       MarinaRun("q-relaxed", "unknown", 1, {MarinaStep(0, 0, 0.01)}, {}),
       MarinaRun("q-relaxed", "known", 3, {MarinaStep(0, 0, 0.01)}, {}),
@@ -114,15 +114,20 @@ TEST(MarinaFiguresTest, DrawOneSeedOfBothMethodsPreferringTheFullDriveAndAKnownS
   EXPECT_EQ(drawn[0]->spec.algorithm, "q-relaxed");
   EXPECT_EQ(drawn[1]->spec.algorithm, "particle-filter");
   for (const RunRecord* r : drawn) EXPECT_EQ(r->spec.seed, 3u);
-  // Of two configurations of one algorithm, the one with the lower RMSE.
+  // Of two configurations of one algorithm, the guaranteed one, however
+  // worse its error; without it, the first stored.
   std::vector<RunRecord> two = {
-      MarinaRun("q-relaxed", "known", 1, {MarinaStep(0, 2, 0.01)}, {}),
       MarinaRun("q-relaxed", "known", 1, {MarinaStep(0, 0.5, 0.01)}, {}),
+      MarinaRun("q-relaxed", "known", 1, {MarinaStep(0, 2, 0.01)}, {}),
   };
+  two[1].spec.algorithm_params = {{"auto_q", "false"}, {"q", "13"}};
+  std::vector<const RunRecord*> chosen = MarinaFigureRuns(two);
+  ASSERT_EQ(chosen.size(), 1u);
+  EXPECT_EQ(chosen[0], &two[1]);
   two[1].spec.algorithm_params = {{"mode", "pave"}};
-  const std::vector<const RunRecord*> best = MarinaFigureRuns(two);
-  ASSERT_EQ(best.size(), 1u);
-  EXPECT_EQ(best[0], &two[1]);
+  chosen = MarinaFigureRuns(two);
+  ASSERT_EQ(chosen.size(), 1u);
+  EXPECT_EQ(chosen[0], &two[0]);
   // Only the short drive: it is drawn.
   EXPECT_EQ(MarinaFigureRuns({runs.back()}).size(), 1u);
   EXPECT_TRUE(MarinaFigureRuns({}).empty());
