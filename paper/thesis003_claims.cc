@@ -6,6 +6,8 @@
 // filter's coverage at each level).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <functional>
 #include <limits>
 #include <map>
 #include <string>
@@ -52,60 +54,95 @@ double WhiteSide(const RecomputedPolynomial& p) {
                                                             : kNaN;
 }
 
-// The polynomial of the figure run under key; throws ClaimsError (the row
-// then says why) when the run is missing or cannot be recomputed.
-RecomputedPolynomial PolynomialUnder(const YAML::Node& node, const char* key,
-                                     const ClaimContext& context, std::string* missing) {
+// Of the one configuration the selector under key picks, each ok run's
+// recomputed polynomial by seed (computed once per context); empty, with
+// *missing set, when there is none. Throws ClaimsError (the row then says
+// why) when a run cannot be recomputed.
+std::map<std::uint64_t, const RecomputedPolynomial*> PolynomialsUnder(
+    const YAML::Node& node, const char* key, const ClaimContext& context, std::string* missing) {
   const RunSelector s = ParseSelector(node[key]);
-  const RunRecord* run = FigureRun(context, s);
-  if (!run) {
+  std::map<std::uint64_t, const RecomputedPolynomial*> out;
+  const GroupSummary* g = OnlyMatch(context, s);
+  if (!g || g->ok_runs.empty()) {
     *missing = MissingRuns(context, s);
-    return {};
+    return out;
   }
-  return RecomputePolynomial(*run);
+  for (const RunRecord* run : g->ok_runs) {
+    const std::string cache_key =
+        "thesis003/polynomial/" + std::to_string(reinterpret_cast<std::uintptr_t>(run));
+    out[run->spec.seed] = &Cached<RecomputedPolynomial>(
+        context, cache_key, [run] { return RecomputePolynomial(*run); });
+  }
+  return out;
 }
 
-// quantity white_shrink: C*(3)'s white side at `to` over `from`; peak: of
-// the highest non-empty coefficient of `runs`, the larger of its x width
-// and its distance to the truth over the search box's width (infinity when
-// that coefficient is below n - q); white_ratio: the white side of `runs`
-// over that of `of`.
-Measurement MeasureBoxPolynomial(const YAML::Node& measure, const ClaimContext& context) {
-  const std::string quantity = Quantity(measure, {"white_shrink", "peak", "white_ratio"});
-  Measurement m;
-  if (quantity == "white_shrink" || quantity == "white_ratio") {
-    const char* const first = quantity == "white_shrink" ? "to" : "runs";
-    const char* const second = quantity == "white_shrink" ? "from" : "of";
-    const RecomputedPolynomial a = PolynomialUnder(measure, first, context, &m.missing);
-    if (!m.missing.empty()) return m;
-    const RecomputedPolynomial b = PolynomialUnder(measure, second, context, &m.missing);
-    if (!m.missing.empty()) return m;
-    m.value = WhiteSide(a) / WhiteSide(b);
-    m.text = quantity == "white_shrink"
-                 ? "widest side of coefficient n - q: " + FormatNumber(WhiteSide(b)) +
-                       " at p = 1, " + FormatNumber(WhiteSide(a)) + " at p = 30 (ratio " +
-                       FormatNumber(m.value) + ")"
-                 : "widest sides of coefficient n - q: " + FormatNumber(WhiteSide(a)) +
-                       " against " + FormatNumber(WhiteSide(b)) + " (ratio " +
-                       FormatNumber(m.value) + ")";
-    return m;
-  }
-  const RecomputedPolynomial p = PolynomialUnder(measure, "runs", context, &m.missing);
-  if (!m.missing.empty()) return m;
+// Per seed present in both, value(a's polynomial, b's); their median with
+// its 95 % interval.
+MedianInterval PairedBySeed(
+    const std::map<std::uint64_t, const RecomputedPolynomial*>& a,
+    const std::map<std::uint64_t, const RecomputedPolynomial*>& b,
+    const std::function<double(const RecomputedPolynomial&, const RecomputedPolynomial&)>& value) {
+  std::vector<double> values;
+  for (const auto& [seed, pa] : a)
+    if (auto it = b.find(seed); it != b.end()) values.push_back(value(*pa, *it->second));
+  return MedianWithInterval(values);
+}
+
+std::string OverSeeds(const MedianInterval& m) {
+  return FormatWithInterval(m) + ", median of " + std::to_string(m.n) +
+         (m.n == 1 ? " seed" : " seeds");
+}
+
+double WhiteRatio(const RecomputedPolynomial& a, const RecomputedPolynomial& b) {
+  return WhiteSide(a) / WhiteSide(b);
+}
+
+// Of the highest non-empty coefficient, the larger of its x width and its
+// distance to the truth over the search box's width; infinity when that
+// coefficient is below n - q.
+double PeakSpread(const RecomputedPolynomial& p) {
   int top = -1;
   for (int k = 0; k < static_cast<int>(p.coefficients.size()); ++k)
     if (!p.coefficients[k].IsEmpty()) top = k;
-  const Interval x = top >= 0 ? p.coefficients[top][0] : Interval::Empty();
-  const double search = p.prior[0].Width();
+  if (top < p.white) return kInfinity;
+  const Interval x = p.coefficients[top][0];
   const double distance =
-      p.truth.empty() || x.IsEmpty()
-          ? kNaN
-          : std::max({0.0, x.lo() - p.truth[0], p.truth[0] - x.hi()});
-  m.value = top < p.white ? kInfinity : std::max(x.Width(), distance) / search;
-  m.text = "peak at degree " + std::to_string(top) + " (n - q = " + std::to_string(p.white) +
-           "), x width " + FormatNumber(x.Width()) + " of " + FormatNumber(search) + ", " +
-           FormatNumber(distance) + " from the truth (" + FormatNumber(m.value) +
-           " of the width)";
+      p.truth.empty() ? kNaN : std::max({0.0, x.lo() - p.truth[0], p.truth[0] - x.hi()});
+  return std::max(x.Width(), distance) / p.prior[0].Width();
+}
+
+// quantity white_shrink: C*(3)'s white side at `to` over `from`; peak: the
+// peak's spread (PeakSpread) of `runs`; white_ratio: the white side of
+// `runs` over that of `of`. Per seed, paired by seed; the median over the
+// seeds is judged.
+Measurement MeasureBoxPolynomial(const YAML::Node& measure, const ClaimContext& context) {
+  const std::string quantity = Quantity(measure, {"white_shrink", "peak", "white_ratio"});
+  Measurement m;
+  const bool shrink = quantity == "white_shrink";
+  const auto a = PolynomialsUnder(measure, shrink ? "to" : "runs", context, &m.missing);
+  if (!m.missing.empty()) return m;
+  const auto b = quantity == "peak"
+                    ? a
+                    : PolynomialsUnder(measure, shrink ? "from" : "of", context, &m.missing);
+  if (!m.missing.empty()) return m;
+  const auto value_of = [&](const RecomputedPolynomial& p, const RecomputedPolynomial& q) {
+    return quantity == "peak" ? PeakSpread(p) : WhiteRatio(p, q);
+  };
+  const MedianInterval value = PairedBySeed(a, b, value_of);
+  if (value.n == 0) {
+    m.missing = "no seed has runs of both configurations: rerun " + context.spec;
+    return m;
+  }
+  m.value = value.median;
+  // The figure draws the smallest seed: its own value beside the median.
+  const auto& [seed, first] = *a.begin();
+  const auto other = b.find(seed);
+  m.text = OverSeeds(value) +
+           (quantity == "peak" ? " (peak spread over the search width)"
+                               : " (ratio of the widest sides of coefficient n - q)");
+  if (other != b.end())
+    m.text += "; seed " + std::to_string(seed) + ", the figure's: " +
+              FormatNumber(value_of(*first, *other->second));
   return m;
 }
 
@@ -242,16 +279,17 @@ std::string RangeMeetings(const Claim& claim, const Measurement&, const ClaimCon
 // fixpoint, which encloses the solution set) bounds how far it can go.
 std::string WhiteFloor(const Claim& claim, const Measurement&, const ClaimContext& context) {
   std::string missing;
-  const RecomputedPolynomial floor = PolynomialUnder(claim.if_differs, "runs", context, &missing);
+  const auto floor = PolynomialsUnder(claim.if_differs, "runs", context, &missing);
   if (!missing.empty()) return "";
-  const RecomputedPolynomial from = PolynomialUnder(claim.measure, "from", context, &missing);
-  const RecomputedPolynomial to = PolynomialUnder(claim.measure, "to", context, &missing);
+  const auto from = PolynomialsUnder(claim.measure, "from", context, &missing);
+  const auto to = PolynomialsUnder(claim.measure, "to", context, &missing);
   if (!missing.empty()) return "";
-  const double f = WhiteSide(floor);
-  return "measured: it shrinks, but from p = 1 it had only " + FormatNumber(WhiteSide(from) / f) +
+  const MedianInterval room = PairedBySeed(from, floor, WhiteRatio);
+  const MedianInterval reached = PairedBySeed(to, floor, WhiteRatio);
+  if (room.n == 0 || reached.n == 0) return "";
+  return "measured: it shrinks, but from p = 1 it had only " + OverSeeds(room) +
          " × to go: C*(1)'s coefficient n - q at p = 30 (the q-relaxed fixpoint, which encloses "
-         "the solution set) is " + FormatNumber(f) + " wide, and p = 30 reaches " +
-         FormatNumber(WhiteSide(to) / f) + " × that";
+         "the solution set) bounds it, and p = 30 reaches " + OverSeeds(reached) + " × that";
 }
 
 // The guarantee pooled over every configuration the selectors pick: of the

@@ -46,10 +46,12 @@ void PlotProfileFigure(const FigureText& text, const std::vector<RunRecord>& run
                                         std::to_string(profile.instances) + " instances") +
                 "\nset logscale x\nset xrange [1:" + std::to_string(tau_max) +
                 "]\nset yrange [0:1.02]\n"
-                // Long configuration labels: the key beside the plot, at the width of
-                // the paper's text so that its font keeps its size.
-                "set key outside right top noenhanced spacing 0.9\n";
-  RenderPanel(text.name, kPrintWidthIn, 4.5, panel, out_dir, out);
+                // Long configuration labels: the key below the plot, one a line,
+                // the figure as high as they need (at most a page's 7.5 in).
+                "set key below left Left reverse maxcols 1 noenhanced spacing 0.9\n";
+  const double height =
+      std::min(kPrintMaxHeightIn, 3.2 + 0.17 * static_cast<double>(panel.series.size()));
+  RenderPanel(text.name, kPrintWidthIn, height, panel, out_dir, out);
 }
 
 }  // namespace icp

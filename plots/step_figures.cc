@@ -127,14 +127,17 @@ void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecor
             (gps ? "; grey: the GPS box" : "");
   f.cols = 2;
   f.rows = static_cast<int>(groups.size());
-  f.height_in = std::min(kPrintMaxHeightIn, 0.5 + 1.9 * f.rows);
+  f.height_in = std::min(kPrintMaxHeightIn, 0.5 + 2.4 * f.rows);  // room for wrapped titles
   for (std::size_t i = 0; i < groups.size(); ++i) {
     const std::size_t first = groups[i].front();
     const RunRecord& r = *shown[first];
     const std::string colour = Quote(Colour(r.spec.algorithm));
     for (int k = 0; k < 2; ++k) {
       Panel p;
-      p.setup = "set title " + Quote(JoinedLabel(shown_labels, groups[i]) + ": " + kVars[k]) +
+      // Wrapped to its panel: two panels a row share the page's width.
+      p.setup = "set title " +
+                MultiLine(Wrapped(JoinedLabel(shown_labels, groups[i]) + ": " + kVars[k],
+                                  0.8 * kPrintWidthIn / f.cols)) +
                 " noenhanced\n" + "set ylabel 'error in " + kVars[k] + " (m)'\n" +
                 CorridorRange(all[k]) + (i + 1 == groups.size() ? "set xlabel 'step'\n" : "") +
                 "unset key\n" + x_range + TicsFor("x", 0, std::max(1.0, last_step), 5);
