@@ -38,7 +38,9 @@ void PlotTimingFigure(const FigureText& text, const std::vector<const GroupSumma
                 " noenhanced\nset ylabel 'time per CSP (µs)'\nset logscale y\n"
                 "set format y '10^{%L}'\nset style boxplot outliers pointtype 7\n"
                 "set pointsize 0.3\nset boxwidth 0.5\n"
-                "set xtics (" + xtics + ") noenhanced\nset xrange [0.4:" +
+                "set xtics (" + xtics + ") noenhanced" +
+                // Beyond six boxes the names would run into each other.
+                (panel.series.size() > 6 ? " rotate by 30 right" : "") + "\nset xrange [0.4:" +
                 std::to_string(panel.series.size() + 0.6) + "]\nset grid noxtics\n";
   RenderPanel(
       text.name,
