@@ -128,7 +128,9 @@ void PlotAccumulatorFigure(const FigureText& text, const cv::Mat& counts, const 
     }
   }
   Panel panel;
-  panel.setup = data.str() + "set title " + MultiLine(text.title) + " noenhanced\nunset grid\n" +
+  // The title wrapped to the square plot, narrower than the page.
+  panel.setup = data.str() + "set title " + MultiLine(Wrapped(text.title, 0.7 * kPrintWidthIn)) +
+                " noenhanced\nunset grid\n" +
                 "set xlabel 'x (m)'\nset ylabel 'y (m)'\n" +
                 (side <= kMaxEqualScales * std::min(range_x.Width(), range_y.Width())
                      ? "set size ratio -1\n"
