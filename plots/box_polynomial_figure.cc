@@ -55,10 +55,13 @@ void AddCoefficients(const BoxPolynomialPanel& p, RowOf row_of, Panel* panel) {
 Panel Boxes(const BoxPolynomialPanel& p, const Interval& x, const Interval& y,
             const std::vector<std::array<double, 4>>& segments, const std::vector<double>& truth) {
   Panel panel;
-  panel.setup = "set title " + MultiLine(p.title) +
+  // Two panels a row: the title wrapped to half the page.
+  panel.setup = "set title " + MultiLine(Wrapped(p.title, 0.8 * kPrintWidthIn / 2)) +
                 " noenhanced\nunset grid\nset size ratio -1\nset ylabel 'y (m)'\n"
                 "set xrange " +
-                Range(x) + "\nset yrange " + Range(y) + "\nunset key\n";
+                Range(x) + "\nset yrange " + Range(y) + "\nunset key\n" +
+                // A square panel, narrow: few x tics, or their labels touch.
+                TicsFor("x", x.lo(), x.hi(), 3);
   AddCoefficients(
       p,
       [](const Box& b, int) {
