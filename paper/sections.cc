@@ -189,7 +189,8 @@ std::string Paper000Tex(const std::vector<RunRecord>& runs, const std::vector<Co
     out << FigureTex(figures, "fig2_window",
                      "Fig. 2: mean area (of the newest state, of the window states) and mean "
                      "time per CSP against w, a panel each, on log axes where the values span "
-                     "a decade");
+                     "a decade; each point the median over the seeds of each run's mean, its "
+                     "error bar the 95 % interval of that median");
     out << FigureTex(figures, "fig3_corridors",
                      "Fig. 3: interval error corridors over the lap, a band per algorithm over "
                      "the GPS box (grey)");
@@ -268,13 +269,15 @@ std::string Thesis003Tex(const std::vector<RunRecord>& runs,
     out << FigureTex(figures, "fig6_8_marina_tracks",
                      "Fig. 6.8: set-membership boxes (every 20th step) and centres against the "
                      "truth, one panel per start (known, the 10,368 m² area, unknown), each "
-                     "frame fitted to the track");
+                     "frame fitted to the track; the guaranteed configuration (auto_q=false), "
+                     "which the claims judge");
     out << FigureTex(figures, "fig6_9_particles",
                      "Fig. 6.9: 600 particles over the 10,368 m² prior and the filter's mean "
                      "track");
     out << FigureTex(figures, "fig6_errors",
-                     "Centre error over time, both methods (log scale; over more than 400 steps "
-                     "the running median of a 40th of them)");
+                     "Centre error over time, both methods in the configurations the claims "
+                     "judge (log scale; over more than 400 steps the running median of a 40th "
+                     "of them)");
   }
   out << "\\subsection{Discussion}\n" << DiscussionTex(rows);
   return out.str();
