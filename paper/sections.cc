@@ -190,7 +190,7 @@ std::string Paper000Tex(const std::vector<RunRecord>& runs, const std::vector<Co
                      "Fig. 2: mean area (of the newest state, of the window states) and mean "
                      "time per CSP against w, a panel each, on log axes where the values span "
                      "a decade; each point the median over the seeds of each run's mean, its "
-                     "error bar the 95 % interval of that median");
+                     "error bar the 95 % interval of that median (from six seeds on)");
     out << FigureTex(figures, "fig3_corridors",
                      "Fig. 3: interval error corridors over the lap, a band per algorithm over "
                      "the GPS box (grey)");
