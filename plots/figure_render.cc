@@ -23,6 +23,10 @@ namespace {
 // it looks as the PDF does (cairo's PNG takes a point for a pixel).
 constexpr double kPixelsPerInch = 150;
 constexpr double kPngScale = kPixelsPerInch / 72;
+// Cairo takes a font point at 96 dpi (and pdfcairo scales fonts by 0.5
+// unless told): fontscale 0.75 prints a font of kFontPt at kFontPt, in the
+// PDF and in the PNG alike (measured with pdftotext -bbox).
+constexpr double kCairoFontScale = 0.75;
 
 enum class Terminal { kPng, kPdf };
 
@@ -38,10 +42,11 @@ void SetTerminal(Gnuplot& gp, Terminal terminal, const Figure& f, const std::str
   if (terminal == Terminal::kPng) {
     gp << "set terminal pngcairo enhanced size " << static_cast<int>(f.width_in * kPixelsPerInch)
        << "," << static_cast<int>(f.height_in * kPixelsPerInch) << " font 'Sans,"
-       << std::lround(kFontPt * kPngScale) << "' linewidth " << kPngScale / 2 << "\n";
+       << std::lround(kFontPt * kPngScale) << "' fontscale " << kCairoFontScale << " linewidth "
+       << kPngScale / 2 << "\n";
   } else {
     gp << "set terminal pdfcairo enhanced size " << f.width_in << "in," << f.height_in
-       << "in font 'Sans," << kFontPt << "'\n";
+       << "in font 'Sans," << kFontPt << "' fontscale " << kCairoFontScale << "\n";
   }
   gp << "set output " << Quote(path) << "\n";
 }

@@ -34,6 +34,11 @@ using icp::testing::WriteFile;
 // Measured 2026-12-05 on results/default (docs/figures-and-paper.md).
 constexpr double kMinPageInk = 0.01;
 constexpr double kMinFigureColour = 0.001;
+// A word's box (pdftotext -bbox) is its font's ascent plus descent, about
+// 1.16 em: an 8-pt font gives 9.3 pt, the 5.3 pt of pdfcairo's default
+// fontscale 6.2. The median over a figure's words, so that exponents and
+// subscripts do not count.
+constexpr double kMinWordHeightPt = 8;
 // The printed size (plots/figures_internal.h: 6.5 in by 7.5 in), in points.
 constexpr double kPrintWidthPt = 6.5 * 72, kPrintHeightPt = 7.5 * 72;
 
@@ -70,6 +75,19 @@ std::vector<std::string> Render(const std::string& pdf, const std::string& prefi
   }
   std::sort(pages.begin(), pages.end());  // pdftoppm pads the numbers
   return pages;
+}
+
+// The median height (pt) of the words of a PDF; 0 when it has none.
+double MedianWordHeight(const std::string& pdf) {
+  const Result r = RunCommand("pdftotext", "-bbox " + pdf + " -");
+  static const std::regex kWord(R"re(yMin="([0-9.]+)" xMax="[0-9.]+" yMax="([0-9.]+)")re");
+  std::vector<double> heights;
+  for (auto it = std::sregex_iterator(r.out.begin(), r.out.end(), kWord);
+       it != std::sregex_iterator(); ++it)
+    heights.push_back(std::stod((*it)[2]) - std::stod((*it)[1]));
+  if (heights.empty()) return 0;
+  std::nth_element(heights.begin(), heights.begin() + heights.size() / 2, heights.end());
+  return heights[heights.size() / 2];
 }
 
 // "Page size: 468 x 288 pts" of pdfinfo, as {width, height}.
@@ -146,6 +164,7 @@ TEST_F(PaperPagesTest, FiguresPrintAtTheirSizeAndNoPageIsBlank) {
     EXPECT_GT(width, 0) << name;
     EXPECT_LE(width, kPrintWidthPt + 0.5) << name << " is shrunk to the page's width";
     EXPECT_LE(height, kPrintHeightPt + 0.5) << name << " is shrunk to the page's height";
+    EXPECT_GE(MedianWordHeight(pdf), kMinWordHeightPt) << name << " prints its text below 8 pt";
     const std::vector<std::string> page = Render(pdf, (pngs / name).string(), 40);
     ASSERT_EQ(page.size(), 1u) << name;
     EXPECT_GE(Share(page[0], true), kMinFigureColour) << name << " draws no data: " << page[0];
