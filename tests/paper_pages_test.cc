@@ -25,10 +25,10 @@ using icp::testing::RunCommand;
 using icp::testing::WriteFile;
 
 // What a page or a figure must hold. At 40 dpi the pages of the default
-// suite's paper darken 1.8 to 30 % of their pixels (pixels below 235 of
+// suite's paper darken 1.9 to 26 % of their pixels (pixels below 235 of
 // 255), a page with a heading alone well under 1 %. A figure's data is drawn
 // in colour (algorithms, boxes, counts) and its frame, text and grid in grey:
-// the default suite's figures have 0.9 to 61 % coloured pixels (channels
+// the default suite's figures have 0.8 to 47 % coloured pixels (channels
 // more than 60 apart), the short marina track of the store below 0.25 %, an
 // empty frame with title, labels and grid 0.02 %: 0.1 % parts them.
 // Measured 2026-12-05 on results/default (docs/figures-and-paper.md).
