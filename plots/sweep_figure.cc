@@ -60,7 +60,7 @@ Panel QuantityPanel(const Quantity& q, const std::string& x_label,
   const double lo = log_x ? x_lo / 1.15 : x_lo - pad, hi = log_x ? x_hi * 1.15 : x_hi + pad;
   Panel p;
   p.setup = "set title " + Quote(q.title) + "\nset xlabel " + Quote(x_label) + "\nset ylabel " +
-            Quote(q.y_label) + "\nset key " + q.key + " noenhanced\nset xrange [" +
+            Quote(q.y_label) + "\nset key " + q.key + " maxcols 1 samplen 2 noenhanced\nset xrange [" +
             FormatNumber(lo) + ":" + FormatNumber(hi) + "]\n" +
             (log_x ? "set logscale x\n" : "") +
             (SpansDecades(ys) ? "set logscale y\n" : TicsFor("y", y_lo, y_hi, 5));
