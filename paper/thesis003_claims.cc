@@ -54,6 +54,18 @@ double WhiteSide(const RecomputedPolynomial& p) {
                                                             : kNaN;
 }
 
+// What make() recomputes from a stored run (a figure's polynomial or
+// accumulator), once per context and run: several claims and their
+// explainers read the same runs.
+template <typename T, typename Make>
+const T& RecomputedOnce(const ClaimContext& context, const char* kind, const RunRecord& run,
+                        Make make) {
+  return Cached<T>(context,
+                   std::string("thesis003/") + kind + "/" +
+                       std::to_string(reinterpret_cast<std::uintptr_t>(&run)),
+                   [&] { return make(run); });
+}
+
 // Of the one configuration the selector under key picks, each ok run's
 // recomputed polynomial by seed (computed once per context); empty, with
 // *missing set, when there is none. Throws ClaimsError (the row then says
@@ -67,12 +79,9 @@ std::map<std::uint64_t, const RecomputedPolynomial*> PolynomialsUnder(
     *missing = MissingRuns(context, s);
     return out;
   }
-  for (const RunRecord* run : g->ok_runs) {
-    const std::string cache_key =
-        "thesis003/polynomial/" + std::to_string(reinterpret_cast<std::uintptr_t>(run));
-    out[run->spec.seed] = &Cached<RecomputedPolynomial>(
-        context, cache_key, [run] { return RecomputePolynomial(*run); });
-  }
+  for (const RunRecord* run : g->ok_runs)
+    out[run->spec.seed] = &RecomputedOnce<RecomputedPolynomial>(
+        context, "polynomial", *run, [](const RunRecord& r) { return RecomputePolynomial(r); });
   return out;
 }
 
@@ -200,7 +209,8 @@ AccumulatorFigure FigureOf(const YAML::Node& measure, const ClaimContext& contex
     *missing = MissingRuns(context, s);
     return f;
   }
-  f.a = RecomputeAccumulator(*f.run);
+  f.a = RecomputedOnce<RecomputedAccumulator>(
+      context, "accumulator", *f.run, [](const RunRecord& r) { return RecomputeAccumulator(r); });
   f.index = SourceIndex(measure, f.a);
   const int sources = static_cast<int>(f.a.counts.size()) - 1;
   f.maximum = FindMaximum(f.a.counts[f.index]);
