@@ -80,55 +80,57 @@ std::function<double(const RunRecord&)> OutageWindow(double offset, bool area) {
   };
 }
 
-std::string Cell(const GroupSummary& g, const std::function<double(const RunRecord&)>& value) {
-  return FormatWithInterval(RunMedian(g, value));
-}
+using RunValue = std::function<double(const RunRecord&)>;
 
-TextTable StartTable(const std::vector<GroupSummary>& groups) {
+// A table of one experiment: per configuration with ok runs, its label,
+// problem parameters and ok runs, then the median over the runs (seeds) of
+// each value with its 95 % interval; omitted, with a note naming the spec,
+// when the store has no run of it.
+TextTable ExperimentTable(const std::vector<GroupSummary>& groups, const std::string& experiment,
+                          const std::string& title, const std::vector<std::string>& headers,
+                          const std::vector<RunValue>& values, const std::string& note) {
   TextTable t;
-  t.title = "Heading unknown at the start (experiment start, car-track)";
-  t.headers = {"configuration", "problem params", "runs", "heading width, step 1 (rad)",
-               "step 20 (rad)", "last step (rad)", "truth held"};
-  t.numeric = {false, false, true, true, true, true, true};
+  t.title = title;
+  t.headers = {"configuration", "problem params", "runs"};
+  t.headers.insert(t.headers.end(), headers.begin(), headers.end());
+  t.numeric = {false, false, true};
+  t.numeric.resize(t.headers.size(), true);
   for (const GroupSummary& g : groups) {
-    if (!HasExperiment(g, "start") || g.ok_runs.empty()) continue;
-    t.rows.push_back({Label(g), ParamsCell(g.problem_params), std::to_string(g.ok),
-                      Cell(g, HeadingAt(0)), Cell(g, HeadingAt(19)), Cell(g, HeadingAt(-1)),
-                      Cell(g, Consistency)});
+    if (!HasExperiment(g, experiment) || g.ok_runs.empty()) continue;
+    t.rows.push_back({Label(g), ParamsCell(g.problem_params), std::to_string(g.ok)});
+    for (const RunValue& value : values)
+      t.rows.back().push_back(FormatWithInterval(RunMedian(g, value)));
   }
-  t.notes.push_back(
-      "Each window's first heading starts in [-pi, pi] (paper 000, \"[theta_k] is initialized "
-      "to ]-pi, pi]\"), with no GPS heading. The newest state's heading width at each step, "
-      "median over the runs (seeds) with its 95% interval; truth held: the share of steps "
-      "whose box holds the true state.");
+  t.notes.push_back(note);
   if (t.rows.empty())
-    t.notes.push_back("No run of experiment start: icpbench run specs/default.yaml makes them.");
+    t.notes.push_back("No run of experiment " + experiment +
+                      ": icpbench run specs/default.yaml makes them.");
   t.omit_if_empty = true;
   return t;
 }
 
+TextTable StartTable(const std::vector<GroupSummary>& groups) {
+  return ExperimentTable(
+      groups, "start", "Heading unknown at the start (experiment start, car-track)",
+      {"heading width, step 1 (rad)", "step 20 (rad)", "last step (rad)", "truth held"},
+      {HeadingAt(0), HeadingAt(19), HeadingAt(-1), Consistency},
+      "Each window's first heading starts in [-pi, pi] (paper 000, \"[theta_k] is initialized "
+      "to ]-pi, pi]\"), with no GPS heading. The newest state's heading width at each step, "
+      "median over the runs (seeds) with its 95% interval; truth held: the share of steps "
+      "whose box holds the true state.");
+}
+
 TextTable OutageTable(const std::vector<GroupSummary>& groups) {
-  TextTable t;
-  t.title = "GPS outage (experiment outage, car-track)";
-  t.headers = {"configuration", "problem params", "runs", "area before (m²)",
-               "during (m²)", "after (m²)", "truth held during"};
-  t.numeric = {false, false, true, true, true, true, true};
-  for (const GroupSummary& g : groups) {
-    if (!HasExperiment(g, "outage") || g.ok_runs.empty()) continue;
-    t.rows.push_back({Label(g), ParamsCell(g.problem_params), std::to_string(g.ok),
-                      Cell(g, OutageWindow(-1, true)), Cell(g, OutageWindow(0, true)),
-                      Cell(g, OutageWindow(1, true)), Cell(g, OutageWindow(0, false))});
-  }
-  t.notes.push_back(
+  return ExperimentTable(
+      groups, "outage", "GPS outage (experiment outage, car-track)",
+      {"area before (m²)", "during (m²)", "after (m²)", "truth held during"},
+      {OutageWindow(-1, true), OutageWindow(0, true), OutageWindow(1, true),
+       OutageWindow(0, false)},
       "GPS lost for outage_length steps from outage_start: the speed and the gyro alone "
       "carry the box (dead reckoning) while the window still holds the last fixes. Mean x-y "
       "area of the newest state over the outage_length steps before the outage, during it and "
       "after it; truth held: the share of the outage's steps whose box holds the true state. "
       "Medians over the runs (seeds) with their 95% intervals.");
-  if (t.rows.empty())
-    t.notes.push_back("No run of experiment outage: icpbench run specs/default.yaml makes them.");
-  t.omit_if_empty = true;
-  return t;
 }
 
 }  // namespace
