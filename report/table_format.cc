@@ -120,6 +120,11 @@ std::string TexEscape(const std::string& text) {
 
 namespace {
 
+// Whether column i of the table wraps in LaTeX (TextTable::wrap_cm).
+bool IsWrapped(const TextTable& table, std::size_t i) {
+  return i < table.wrap_cm.size() && table.wrap_cm[i] > 0;
+}
+
 // A wrapped cell escaped, with a break allowed after each comma, so that a
 // configuration's "{epsilon=2,mode=pave}" does not run into the next column.
 std::string BreakableAfterCommas(const std::string& text) {
@@ -139,7 +144,7 @@ TextTable WithLongCellsAsNotes(TextTable table, std::size_t max_chars) {
   for (auto& row : table.rows) {
     for (std::size_t i = 0; i < row.size(); ++i) {
       const bool numeric = i < table.numeric.size() && table.numeric[i];
-      const bool wrapped = i < table.wrap_cm.size() && table.wrap_cm[i] > 0;
+      const bool wrapped = IsWrapped(table, i);
       // Characters, not bytes: "²" is one.
       const std::size_t length = static_cast<std::size_t>(std::count_if(
           row[i].begin(), row[i].end(), [](char c) { return (c & 0xC0) != 0x80; }));
@@ -167,7 +172,7 @@ std::string TexTable(const TextTable& table) {
         << "\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}{%\n"
         << "\\begin{tabular}{";
     for (std::size_t i = 0; i < t.numeric.size(); ++i) {
-      if (i < t.wrap_cm.size() && t.wrap_cm[i] > 0)
+      if (IsWrapped(t, i))
         out << ">{\\raggedright\\arraybackslash}p{" << FormatNumber(t.wrap_cm[i]) << "cm}";
       else
         out << (t.numeric[i] ? 'r' : 'l');
@@ -179,8 +184,8 @@ std::string TexTable(const TextTable& table) {
     out << " \\\\\n\\midrule\n";
     for (const auto& row : t.rows) {
       for (std::size_t i = 0; i < row.size(); ++i) {
-        const bool wrapped = i < t.wrap_cm.size() && t.wrap_cm[i] > 0;
-        out << (i ? " & " : "") << (wrapped ? BreakableAfterCommas(row[i]) : TexEscape(row[i]));
+        out << (i ? " & " : "")
+            << (IsWrapped(t, i) ? BreakableAfterCommas(row[i]) : TexEscape(row[i]));
       }
       out << " \\\\\n";
     }
