@@ -1,5 +1,6 @@
 #include "core/constraint_system.h"
 
+#include <cctype>
 #include <cstdio>
 #include <stdexcept>
 
@@ -96,11 +97,20 @@ int ConstraintSystem::FindVariable(const std::string& name) const {
   return it == index_of_.end() ? -1 : it->second;
 }
 
-std::string ConstraintSystem::ConstraintToString(int index) const {
-  // Minibex: "f = v", "f <= hi", "f >= lo" or "f = [lo, hi]"; %.17g reads
-  // back to the same doubles.
-  const Constraint& c = constraints_.at(index);
-  const std::string f = graph_->ToString(c.root, names_);
+namespace {
+std::string Bound(double v) {
+  if (v == -kInf) return "-oo";
+  if (v == kInf) return "+oo";
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+// "f = v", "f <= hi", "f >= lo" or "f = [lo, hi]"; %.17g reads back to the
+// same doubles.
+std::string ConstraintText(const ExprGraph& graph, const Constraint& c,
+                           const std::vector<std::string>& names) {
+  const std::string f = graph.ToString(c.root, names);
   char buf[96];
   if (c.range.IsPoint()) {
     std::snprintf(buf, sizeof buf, " = %.17g", c.range.lo());
@@ -114,6 +124,36 @@ std::string ConstraintSystem::ConstraintToString(int index) const {
     std::snprintf(buf, sizeof buf, " = [%.17g, %.17g]", c.range.lo(), c.range.hi());
   }
   return f + buf;
+}
+
+std::string MinibexIdentifier(const std::string& name) {
+  std::string id = name;
+  for (char& ch : id)
+    if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_') ch = '_';
+  if (id.empty() || std::isdigit(static_cast<unsigned char>(id[0]))) id = "v_" + id;
+  return id;
+}
+}  // namespace
+
+std::string ConstraintSystem::ConstraintToString(int index) const {
+  return ConstraintText(*graph_, constraints_.at(index), names_);
+}
+
+std::string ConstraintSystem::ToMinibex() const {
+  std::vector<std::string> ids;
+  std::unordered_map<std::string, int> seen;
+  for (const std::string& name : names_) {
+    ids.push_back(MinibexIdentifier(name));
+    if (!seen.emplace(ids.back(), 0).second)
+      throw std::invalid_argument("ToMinibex: variables '" + name + "' and another are both written '" +
+                                  ids.back() + "'");
+  }
+  std::string text = "Variables\n";
+  for (int v = 0; v < num_variables(); ++v)
+    text += "  " + ids[v] + " in [" + Bound(domains_[v].lo()) + ", " + Bound(domains_[v].hi()) + "];\n";
+  text += "Constraints\n";
+  for (const Constraint& c : constraints_) text += "  " + ConstraintText(*graph_, c, ids) + ";\n";
+  return text + "end\n";
 }
 
 }  // namespace icp

@@ -156,10 +156,26 @@ inline double Interval::Mag() const {
 }
 
 // As Boost's operators with the ExactRounding policy, without the wrapper's
-// second round of checks. Sums and differences compute both bounds at once
+// second round of checks.
+inline Interval operator+(const Interval& x, const Interval& y) {
+  if (x.IsEmpty() || y.IsEmpty()) return Interval::Empty();
+  ExactRounding rnd;
+  return Interval(rnd.add_down(x.lo(), y.lo()), rnd.add_up(x.hi(), y.hi()));
+}
+inline Interval operator-(const Interval& x, const Interval& y) {
+  if (x.IsEmpty() || y.IsEmpty()) return Interval::Empty();
+  ExactRounding rnd;
+  return Interval(rnd.sub_down(x.lo(), y.hi()), rnd.sub_up(x.hi(), y.lo()));
+}
+
+// x + y and x - y bit for bit, both bounds at once in one SSE2 register
 // where AddUpPair can (finite operands below 2^1020, so never an empty
 // one's infinite bounds), the lower one as -add_up(-a, -b); the result of
-// such operands is ordered and finite, so it needs no check either.
+// such operands is ordered and finite, so it needs no check either. Fewer
+// instructions than the operators but a longer chain of dependent ones:
+// the sweeps over many independent lanes (BC3's, 3B's incremental ones)
+// gain from them, HC4's single dependent chain loses (docs/benchmarks.md,
+// "Sums in pairs"), so only those sweeps use them (EvalOp<true>).
 #if defined(__SSE2__)
 namespace detail {
 inline __m128d NegatedLoAndHi(const Interval& x) { return _mm_set_pd(x.hi(), -x.lo()); }
@@ -169,25 +185,21 @@ inline Interval FromNegatedLoAndHi(__m128d v) {
 }
 }  // namespace detail
 #endif
-inline Interval operator+(const Interval& x, const Interval& y) {
+inline Interval PairedSum(const Interval& x, const Interval& y) {
 #if defined(__SSE2__)
   __m128d sum;
   if (AddUpPair(detail::NegatedLoAndHi(x), detail::NegatedLoAndHi(y), sum))
     return detail::FromNegatedLoAndHi(sum);
 #endif
-  if (x.IsEmpty() || y.IsEmpty()) return Interval::Empty();
-  ExactRounding rnd;
-  return Interval(rnd.add_down(x.lo(), y.lo()), rnd.add_up(x.hi(), y.hi()));
+  return x + y;
 }
-inline Interval operator-(const Interval& x, const Interval& y) {
+inline Interval PairedDifference(const Interval& x, const Interval& y) {
 #if defined(__SSE2__)
   __m128d sum;
   if (AddUpPair(detail::NegatedLoAndHi(x), detail::HiAndNegatedLo(y), sum))
     return detail::FromNegatedLoAndHi(sum);
 #endif
-  if (x.IsEmpty() || y.IsEmpty()) return Interval::Empty();
-  ExactRounding rnd;
-  return Interval(rnd.sub_down(x.lo(), y.hi()), rnd.sub_up(x.hi(), y.lo()));
+  return x - y;
 }
 inline Interval operator*(const Interval& x, const Interval& y) {
   return Interval(x.boost() * y.boost());

@@ -159,6 +159,8 @@ TEST(IntervalArithmetic, PairedPathsMatchTheScalarRoundingBitForBit) {
   for (int i = 0; i < 200000; ++i) {
     const Interval x = AnyInterval(g), y = AnyInterval(g);
     const bool empty = x.IsEmpty() || y.IsEmpty();
+    ExpectSameBits(PairedSum(x, y), x + y);
+    ExpectSameBits(PairedDifference(x, y), x - y);
     ExpectSameBits(x + y, empty ? Interval::Empty()
                                 : Interval(rnd.add_down(x.lo(), y.lo()),
                                            rnd.add_up(x.hi(), y.hi())));

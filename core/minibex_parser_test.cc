@@ -364,5 +364,38 @@ TEST(MinibexParserTest, PrintedConstraintsParseBackToEnclosures) {
   }
 }
 
+TEST(MinibexParserTest, AWholeSystemWrittenAsMinibexParsesBackToItself) {
+  // Names as the car window gives them (x[17]) are not Minibex identifiers.
+  ConstraintSystem original;
+  Expr x = original.AddVariable("x[17]", Interval(-2.5, 0.1));
+  Expr th = original.AddVariable("th[17]", Interval(-kInf, kInf));
+  Expr y = original.AddVariable("y", Interval(0.3, kInf));
+  original.AddConstraint(y - (x + original.Constant(Interval(2.7, 2.8)) * Cos(th)), Interval(0));
+  original.AddConstraint(x * y, Interval(-kInf, 1.5));
+  const std::string text = original.ToMinibex();
+  ConstraintSystem reparsed;
+  ASSERT_NO_THROW(reparsed = ParseMinibex(text, "written")) << text;
+  ASSERT_EQ(reparsed.names(), (std::vector<std::string>{"x_17_", "th_17_", "y"})) << text;
+  ASSERT_EQ(reparsed.domains().size(), original.domains().size());
+  // The parser rounds an inexact decimal outward: a bound moves out by at most an ulp.
+  for (std::size_t v = 0; v < original.domains().size(); ++v) {
+    const Interval a = original.domains()[v], b = reparsed.domains()[v];
+    EXPECT_TRUE(a.IsSubsetOf(b)) << v << ": " << a << " " << b;
+    EXPECT_GE(b.lo(), std::nextafter(a.lo(), -kInf)) << v;
+    EXPECT_LE(b.hi(), std::nextafter(a.hi(), kInf)) << v;
+  }
+  ASSERT_EQ(reparsed.constraints().size(), 2u);
+  // The constraints print as they were written.
+  const std::string again = reparsed.ToMinibex();
+  EXPECT_EQ(again.substr(again.find("Constraints")), text.substr(text.find("Constraints")));
+}
+
+TEST(MinibexParserTest, WritingRefusesTwoNamesThatWouldCollide) {
+  ConstraintSystem csp;
+  csp.AddVariable("x[1]", Interval(0, 1));
+  csp.AddVariable("x_1_", Interval(0, 1));
+  EXPECT_THROW(csp.ToMinibex(), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace icp

@@ -11,11 +11,14 @@
 namespace icp {
 
 // z = op(a, b) (b ignored for unary ops, n is kPow's exponent). Not for
-// kConst and kVar, which have no operands.
+// kConst and kVar, which have no operands. kPaired: sums and differences
+// through PairedSum and PairedDifference (the same bits; see interval.h for
+// which sweeps gain from them).
+template <bool kPaired = false>
 inline Interval EvalOp(Op op, const Interval& a, const Interval& b, int n) {
   switch (op) {
-    case Op::kAdd: return a + b;
-    case Op::kSub: return a - b;
+    case Op::kAdd: return kPaired ? PairedSum(a, b) : a + b;
+    case Op::kSub: return kPaired ? PairedDifference(a, b) : a - b;
     case Op::kMul: return a * b;
     case Op::kDiv: return a / b;
     case Op::kMin: return Min(a, b);

@@ -62,8 +62,8 @@ inline constexpr double kResidualExactThreshold = 0x1p-960;
 // Two of ExactRounding::add_up's usual cases at once, one per lane of an
 // SSE2 register: an interval sum or difference needs two rounded-up
 // additions (its lower bound is -add_up(-a, -b)), and doing them side by
-// side takes half the instructions of the hottest operation of every revise.
-// Returns false, leaving sum alone, unless every operand is finite and below
+// side takes half the instructions (PairedSum and PairedDifference in
+// interval.h, which say where that is faster). Returns false, leaving sum alone, unless every operand is finite and below
 // 2^1020 in magnitude; the scalar add_up handles the rest (and everything on
 // processors without SSE2, where this function does not exist). Bit for
 // bit add_up's result: the same operations in the same order.

@@ -140,7 +140,7 @@ Interval SweepUnivariate(std::span<const UnivariateInstr> code, std::size_t begi
       lane[k] = x;
       continue;
     }
-    lane[k] = EvalOp(in.op, Operand(in.a, slots, lane), Operand(in.b, slots, lane), in.n);
+    lane[k] = EvalOp<true>(in.op, Operand(in.a, slots, lane), Operand(in.b, slots, lane), in.n);
     if (lane[k].IsEmpty()) return Interval::Empty();
   }
   return lane[code.size() - 1];
@@ -169,8 +169,8 @@ std::pair<Interval, Interval> Tape::ForwardUnivariatePair(std::span<const Univar
       lane_y[k] = y;
       continue;
     }
-    lane_x[k] = EvalOp(in.op, Operand(in.a, slots, lane_x), Operand(in.b, slots, lane_x), in.n);
-    lane_y[k] = EvalOp(in.op, Operand(in.a, slots, lane_y), Operand(in.b, slots, lane_y), in.n);
+    lane_x[k] = EvalOp<true>(in.op, Operand(in.a, slots, lane_x), Operand(in.b, slots, lane_x), in.n);
+    lane_y[k] = EvalOp<true>(in.op, Operand(in.a, slots, lane_y), Operand(in.b, slots, lane_y), in.n);
     const bool x_empty = lane_x[k].IsEmpty(), y_empty = lane_y[k].IsEmpty();
     if (x_empty || y_empty) {
       return {x_empty ? Interval::Empty() : SweepUnivariate(code, k + 1, x, slots, lane_x),
@@ -328,7 +328,7 @@ Interval Tape::Reforward(const Box& box, int changed, std::vector<Interval>& slo
     if (in.op == Op::kVar) {
       z = box[in.n];
     } else {
-      z = EvalOp(in.op, slots[in.a], slots[in.b >= 0 ? in.b : in.a], in.n);
+      z = EvalOp<true>(in.op, slots[in.a], slots[in.b >= 0 ? in.b : in.a], in.n);
     }
     if (z.IsEmpty()) return Interval::Empty();
   }
@@ -369,7 +369,7 @@ Interval Tape::ForwardIncremental(const Box& box, ForwardMemory& memory,
         z = box[in.n];  // variables are not counted in unbounded_
       } else {
         const bool was_unbounded = !z.IsBounded();
-        z = EvalOp(in.op, memory.slots_[in.a], memory.slots_[in.b >= 0 ? in.b : in.a], in.n);
+        z = EvalOp<true>(in.op, memory.slots_[in.a], memory.slots_[in.b >= 0 ? in.b : in.a], in.n);
         memory.unbounded_ += static_cast<int>(!z.IsBounded()) - static_cast<int>(was_unbounded);
       }
       if (z.IsEmpty()) {
