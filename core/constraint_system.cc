@@ -3,6 +3,9 @@
 #include <cctype>
 #include <cstdio>
 #include <stdexcept>
+#include <unordered_set>
+
+#include "core/params.h"
 
 namespace icp {
 
@@ -98,14 +101,6 @@ int ConstraintSystem::FindVariable(const std::string& name) const {
 }
 
 namespace {
-std::string Bound(double v) {
-  if (v == -kInf) return "-oo";
-  if (v == kInf) return "+oo";
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
 // "f = v", "f <= hi", "f >= lo" or "f = [lo, hi]"; %.17g reads back to the
 // same doubles.
 std::string ConstraintText(const ExprGraph& graph, const Constraint& c,
@@ -141,16 +136,17 @@ std::string ConstraintSystem::ConstraintToString(int index) const {
 
 std::string ConstraintSystem::ToMinibex() const {
   std::vector<std::string> ids;
-  std::unordered_map<std::string, int> seen;
+  std::unordered_set<std::string> seen;
   for (const std::string& name : names_) {
     ids.push_back(MinibexIdentifier(name));
-    if (!seen.emplace(ids.back(), 0).second)
+    if (!seen.insert(ids.back()).second)
       throw std::invalid_argument("ToMinibex: variables '" + name + "' and another are both written '" +
                                   ids.back() + "'");
   }
   std::string text = "Variables\n";
   for (int v = 0; v < num_variables(); ++v)
-    text += "  " + ids[v] + " in [" + Bound(domains_[v].lo()) + ", " + Bound(domains_[v].hi()) + "];\n";
+    text += "  " + ids[v] + " in [" + FormatDouble(domains_[v].lo()) + ", " +
+            FormatDouble(domains_[v].hi()) + "];\n";
   text += "Constraints\n";
   for (const Constraint& c : constraints_) text += "  " + ConstraintText(*graph_, c, ids) + ";\n";
   return text + "end\n";

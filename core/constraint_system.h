@@ -97,10 +97,12 @@ class ConstraintSystem {
   // The constraint in Minibex syntax.
   std::string ConstraintToString(int index) const;
   // The whole system as a Minibex file that parses back to it, or to an
-  // enclosure of it: bounds are written with %.17g, and the parser rounds an
-  // inexact decimal outward (by an ulp at most). A name that is not a Minibex identifier, such as the car
-  // window's x[17], is written with underscores for its other characters
-  // (x_17_); std::invalid_argument if two names would then collide.
+  // enclosure of it: domain bounds are written as the shortest decimal that
+  // reads back to the same double (FormatDouble), and the parser rounds an
+  // inexact decimal outward (by an ulp at most). A name that is not a
+  // Minibex identifier, such as the car window's x[17], is written with
+  // underscores for its other characters (x_17_); std::invalid_argument if
+  // two names would then collide.
   std::string ToMinibex() const;
 
  private:

@@ -175,7 +175,7 @@ inline Interval operator-(const Interval& x, const Interval& y) {
 // instructions than the operators but a longer chain of dependent ones:
 // the sweeps over many independent lanes (BC3's, 3B's incremental ones)
 // gain from them, HC4's single dependent chain loses (docs/benchmarks.md,
-// "Sums in pairs"), so only those sweeps use them (EvalOp<true>).
+// "HC4 on single windows"), so only those sweeps use them (EvalOp<true>).
 #if defined(__SSE2__)
 namespace detail {
 inline __m128d NegatedLoAndHi(const Interval& x) { return _mm_set_pd(x.hi(), -x.lo()); }

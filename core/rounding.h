@@ -63,10 +63,11 @@ inline constexpr double kResidualExactThreshold = 0x1p-960;
 // SSE2 register: an interval sum or difference needs two rounded-up
 // additions (its lower bound is -add_up(-a, -b)), and doing them side by
 // side takes half the instructions (PairedSum and PairedDifference in
-// interval.h, which say where that is faster). Returns false, leaving sum alone, unless every operand is finite and below
-// 2^1020 in magnitude; the scalar add_up handles the rest (and everything on
-// processors without SSE2, where this function does not exist). Bit for
-// bit add_up's result: the same operations in the same order.
+// interval.h, which say where that is faster). Returns false, leaving sum
+// alone, unless every operand is finite and below 2^1020 in magnitude; the
+// scalar add_up handles the rest (and everything on processors without
+// SSE2, where this function does not exist). Bit for bit add_up's result:
+// the same operations in the same order.
 #if defined(__SSE2__)
 inline bool AddUpPair(__m128d x, __m128d y, __m128d& sum) {
   const __m128d magnitude = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffff));
