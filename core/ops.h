@@ -43,11 +43,13 @@ inline Interval EvalOp(Op op, const Interval& a, const Interval& b, int n) {
 }
 
 // Contracts a (and b for binary ops) to the values that can produce some
-// value in z. The b argument of a unary op is left untouched.
+// value in z. The b argument of a unary op is left untouched. kPaired: as
+// EvalOp's.
+template <bool kPaired = false>
 inline void ProjectOp(Op op, const Interval& z, Interval& a, Interval& b, int n) {
   switch (op) {
-    case Op::kAdd: BwdAdd(z, a, b); break;
-    case Op::kSub: BwdSub(z, a, b); break;
+    case Op::kAdd: BwdAdd<kPaired>(z, a, b); break;
+    case Op::kSub: BwdSub<kPaired>(z, a, b); break;
     case Op::kMul: BwdMul(z, a, b); break;
     case Op::kDiv: BwdDiv(z, a, b); break;
     case Op::kMin: BwdMin(z, a, b); break;

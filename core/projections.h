@@ -15,13 +15,17 @@ namespace icp {
 Interval DivideRelational(const Interval& x, const Interval& z, const Interval& y);
 
 // (BwdAdd, BwdSub and BwdNeg are inline: they run in every revise.)
+// kPaired: the differences and sums through PairedDifference and PairedSum,
+// the same bits (interval.h says where that is faster).
+template <bool kPaired = false>
 inline void BwdAdd(const Interval& z, Interval& x, Interval& y) {
-  x = Intersect(x, z - y);
-  y = Intersect(y, z - x);
+  x = Intersect(x, kPaired ? PairedDifference(z, y) : z - y);
+  y = Intersect(y, kPaired ? PairedDifference(z, x) : z - x);
 }
+template <bool kPaired = false>
 inline void BwdSub(const Interval& z, Interval& x, Interval& y) {
-  x = Intersect(x, z + y);
-  y = Intersect(y, x - z);
+  x = Intersect(x, kPaired ? PairedSum(z, y) : z + y);
+  y = Intersect(y, kPaired ? PairedDifference(x, z) : x - z);
 }
 void BwdMul(const Interval& z, Interval& x, Interval& y);
 void BwdDiv(const Interval& z, Interval& x, Interval& y);

@@ -99,12 +99,4 @@ ContractSummary PropagationContractor::Contract(Box& box, ContractContext& conte
   return propagation_.Run(box, context, *this);
 }
 
-bool PropagationContractor::HC4Revise(int c, Box& box, std::vector<Interval>& slots,
-                                      bool* idempotent) {
-  const Tape& tape = system_->tape(c);
-  if (!incremental_) return tape.Revise(box, slots, idempotent);
-  if (memories_.empty()) memories_.resize(system_->num_constraints());
-  return tape.ReviseIncremental(box, memories_[c], slots, idempotent);
-}
-
 }  // namespace icp

@@ -92,7 +92,13 @@ class PropagationContractor : public Contractor, protected Revisers {
   // unchanged, and it revises incrementally (Tape::ReviseIncremental, the
   // same results); a fresh contraction revises each constraint a few times
   // only, and sweeps in full.
-  bool HC4Revise(int c, Box& box, std::vector<Interval>& slots, bool* idempotent);
+  // (Inline: a call less in HC4's revise, the one thing its loop does.)
+  bool HC4Revise(int c, Box& box, std::vector<Interval>& slots, bool* idempotent) {
+    const Tape& tape = system_->tape(c);
+    if (!incremental_) return tape.Revise(box, slots, idempotent);
+    if (memories_.empty()) memories_.resize(system_->num_constraints());
+    return tape.ReviseIncremental(box, memories_[c], slots, idempotent);
+  }
 
  private:
   std::shared_ptr<const CompiledSystem> system_;

@@ -258,6 +258,7 @@ Interval Tape::ForwardWithDerivative(const Box& box, int var, std::vector<Interv
   return slots[n - 1];
 }
 
+template <bool kPaired>
 bool Tape::Backward(Box& box, std::vector<Interval>& slots) const {
   const int n = size();
   Interval& root = slots[n - 1];
@@ -296,13 +297,16 @@ bool Tape::Backward(Box& box, std::vector<Interval>& slots) const {
     Interval& b = in.b >= 0 ? slots[in.b] : unused;
     const Interval a_before = a;
     const Interval b_before = b;
-    ProjectOp(in.op, slots[s], a, b, in.n);
+    ProjectOp<kPaired>(in.op, slots[s], a, b, in.n);
     if (a.IsEmpty() || b.IsEmpty()) return false;
     if (!(a == a_before)) changed[in.a] = 1;
     if (in.b >= 0 && !(b == b_before)) changed[in.b] = 1;
   }
   return true;
 }
+
+template bool Tape::Backward<false>(Box&, std::vector<Interval>&) const;
+template bool Tape::Backward<true>(Box&, std::vector<Interval>&) const;
 
 bool Tape::Revise(Box& box, std::vector<Interval>& slots, bool* idempotent) const {
   if (idempotent && idempotent_when_bounded_) {
@@ -387,7 +391,7 @@ bool Tape::ReviseIncremental(Box& box, ForwardMemory& memory, std::vector<Interv
   if (ForwardIncremental(box, memory, slots).IsEmpty()) return false;
   // As Revise: every operation's and constant's enclosure bounded.
   if (idempotent) *idempotent = idempotent_when_bounded_ && memory.unbounded_ == 0;
-  return Backward(box, slots);
+  return Backward<true>(box, slots);
 }
 
 CompiledSystem::CompiledSystem(const ConstraintSystem& system)

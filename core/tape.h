@@ -62,7 +62,9 @@ class Tape {
   // Intersects the root slot with range and projects back to the variables,
   // writing their contracted domains into box. slots must hold a Forward pass
   // on box. Returns false when the constraint has no solution in box (box is
-  // then left partly contracted: callers mark it empty).
+  // then left partly contracted: callers mark it empty). kPaired: sums and
+  // differences as EvalOp<true>'s (ReviseIncremental's, the same bits).
+  template <bool kPaired = false>
   bool Backward(Box& box, std::vector<Interval>& slots) const;
   // Forward evaluation with the derivative with respect to variable var
   // (interval forward-mode differentiation over the tape): returns the root's
