@@ -21,7 +21,7 @@ Box NewestState(const CspView& view, const Box& box, int size) {
   std::vector<bool> found(newest.size(), false);
   for (std::size_t i = 0; i < view.states.size(); ++i) {
     const StateRef& s = view.states[i];
-    if (s.time != view.newest) continue;
+    if (s.is_landmark() || s.time != view.newest) continue;
     newest[s.component] = box[i];
     found[s.component] = true;
   }

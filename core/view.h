@@ -29,21 +29,35 @@ enum class View { kCsp, kMeasurementSet, kProbabilistic };
 // "csp", "measurement-set", "probabilistic": the words of `icpbench list`.
 std::string_view ToString(View view);
 
-// The state a CSP variable stands for: component `component` of the state
-// space at time step `time` (absolute, so the same state in two windows has
-// the same identity).
+// The state a CSP variable stands for (DESIGN.md "States that do not move
+// have their own identity"): component `component` of the robot's state at
+// time step `time` (absolute, so the same state in two windows has the same
+// identity), or, with landmark >= 0, component `component` of landmark
+// `landmark`'s parameters, a state that does not move (time is then 0).
+// Ordered robot states first, by (time, component), then landmarks, by
+// (landmark, component): a CSP view lists its states in this order.
 struct StateRef {
+  static constexpr int kRobot = -1;
   int time = 0;
   int component = 0;
+  int landmark = kRobot;
+
+  static StateRef Landmark(int landmark, int component) { return {0, component, landmark}; }
+  bool is_landmark() const { return landmark != kRobot; }
+
   friend bool operator==(const StateRef&, const StateRef&) = default;
-  friend auto operator<=>(const StateRef&, const StateRef&) = default;
+  friend auto operator<=>(const StateRef& a, const StateRef& b) {
+    if (auto order = a.landmark <=> b.landmark; order != 0) return order;
+    if (auto order = a.time <=> b.time; order != 0) return order;
+    return a.component <=> b.component;
+  }
 };
 
 struct CspView {
   // Its domains come from the measurements alone: nothing of an earlier
   // step's result is in them (an estimator carries that itself).
   ConstraintSystem csp;
-  // One per CSP variable.
+  // One per CSP variable, in StateRef's order.
   std::vector<StateRef> states;
   // The time step whose state the step estimates (the window's newest).
   int newest = 0;

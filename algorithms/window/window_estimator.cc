@@ -54,6 +54,14 @@ Interval CarryInto(const Interval& fresh, const Interval& carried, double period
 }
 
 namespace {
+// The oldest robot state's time in the view; -1 without robot states.
+int OldestTime(const CspView& view) {
+  int oldest = -1;
+  for (const StateRef& s : view.states)
+    if (!s.is_landmark() && (oldest < 0 || s.time < oldest)) oldest = s.time;
+  return oldest;
+}
+
 // Paper 004 §4.2's post-localization and Fig. 2's second reading, as step
 // properties: the box of the window's oldest state (post_step, its time, and
 // post_<name>_lo/hi), which is the box that state keeps once the next window
@@ -62,14 +70,13 @@ namespace {
 // the oldest state empty (+inf, -inf) and no area.
 void ReportWindowStates(const CspView& view, const StateSpace& space, const Box& box,
                         Properties* out) {
-  if (view.states.empty()) return;
-  int oldest = view.states.front().time;
-  for (const StateRef& s : view.states) oldest = std::min(oldest, s.time);
+  const int oldest = OldestTime(view);
+  if (oldest < 0) return;
   out->push_back({"post_step", static_cast<std::int64_t>(oldest)});
   const bool empty = box.IsEmpty();
   for (std::size_t i = 0; i < view.states.size(); ++i) {
     const StateRef& s = view.states[i];
-    if (s.time != oldest) continue;
+    if (s.is_landmark() || s.time != oldest) continue;
     const std::string& name = space.names[s.component];
     out->push_back({"post_" + name + "_lo", empty ? kInf : box[i].lo()});
     out->push_back({"post_" + name + "_hi", empty ? -kInf : box[i].hi()});
@@ -79,6 +86,7 @@ void ReportWindowStates(const CspView& view, const StateSpace& space, const Box&
   std::map<int, std::pair<int, int>> xy;
   for (std::size_t i = 0; i < view.states.size(); ++i) {
     const StateRef& s = view.states[i];
+    if (s.is_landmark()) continue;
     auto [it, inserted] = xy.try_emplace(s.time, -1, -1);
     if (s.component == space.x) it->second.first = static_cast<int>(i);
     if (s.component == space.y) it->second.second = static_cast<int>(i);
@@ -102,12 +110,20 @@ WindowEstimator::WindowEstimator(ContractorFactory make_contractor, ParamMap con
 
 Box WindowEstimator::InitialBox(const CspView& view, const StateSpace& space) const {
   Box box = view.csp.domains();
-  if (carry_ == Carry::kNone || previous_box_.size() == 0) return box;
-  int oldest = view.newest;
-  for (const StateRef& s : view.states) oldest = std::min(oldest, s.time);
+  if (carry_ == Carry::kNone) return box;
   for (std::size_t i = 0; i < view.states.size(); ++i) {
     const StateRef& s = view.states[i];
-    if (s.time >= view.newest || (carry_ == Carry::kFirst && s.time != oldest)) continue;
+    if (!s.is_landmark()) continue;
+    // A landmark's components are intersected as they are: a problem gives
+    // a landmark its domains in one frame from its first sighting on.
+    const auto it = landmarks_.find(s);
+    if (it != landmarks_.end()) box[i] = Intersect(box[i], it->second);
+  }
+  if (previous_box_.size() == 0) return box;
+  const int oldest = OldestTime(view);
+  for (std::size_t i = 0; i < view.states.size(); ++i) {
+    const StateRef& s = view.states[i];
+    if (s.is_landmark() || s.time >= view.newest || (carry_ == Carry::kFirst && s.time != oldest)) continue;
     const auto it = std::lower_bound(previous_states_.begin(), previous_states_.end(), s);
     if (it == previous_states_.end() || !(*it == s)) continue;
     box[i] = CarryInto(box[i], previous_box_[it - previous_states_.begin()],
@@ -147,7 +163,11 @@ StepResult WindowEstimator::Step(const Views& views, const StopCondition& stop) 
 
   previous_states_ = view.states;
   if (!std::is_sorted(previous_states_.begin(), previous_states_.end()))
-    throw std::invalid_argument("the CSP view's states are not in (time, component) order");
+    throw std::invalid_argument("the CSP view's states are not in StateRef's order");
+  if (!box.IsEmpty()) {
+    for (std::size_t i = 0; i < view.states.size(); ++i)
+      if (view.states[i].is_landmark()) landmarks_[view.states[i]] = box[i];
+  }
   previous_box_ = box.IsEmpty() ? Box() : std::move(box);
   return result;
 }

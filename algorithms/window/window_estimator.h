@@ -8,6 +8,11 @@
 //          000 §4.3), the others from their measurements;
 //   all    every state the two windows share (a filter that forgets nothing).
 // An empty previous result (the track was lost) carries nothing.
+// Landmarks (states that do not move, StateRef::landmark) are kept for the
+// whole run, not only from the previous window: unless carry is none, a
+// landmark's domain starts from its last result in any earlier window (a
+// static landmark's true position never moves, so its earlier box still
+// holds it: paper 004's DIGO keeps landmark domains across windows).
 //
 // Each step also reports the window's oldest state's box (post_step,
 // post_<name>_lo/hi: paper 004's post-localization, the last report for a
@@ -19,6 +24,7 @@
 #ifndef ICPBENCH_ALGORITHMS_WINDOW_WINDOW_ESTIMATOR_H_
 #define ICPBENCH_ALGORITHMS_WINDOW_WINDOW_ESTIMATOR_H_
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -68,6 +74,7 @@ class WindowEstimator : public Estimator {
   Carry carry_;
   std::vector<StateRef> previous_states_;  // sorted, as windows are
   Box previous_box_;                        // empty: nothing to carry
+  std::map<StateRef, Interval> landmarks_;  // every landmark state's last result
   WorkCounters total_work_;
 };
 

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <numbers>
+#include <vector>
 
 #include "algorithms/hc4/hc4.h"
 
@@ -98,6 +100,50 @@ TEST(WindowEstimatorTest, ReportsTheMeanAreaOfTheWindowsStates) {
   EXPECT_EQ(NumberProperty(r.properties, "window_mean_area"), (3.0 * 1 + 3.0 * 1) / 2);
   EXPECT_EQ(NumberProperty(r.properties, "post_y_lo"), 1);
   EXPECT_EQ(NumberProperty(r.properties, "post_x_hi"), 4);
+}
+
+TEST(StateRefTest, RobotStatesComeFirstThenLandmarks) {
+  const std::vector<StateRef> ordered = {{0, 0}, {0, 1}, {5, 0}, StateRef::Landmark(0, 0),
+                                         StateRef::Landmark(0, 5), StateRef::Landmark(3, 0)};
+  EXPECT_TRUE(std::is_sorted(ordered.begin(), ordered.end()));
+  EXPECT_FALSE(StateRef({0, 0}).is_landmark());
+  EXPECT_TRUE(StateRef::Landmark(0, 0).is_landmark());
+  EXPECT_NE(StateRef({0, 0}), StateRef::Landmark(0, 0));
+}
+
+// A window with the robot's x[t] and, when `sees`, a landmark L observed at
+// the offset L - x[t] in `offset`.
+Views LandmarkWindow(int t, Interval x, bool sees, Interval offset) {
+  Views views;
+  views.step = t;
+  views.space.names = {"x"};
+  CspView v;
+  Expr xt = v.csp.AddVariable("x[" + std::to_string(t) + "]", x);
+  v.states = {{t, 0}};
+  if (sees) {
+    Expr landmark = v.csp.AddVariable("L", Interval(-100, 100));
+    v.csp.AddConstraint(landmark - xt, offset);
+    v.states.push_back(StateRef::Landmark(0, 0));
+  }
+  v.newest = t;
+  views.csp = std::move(v);
+  return views;
+}
+
+// DIGO's landmark memory: a landmark seen at t = 1 (L in [9, 11]), out of
+// view at t = 2, keeps its domain when seen again at t = 3, where it locates
+// the robot (x[3] = L - 7 in [2, 4]); without carry, nothing is kept.
+TEST(WindowEstimatorTest, KeepsLandmarksAcrossWindowsThatDoNotSeeThem) {
+  for (Carry carry : {Carry::kFirst, Carry::kAll, Carry::kNone}) {
+    WindowEstimator estimator(&MakeHC4, {}, carry);
+    estimator.Step(LandmarkWindow(1, Interval(1), true, Interval(8, 10)), StopCondition());
+    estimator.Step(LandmarkWindow(2, Interval(2), false, Interval()), StopCondition());
+    const Box x3 = estimator
+                       .Step(LandmarkWindow(3, Interval(-100, 100), true, Interval(7)),
+                             StopCondition())
+                       .estimate->Hull();
+    EXPECT_EQ(x3[0], carry == Carry::kNone ? Interval(-100, 93) : Interval(2, 4));
+  }
 }
 
 TEST(WindowEstimatorTest, ContractorParamsLeaveCarryOut) {
