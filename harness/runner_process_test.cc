@@ -9,6 +9,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -47,9 +48,22 @@ std::string Command(pid_t pid) {
 
 // The workers of a sweep: its live children running the same program (not
 // the git or shell the provenance starts).
+// The sweep's workers: its children that run this test binary. A child the
+// sweep forks to run a command (popen, for the git revision) runs this
+// binary too until it execs, so a child counts only if it still does 100 ms
+// later (without this, a loaded machine let the tests take such a child for
+// a worker).
 std::vector<pid_t> LiveChildrenOf(pid_t parent) {
   const std::string program = Command(parent);
-  return testing::LiveChildren(parent, [&](pid_t pid) { return Command(pid) == program; });
+  auto is_worker = [&](pid_t pid) { return Command(pid) == program; };
+  const std::vector<pid_t> first = testing::LiveChildren(parent, is_worker);
+  if (first.empty()) return first;
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  const std::vector<pid_t> later = testing::LiveChildren(parent, is_worker);
+  std::vector<pid_t> workers;
+  for (pid_t pid : first)
+    if (std::find(later.begin(), later.end(), pid) != later.end()) workers.push_back(pid);
+  return workers;
 }
 
 // Forks a process that runs the sweep of yaml into dir and writes
