@@ -46,8 +46,6 @@ std::string Command(pid_t pid) {
   return name;
 }
 
-// The workers of a sweep: its live children running the same program (not
-// the git or shell the provenance starts).
 // The sweep's workers: its children that run this test binary. A child the
 // sweep forks to run a command (popen, for the git revision) runs this
 // binary too until it execs, so a child counts only if it still does 100 ms
