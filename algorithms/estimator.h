@@ -7,6 +7,7 @@
 #ifndef ICPBENCH_ALGORITHMS_ESTIMATOR_H_
 #define ICPBENCH_ALGORITHMS_ESTIMATOR_H_
 
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -31,6 +32,10 @@ struct StepResult {
   // For relaxed solvers that compute every number of outliers at once (the
   // contractor polynomial): the hull of the solution set for q = 0..m.
   std::vector<Box> hulls_by_q;
+  // For problems with landmarks: the estimate of every landmark so far (its
+  // components, StateRef::Landmark order), by identity; the harness judges
+  // their positions against the truth (Step::landmark_position).
+  std::map<int, Box> landmarks;
 };
 
 // Thrown by an estimator that finds its own result broken (a contractor that

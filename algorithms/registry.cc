@@ -8,6 +8,7 @@
 #include "algorithms/fault/fault.h"
 #include "algorithms/hc3/hc3.h"
 #include "algorithms/hc4/hc4.h"
+#include "algorithms/icsp_graph/icsp_graph.h"
 #include "algorithms/particle_filter/particle_filter.h"
 #include "algorithms/polynomial/polynomial.h"
 #include "algorithms/q_relaxed/q_relaxed.h"
@@ -37,6 +38,12 @@ std::vector<AlgorithmInfo>& Table() {
       CspAlgorithm<ThreeBParams<HC4Params>, &MakeThreeBHC4>(
           "3b-hc4", "3B consistency: bounds shaved in slices refuted by HC4",
           {"3B-HC4", 60, "#9467bd"}),
+      {"digo", "paper 004's DIGO: the window's graph of ICSPs by an inner contractor, landmarks kept",
+       &MakeDigo, &DefaultParams<IcspGraphParams>, &ResolveIcspGraph, View::kCsp,
+       {"DIGO", 70, "#1b9e77"}, &MakeDigoContractor},
+      {"lic", "paper 004's LIC: each ICSP of the newest step solved alone, landmarks kept",
+       &MakeLic, &DefaultParams<IcspGraphParams>, &ResolveIcspGraph, View::kCsp,
+       {"LIC", 80, "#d95f02"}, &MakeLicContractor},
       {"q-relaxed", "q-relaxed intersection of the measurement contractors, to a fixpoint or paved (RSIVIA)",
        &MakeQRelaxed, &DefaultParams<QRelaxedParams>, &ResolveParams<QRelaxedParams>,
        View::kMeasurementSet, {"q-relaxed", 100, "#17a2b8"}},

@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <thread>
 
 #include "core/memory_budget.h"
@@ -23,6 +24,7 @@
 #include "experiments/registry.h"
 #include "harness/environment_error.h"
 #include "harness/list_command.h"
+#include "harness/map_command.h"
 #include "harness/mpi_sweep.h"
 #include "harness/output_directory.h"
 #include "harness/plugin_loader.h"
@@ -128,6 +130,14 @@ int main(int argc, char** argv) {
   merge_cmd->add_option("OUT", merge_out, "output directory")->required();
   merge_cmd->add_option("IN", merge_in, "input directories")->required();
 
+  std::string map_dir, map_out;
+  std::vector<std::string> map_terms;
+  CLI::App* map_cmd = app.add_subcommand(
+      "map", "the landmark map of a visual-landmarks teach run, for a repeat run's map");
+  map_cmd->add_option("DIR", map_dir, "output directory of `icpbench run`")->required();
+  map_cmd->add_option("TERM", map_terms, "strings the run's key holds (digo w=10 seed=1)");
+  map_cmd->add_option("--out,-o", map_out, "the map file (default: standard output)");
+
   std::string report_dir;
   std::string report_format = "md";
   CLI::App* report_cmd = app.add_subcommand("report", "timing and accuracy tables of a results store");
@@ -212,6 +222,18 @@ int main(int argc, char** argv) {
         std::cerr << "icpbench: interrupted: " << s.stopped << " runs in flight were stopped, "
                   << s.Finished() << " finished runs kept\n";
         return 128 + s.interrupted_by;
+      }
+    } else if (*map_cmd) {
+      std::string key;
+      const icp::LandmarkMap map = icp::MapOfStoredRun(map_dir, map_terms, &key);
+      if (map_out.empty()) {
+        icp::WriteLandmarkMap(map, std::cout, "from run " + key);
+      } else {
+        std::ofstream out(map_out);
+        icp::WriteLandmarkMap(map, out, "from run " + key);
+        out.close();
+        if (!out) throw std::runtime_error(map_out + ": cannot write the map");
+        std::cerr << "icpbench: " << map.size() << " landmarks in " << map_out << "\n";
       }
     } else if (*report_cmd) {
       std::cout << icp::ReportDirectory(report_dir, report_format, icp::PaperTables);

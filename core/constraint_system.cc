@@ -67,6 +67,43 @@ ConstraintSystem& ConstraintSystem::operator=(const ConstraintSystem& other) {
   return *this;
 }
 
+ConstraintSystem ConstraintSystem::WithConstraints(const std::vector<int>& indices) const {
+  ConstraintSystem out;
+  out.names_ = names_;
+  out.index_of_ = index_of_;
+  out.domains_ = domains_;
+  // Only the nodes the kept constraints reach, so that a small ICSP of a
+  // large graph is small: children have smaller ids, so one pass down from
+  // the roots marks them and one pass up copies them.
+  std::vector<char> reached(graph_->size(), 0);
+  for (int i : indices) {
+    if (i < 0 || i >= static_cast<int>(constraints_.size()))
+      throw std::out_of_range("constraint " + std::to_string(i) + " of " +
+                              std::to_string(constraints_.size()));
+    reached[constraints_[i].root] = 1;
+  }
+  for (int id = graph_->size() - 1; id >= 0; --id) {
+    if (!reached[id]) continue;
+    const ExprNode& node = graph_->node(id);
+    if (node.op == Op::kConst || node.op == Op::kVar) continue;
+    reached[node.a] = 1;
+    if (IsBinary(node.op)) reached[node.b] = 1;
+  }
+  std::vector<int> copy(graph_->size(), -1);
+  ExprGraph& g = *out.graph_;
+  for (int id = 0; id < graph_->size(); ++id) {
+    if (!reached[id]) continue;
+    const ExprNode& node = graph_->node(id);
+    if (node.op == Op::kConst) copy[id] = g.Constant(node.value);
+    else if (node.op == Op::kVar) copy[id] = g.Variable(node.n);
+    else if (node.op == Op::kPow) copy[id] = g.Power(copy[node.a], node.n);
+    else if (IsBinary(node.op)) copy[id] = g.Binary(node.op, copy[node.a], copy[node.b]);
+    else copy[id] = g.Unary(node.op, copy[node.a]);
+  }
+  for (int i : indices) out.constraints_.push_back({copy[constraints_[i].root], constraints_[i].range});
+  return out;
+}
+
 Expr ConstraintSystem::AddVariable(const std::string& name, const Interval& domain) {
   if (FindVariable(name) >= 0)
     throw std::invalid_argument("variable '" + name + "' is declared twice");

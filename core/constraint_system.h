@@ -94,6 +94,9 @@ class ConstraintSystem {
   const std::vector<Constraint>& constraints() const { return constraints_; }
   const ExprGraph& graph() const { return *graph_; }
   ExprGraph& mutable_graph() { return *graph_; }
+  // The same variables and domains with only the constraints at indices
+  // (a sub-ICSP of a graph, paper 004 eq. 22-25).
+  ConstraintSystem WithConstraints(const std::vector<int>& indices) const;
   // The constraint in Minibex syntax.
   std::string ConstraintToString(int index) const;
   // The whole system as a Minibex file that parses back to it, or to an

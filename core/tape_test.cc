@@ -328,5 +328,27 @@ TEST(TapeTest, CompiledSystemIndexesConstraintsByVariable) {
   EXPECT_EQ(sys.constraints_of(2), (std::vector<int>{1}));
 }
 
+// A sub-ICSP (paper 004 eq. 22-25) keeps every variable and only the
+// chosen constraints, in the order chosen, over a graph of their nodes only.
+TEST(TapeTest, WithConstraintsKeepsTheVariablesAndTheChosenConstraints) {
+  ConstraintSystem csp;
+  Expr x = csp.AddVariable("x", {0, 1});
+  Expr y = csp.AddVariable("y", {-1, 2});
+  Expr z = csp.AddVariable("z", {0, 3});
+  csp.AddConstraint(x + y, Interval(1.0));
+  csp.AddConstraint(Sin(y) * Exp(z) - Sqr(x), Interval(0.5));
+  csp.AddConstraint(Pow(z, 3) / (x - 2.0), Relation::kLeq, y);
+  const ConstraintSystem part = csp.WithConstraints({2, 0});
+  EXPECT_EQ(part.names(), csp.names());
+  EXPECT_EQ(part.domains(), csp.domains());
+  ASSERT_EQ(part.constraints().size(), 2u);
+  EXPECT_EQ(part.ConstraintToString(0), csp.ConstraintToString(2));
+  EXPECT_EQ(part.ConstraintToString(1), csp.ConstraintToString(0));
+  EXPECT_LT(part.graph().size(), csp.graph().size());  // sin, exp, sqr left out
+  CompiledSystem sys(part);
+  EXPECT_EQ(sys.constraints_of(0), (std::vector<int>{0, 1}));
+  EXPECT_THROW(csp.WithConstraints({3}), std::out_of_range);
+}
+
 }  // namespace
 }  // namespace icp

@@ -66,6 +66,16 @@ struct CspView {
   // constraint. An ICP algorithm contracts the CSP and these in turn to a
   // fixpoint (ComposeWithCspView); empty for most problems.
   std::vector<std::shared_ptr<Contractor>> extra_contractors;
+  // The CSP as a graph of small ICSPs (paper 004 eq. 20-21), for estimators
+  // that solve them one at a time (lic): each is what one motion or one
+  // observation adds, its time step and its constraints (indices into
+  // csp.constraints()). Empty when the problem does not group them.
+  struct Icsp {
+    int time = 0;
+    bool motion = false;
+    std::vector<int> constraints;
+  };
+  std::vector<Icsp> icsps;
 };
 
 // The contractor an ICP algorithm runs on a CSP view: csp_contractor alone

@@ -10,6 +10,7 @@
 #include "harness/coverage.h"
 #include "harness/environment_error.h"
 #include "harness/guarantee.h"
+#include "harness/landmark_metrics.h"
 #include "harness/metrics.h"
 #include "harness/sweep_recorder.h"
 #include "harness/worker_pool.h"
@@ -58,6 +59,7 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
   PostStateJudge post_states;
   GuaranteeJudge guarantee;
   CoverageCounter coverage;
+  LandmarkJudge landmarks;
   record.spec = spec;
   const auto start = Clock::now();
   int step_index = 0;
@@ -77,6 +79,7 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
       StepRecord& r = taken.record;
       post_states.Judge(step, &result.properties);
       coverage.Add(step, *result.estimate, &result.properties);
+      landmarks.Judge(step, result.landmarks, &result.properties);
       for (Property& p : result.properties) r.properties.push_back(std::move(p));
       for (const Property& p : step.annotations) r.properties.push_back(p);
       for (Property& p : result.estimate->Extras()) r.properties.push_back(std::move(p));
@@ -114,6 +117,7 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
   if (estimator) record.properties = estimator->RunProperties();
   for (Property& p : guarantee.RunProperties()) record.properties.push_back(std::move(p));
   coverage.AppendRunProperties(&record.properties);
+  for (Property& p : landmarks.RunProperties()) record.properties.push_back(std::move(p));
   record.wall_time_s = Seconds(Clock::now() - start);
   record.metrics = metrics.Finish(spec.seed);
   return record;

@@ -5,7 +5,9 @@
 #ifndef ICPBENCH_PROBLEMS_PROBLEM_H_
 #define ICPBENCH_PROBLEMS_PROBLEM_H_
 
+#include <array>
 #include <functional>
+#include <map>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -29,6 +31,18 @@ struct Step {
   // the step's properties (e.g. car-track's GPS box in use, gps_x_lo ...,
   // for paper 000's Fig. 3); for reports and figures, never for estimators.
   Properties annotations;
+  // Landmarks (states that do not move, StateRef::Landmark): the true
+  // position of each, by identity, and how a landmark's components (a Box
+  // in StateRef's component order) give its position box (paper 004 eq.
+  // 12). For the landmark metrics (held, MPV, MDW), never for estimators;
+  // empty and unset without landmarks.
+  std::map<int, std::array<double, 3>> landmark_truth;
+  std::function<std::array<Interval, 3>(const Box&)> landmark_position;
+  // The landmarks the map metrics (MPV, MDW) average over: those the drive
+  // can locate (paper 004 averages over "the converged landmarks"; which
+  // ones is the problem's to say, from the truth, so that every estimator
+  // is scored on the same ones).
+  std::vector<int> scored_landmarks;
 };
 
 class Problem {

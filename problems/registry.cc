@@ -9,6 +9,7 @@
 #include "problems/line_intersection/line_intersection.h"
 #include "problems/marina_sonar/marina_sonar.h"
 #include "problems/minibex_file/minibex_file.h"
+#include "problems/visual_landmarks/visual_landmarks.h"
 
 namespace icp {
 
@@ -35,6 +36,9 @@ std::vector<ProblemInfo>& Table() {
       {"city-roads", "a car in a city without GPS: speed, compass and the road map through the image contractor, paper 003 §4.8.7 (Fig. 4.17)",
        &MakeCityRoads, &DefaultParams<CityRoadsParams>, &ResolveCityRoads,
        {View::kCsp, View::kMeasurementSet, View::kProbabilistic}},
+      {"visual-landmarks", "a car with a camera mapping landmarks as interval cones (teach) and localizing on the map (repeat), paper 004",
+       &MakeVisualLandmarks, &DefaultParams<VisualLandmarksParams>, &ResolveVisualLandmarks,
+       {View::kCsp}},
   };
   return table;
 }

@@ -1,7 +1,7 @@
 // Golden boxes: every ICP algorithm gives, step for step, the same newest-state
 // box on a fixed 300-step car-track drive (tests/fixtures/car_track_300.csv,
-// carry=first, default parameters) as when the file was written. A change of
-// the run loop, the estimators or the problem that moves a single bound by an
+// default parameters: carry=first, digo and lic carry=all) as when the file
+// was written. A change of the run loop, the estimators or the problem that moves a single bound by an
 // ulp fails here. The drive is a log, not the simulator, so changing the
 // simulator's random draws does not move it.
 //
@@ -82,7 +82,8 @@ std::map<std::string, std::string> ReadGolden() {
 TEST(CarTrackGolden, Update) {
   if (!std::getenv("ICPBENCH_UPDATE_GOLDEN")) GTEST_SKIP() << "set ICPBENCH_UPDATE_GOLDEN=1 to rewrite";
   std::ofstream out(kGolden);
-  out << "# tests/car_track_golden_test.cc: newest-state boxes on car_track_300.csv, carry=first\n";
+  out << "# tests/car_track_golden_test.cc: newest-state boxes on car_track_300.csv, default "
+         "parameters (carry=first; digo and lic: carry=all)\n";
   for (const std::string& a : testing::AlgorithmsNeeding(View::kCsp)) out << Golden(a, Drive(a));
 }
 

@@ -74,6 +74,9 @@ TEST(OrderingTest, ThreeBInsideBC4InsideHC4AndBC3CloseToBC4) {
 TEST(OrderingTest, ContractingTwiceChangesNothingBeyondThePrecision) {
   for (const AlgorithmInfo& info : Algorithms()) {
     if (info.test_only || info.contractor == nullptr) continue;
+    // LIC solves each ICSP once, alone, with no propagation between them
+    // (what paper 004's DIGO adds): a second pass does contract more.
+    if (info.name == "lic") continue;
     for (std::uint64_t seed = 1; seed <= 100; ++seed) {
       testing::RandomCsp r = testing::MakeRandomCsp(seed);
       auto contractor = info.contractor({}, r.csp);

@@ -102,11 +102,57 @@ void ReportWindowStates(const CspView& view, const StateSpace& space, const Box&
 }
 }  // namespace
 
+LocalIcspContractor::LocalIcspContractor(ContractorFactory make_contractor,
+                                         ParamMap contractor_params, const ConstraintSystem& csp,
+                                         std::vector<CspView::Icsp> icsps) {
+  for (const CspView::Icsp& icsp : icsps)
+    (icsp.motion ? motions_ : observations_)
+        .push_back(make_contractor(contractor_params, csp.WithConstraints(icsp.constraints)));
+}
+
+ContractSummary LocalIcspContractor::Contract(Box& box, ContractContext& context) {
+  ContractSummary total;
+  const Box initial = box;
+  auto solve = [&](Contractor& c, Box& b) {
+    ContractContext own(context.stop());
+    const ContractSummary s = c.Contract(b, own);
+    total.work += s.work;
+    if (s.status == ContractStatus::kStopped) total.status = ContractStatus::kStopped;
+  };
+  for (auto& motion : motions_)
+    if (!box.IsEmpty()) solve(*motion, box);
+  const Box predicted = box;
+  for (auto& observation : observations_) {
+    if (box.IsEmpty()) break;
+    Box b = predicted;
+    solve(*observation, b);
+    box = Intersect(box, b);
+  }
+  if (box.IsEmpty()) {
+    box.SetEmpty();
+    total.status = ContractStatus::kEmpty;
+  } else if (total.status != ContractStatus::kStopped) {
+    total.status = StatusOf(initial, box);
+  }
+  return total;
+}
+
+std::vector<CspView::Icsp> NewestIcsps(const CspView& view) {
+  std::vector<CspView::Icsp> out;
+  for (const CspView::Icsp& icsp : view.icsps)
+    if (icsp.time == view.newest) out.push_back(icsp);
+  if (view.icsps.empty())
+    for (int c = 0; c < static_cast<int>(view.csp.constraints().size()); ++c)
+      out.push_back({view.newest, false, {c}});
+  return out;
+}
+
 WindowEstimator::WindowEstimator(ContractorFactory make_contractor, ParamMap contractor_params,
-                                 Carry carry)
+                                 Carry carry, bool local)
     : make_contractor_(make_contractor),
       contractor_params_(std::move(contractor_params)),
-      carry_(carry) {}
+      carry_(carry),
+      local_(local) {}
 
 Box WindowEstimator::InitialBox(const CspView& view, const StateSpace& space) const {
   Box box = view.csp.domains();
@@ -137,7 +183,9 @@ StepResult WindowEstimator::Step(const Views& views, const StopCondition& stop) 
   Box box = InitialBox(view, views.space);
   const Box initial = box;
   std::unique_ptr<Contractor> contractor =
-      ComposeWithCspView(make_contractor_(contractor_params_, view.csp), view);
+      local_ ? std::make_unique<LocalIcspContractor>(make_contractor_, contractor_params_, view.csp,
+                                                     NewestIcsps(view))
+             : ComposeWithCspView(make_contractor_(contractor_params_, view.csp), view);
   StepResult result;
   const auto start = std::chrono::steady_clock::now();
   ContractContext context(stop);
@@ -168,6 +216,8 @@ StepResult WindowEstimator::Step(const Views& views, const StopCondition& stop) 
     for (std::size_t i = 0; i < view.states.size(); ++i)
       if (view.states[i].is_landmark()) landmarks_[view.states[i]] = box[i];
   }
+  // landmarks_ is in StateRef order: each landmark's components in turn.
+  for (const auto& [state, interval] : landmarks_) result.landmarks[state.landmark].push_back(interval);
   previous_box_ = box.IsEmpty() ? Box() : std::move(box);
   return result;
 }

@@ -14,6 +14,15 @@
 // static landmark's true position never moves, so its earlier box still
 // holds it: paper 004's DIGO keeps landmark domains across windows).
 //
+// With local = true it is paper 004's LIC instead of its DIGO: of the
+// window it solves only the newest step's ICSPs (CspView::icsps), each alone:
+// the motion ICSPs first (the prediction), then every observation ICSP from
+// that predicted box, the results intersected. The other constraints of the
+// window are not used. A view without ICSPs counts each constraint as one.
+//
+// Every step reports the estimate of every landmark so far
+// (StepResult::landmarks).
+//
 // Each step also reports the window's oldest state's box (post_step,
 // post_<name>_lo/hi: paper 004's post-localization, the last report for a
 // state being its final box) and the mean x-y area of the window's states
@@ -31,6 +40,7 @@
 
 #include "algorithms/estimator.h"
 #include "core/constraint_system.h"
+#include "core/view.h"
 #include "core/params.h"
 
 namespace icp {
@@ -58,10 +68,32 @@ void Describe(WindowParams<ContractorParams>& p, ParamSet& set) {
 // `period` for a periodic component (a heading), in carried's frame.
 Interval CarryInto(const Interval& fresh, const Interval& carried, double period);
 
+// Paper 004's LIC as a contractor: the motion ICSPs in turn (the
+// prediction), then every other ICSP alone from the predicted box, by the
+// contractor make_contractor builds for it; the results intersected. Sound
+// when that contractor is: the intersection of boxes that each keep every
+// solution keeps every solution.
+class LocalIcspContractor : public Contractor {
+ public:
+  LocalIcspContractor(ContractorFactory make_contractor, ParamMap contractor_params,
+                      const ConstraintSystem& csp, std::vector<CspView::Icsp> icsps);
+  std::string_view Name() const override { return "lic"; }
+  ContractSummary Contract(Box& box, ContractContext& context) override;
+
+ private:
+  std::vector<std::unique_ptr<Contractor>> motions_;
+  std::vector<std::unique_ptr<Contractor>> observations_;
+};
+
+// The ICSPs LIC solves at a step: those of the view's newest step; without
+// ICSPs in the view, every constraint as one.
+std::vector<CspView::Icsp> NewestIcsps(const CspView& view);
+
 class WindowEstimator : public Estimator {
  public:
   // contractor_params: the contractor's own parameters (carry removed).
-  WindowEstimator(ContractorFactory make_contractor, ParamMap contractor_params, Carry carry);
+  WindowEstimator(ContractorFactory make_contractor, ParamMap contractor_params, Carry carry,
+                  bool local = false);
   StepResult Step(const Views& views, const StopCondition& stop) override;
   Properties RunProperties() const override { return WorkProperties(total_work_); }
 
@@ -72,6 +104,7 @@ class WindowEstimator : public Estimator {
   ContractorFactory make_contractor_;
   ParamMap contractor_params_;
   Carry carry_;
+  bool local_;
   std::vector<StateRef> previous_states_;  // sorted, as windows are
   Box previous_box_;                        // empty: nothing to carry
   std::map<StateRef, Interval> landmarks_;  // every landmark state's last result

@@ -58,7 +58,8 @@ Scene RandomScene(RandomEngine& engine, const CameraIntrinsics& camera) {
 // The true cone parameters of a landmark first seen from the camera at
 // (x, y, mount_height): alpha the representative of the direction that the
 // initial cone's alpha interval is built around (theta - atan(a)).
-std::array<double, 6> TrueCone(const Scene& scene, const CameraIntrinsics& camera) {
+std::array<double, kLandmarkComponents> TrueCone(const Scene& scene,
+                                                const CameraIntrinsics& camera) {
   const double dx = scene.landmark[0] - scene.pose[0];
   const double dy = scene.landmark[1] - scene.pose[1];
   const double dz = scene.landmark[2] - camera.mount_height;
@@ -66,7 +67,8 @@ std::array<double, 6> TrueCone(const Scene& scene, const CameraIntrinsics& camer
   const double a = (dx * s - dy * c) / (dx * c + dy * s);
   const double horizontal = std::hypot(dx, dy);
   return {scene.pose[0], scene.pose[1], camera.mount_height, scene.pose[2] - std::atan(a),
-          std::atan2(dz, horizontal), std::hypot(horizontal, dz)};
+          std::atan2(dz, horizontal), std::hypot(horizontal, dz), scene.landmark[0],
+          scene.landmark[1], scene.landmark[2]};
 }
 
 Interval Around(double value, double radius) { return Interval(value - radius, value + radius); }
@@ -101,11 +103,12 @@ TEST(CameraModelTest, InitialConeHoldsEveryLandmarkSeenInThePixelBox) {
 }
 
 // One observation ICSP over (x, y, theta) of the second pose and the
-// landmark's six parameters, in that order; contracted by HC4.
+// landmark's nine components (cone, position), in that order, with eq. 12;
+// contracted by HC4.
 struct Observation {
   ConstraintSystem csp;
   Box Contract(const Box& pose, const Box& cone) {
-    Box box(9);
+    Box box(3 + kLandmarkComponents);
     for (int i = 0; i < 3; ++i) box[i] = pose[i];
     for (int i = 0; i < kLandmarkComponents; ++i) box[3 + i] = cone[i];
     HC4Contractor hc4(std::make_shared<CompiledSystem>(csp), HC4Params{});
@@ -122,7 +125,10 @@ Observation MakeObservation(const Interval& u, const Interval& v, const CameraIn
                        csp.AddVariable("theta", Interval())};
   const LandmarkExprs landmark{csp.AddVariable("xc", Interval()), csp.AddVariable("yc", Interval()),
                                csp.AddVariable("zc", Interval()), csp.AddVariable("alpha", Interval()),
-                               csp.AddVariable("phi", Interval()), csp.AddVariable("d", Interval())};
+                               csp.AddVariable("phi", Interval()), csp.AddVariable("d", Interval()),
+                               csp.AddVariable("lx", Interval()),  csp.AddVariable("ly", Interval()),
+                               csp.AddVariable("lz", Interval())};
+  AddConeDefinition(csp, landmark);
   AddObservation(csp, pose, landmark, u, v, camera);
   return observation;
 }
@@ -225,6 +231,7 @@ TEST(CameraModelTest, ALandmarkBehindTheCameraIsExcluded) {
   // The camera at the origin looking along +x; the cone points along -x.
   Box cone{Interval(-10), Interval(0), Interval(camera.mount_height), Around(kPi, 0.01),
            Around(0, 0.01), Interval(1, 5)};
+  for (const Interval& axis : LandmarkPosition(cone)) cone.push_back(axis);
   const Box contracted = observation.Contract(Box{Interval(0), Interval(0), Interval(0)}, cone);
   EXPECT_TRUE(contracted.IsEmpty());
 }

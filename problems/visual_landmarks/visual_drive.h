@@ -12,11 +12,14 @@
 //   - the five landmarks of the straight route, at (12, 3, 2), (14, -2.5, 1),
 //     (16, 1.5, 3), (18, -4, 2.5) and (30, 0.2, 1.6): the last one almost on
 //     the line of travel, so the drive gives it almost no parallax (paper
-//     004 measures MPV over the four landmarks that converge);
-//   - the "loop" route (about 180 m): 60 m straight, a half circle of radius
+//     004 measures MPV over the four landmarks that converge); more than
+//     five are drawn along its first 40 m;
+//   - the "loop" route (about 183 m): 60 m straight, a half circle of radius
 //     10 m, 60 m straight, a half circle back to the start; its landmarks
-//     are drawn (seeded) along the route, 3 to 8 m to either side, 0.5 to
-//     4 m high;
+//     are drawn along the route, 3 to 8 m to either side, 0.5 to 4 m high;
+//   - drawn landmarks come from their own engine (layout_seed), not from the
+//     drive's seed, so a teach run and a repeat run of other seeds, lengths
+//     or speeds on the same route share the map;
 //   - bounded errors, drawn uniformly within 0.9 of each half-width so that
 //     the truth lies strictly inside every interval: odometry +-odometry_error
 //     m, gyro +-gyro_error rad per step, GPS +-gps_error m, pixels
@@ -41,8 +44,10 @@ struct VisualDriveParams {
   int steps = 100;
   double dt = 1;        // s
   double speed = 0.1;   // m/s
-  // Landmarks of the loop route (the straight route has its five).
+  // How many landmarks: the straight route's first five are the fixed ones
+  // below, the others (and the loop's) are drawn from layout_seed.
   int landmarks = 5;
+  std::uint64_t layout_seed = 1;
   double pixel_error = 1;        // px, half-width of a pixel box
   double odometry_error = 0.005; // m per step, half-width of [delta s]
   double gyro_error = 0.001;     // rad per step, half-width of [delta theta]

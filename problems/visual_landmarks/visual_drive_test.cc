@@ -76,11 +76,28 @@ TEST(VisualDriveTest, LoopRouteClosesAndItsLandmarksLineIt) {
       for (const auto& pose : drive.poses)
         nearest = std::min(nearest, std::hypot(landmark[0] - pose[0], landmark[1] - pose[1]));
       EXPECT_GE(nearest, 1.5);
-      EXPECT_LE(nearest, 8 + 1e-9);
+      EXPECT_LE(nearest, 8.1);  // 8 m from the curve, poses 1 m apart
     }
   }
-  // Seeded: the same seed, the same drive.
-  EXPECT_EQ(SimulateVisualDrive(p, 7).landmarks, SimulateVisualDrive(p, 7).landmarks);
+  // The map is the route's (layout_seed), not the drive's: a teach drive
+  // and a repeat drive of other seeds, speeds and lengths share it.
+  VisualDriveParams slow = p;
+  slow.speed = 0.5;
+  slow.steps = 10;
+  EXPECT_EQ(SimulateVisualDrive(p, 7).landmarks, SimulateVisualDrive(slow, 8).landmarks);
+  slow.layout_seed = 2;
+  EXPECT_NE(SimulateVisualDrive(p, 7).landmarks, SimulateVisualDrive(slow, 8).landmarks);
+}
+
+TEST(VisualDriveTest, MoreThanFiveLandmarksOnTheStraightRouteKeepThePapersFive) {
+  VisualDriveParams p;
+  p.landmarks = 12;
+  const VisualDrive drive = SimulateVisualDrive(p, 1);
+  ASSERT_EQ(drive.landmarks.size(), 12u);
+  EXPECT_EQ(drive.landmarks[4], (std::array<double, 3>{30, 0.2, 1.6}));
+  ExpectMeasurementsHoldTheTruth(p, drive);
+  p.landmarks = 3;
+  EXPECT_EQ(SimulateVisualDrive(p, 1).landmarks.size(), 3u);
 }
 
 TEST(VisualDriveTest, BadParametersAreRejected) {
@@ -89,6 +106,9 @@ TEST(VisualDriveTest, BadParametersAreRejected) {
   EXPECT_THROW(SimulateVisualDrive(p, 1), std::invalid_argument);
   p.route = "straight";
   p.steps = 0;
+  EXPECT_THROW(SimulateVisualDrive(p, 1), std::invalid_argument);
+  p.steps = 10;
+  p.landmarks = 0;
   EXPECT_THROW(SimulateVisualDrive(p, 1), std::invalid_argument);
 }
 

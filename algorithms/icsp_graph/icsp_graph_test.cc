@@ -1,0 +1,63 @@
+#include "algorithms/icsp_graph/icsp_graph.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "problems/visual_landmarks/visual_landmarks.h"
+
+namespace icp {
+namespace {
+
+// Runs an estimator over a problem, checking on every step that the pose box
+// and every landmark's position box hold the truth; returns the final
+// landmark position boxes.
+std::map<int, std::array<Interval, 3>> RunAndCheck(Estimator& estimator, Problem& problem,
+                                                   const std::string& what) {
+  std::map<int, std::array<Interval, 3>> last;
+  Step step;
+  while (problem.Next(&step)) {
+    const std::string where = what + " step " + std::to_string(step.views.step);
+    StepResult r = estimator.Step(step.views, StopCondition());
+    EXPECT_TRUE(r.estimate->Contains(step.truth)) << where;
+    for (const auto& [n, cone] : r.landmarks) {
+      const std::array<Interval, 3> position = step.landmark_position(cone);
+      for (int axis = 0; axis < 3; ++axis)
+        EXPECT_TRUE(position[axis].Contains(step.landmark_truth.at(n)[axis]))
+            << where << " landmark " << n << " axis " << axis;
+      last[n] = position;
+    }
+  }
+  return last;
+}
+
+TEST(IcspGraphTest, DigoAndLicHoldEveryPoseAndLandmarkOnEveryStep) {
+  for (std::uint64_t seed : {1u, 2u}) {
+    for (const char* w : {"1", "10"}) {
+      const ParamMap teach{{"w", w}, {"steps", "60"}};
+      auto digo = MakeDigo({}, seed);
+      auto lic = MakeLic({}, seed);
+      auto p1 = MakeVisualLandmarks(teach, seed);
+      auto p2 = MakeVisualLandmarks(teach, seed);
+      const auto by_digo = RunAndCheck(*digo, *p1, std::string("digo w=") + w);
+      const auto by_lic = RunAndCheck(*lic, *p2, std::string("lic w=") + w);
+      EXPECT_EQ(by_digo.size(), 5u);
+      EXPECT_EQ(by_lic.size(), 5u);
+    }
+  }
+  const ParamMap repeat{{"phase", "repeat"}, {"route", "loop"}, {"speed", "1"}, {"steps", "80"},
+                        {"landmarks", "40"}, {"w", "5"}};
+  auto digo = MakeDigo({}, 3);
+  auto problem = MakeVisualLandmarks(repeat, 3);
+  RunAndCheck(*digo, *problem, "digo repeat");
+}
+
+TEST(IcspGraphTest, InnerMustBeACspContractor) {
+  EXPECT_NO_THROW(ResolveIcspGraph("digo", {{"inner", "bc4"}}));
+  EXPECT_THROW(ResolveIcspGraph("digo", {{"inner", "q-relaxed"}}), ParamError);
+  EXPECT_THROW(ResolveIcspGraph("lic", {{"inner", "nope"}}), ParamError);
+  EXPECT_THROW(MakeLic({{"inner", "digo"}}, 1), ParamError);
+}
+
+}  // namespace
+}  // namespace icp
