@@ -21,6 +21,7 @@ void LandmarkJudge::Judge(const Step& step, const std::map<int, Box>& landmarks,
     }
     const auto truth = step.landmark_truth.find(n);
     if (truth == step.landmark_truth.end()) continue;
+    truth_[n] = truth->second;
     bool held = true;
     for (int axis = 0; axis < 3; ++axis) held = held && box[axis].Contains(truth->second[axis]);
     out->push_back({prefix + "held", static_cast<std::int64_t>(held)});
@@ -38,6 +39,12 @@ Properties LandmarkJudge::RunProperties() const {
                     {"landmarks_scored", static_cast<std::int64_t>(scored_.size())}};
   if (judged_ > 0)
     out.push_back({"landmark_consistency", static_cast<double>(held_) / static_cast<double>(judged_)});
+  for (const auto& [n, t] : truth_) {
+    const std::string prefix = "L" + std::to_string(n) + "_truth_";
+    out.push_back({prefix + "x", t[0]});
+    out.push_back({prefix + "y", t[1]});
+    out.push_back({prefix + "z", t[2]});
+  }
   if (scored_.empty()) return out;
   double volume = 0, width[3] = {0, 0, 0};
   for (int n : scored_) {

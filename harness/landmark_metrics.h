@@ -29,12 +29,14 @@ class LandmarkJudge {
   // the problem's scored landmarks (Step::scored_landmarks, those its drive
   // can locate), mpv (eq. 32, m^3) and mdw_x, mdw_y, mdw_z (Table 2's mean
   // widths, m); +inf when an estimator left one of them unbounded or never
-  // reported it.
+  // reported it; and each judged landmark's true position, L<n>_truth_x,
+  // L<n>_truth_y, L<n>_truth_z (for figures).
   Properties RunProperties() const;
 
  private:
   std::map<int, std::array<Interval, 3>> last_;
   std::vector<int> scored_;
+  std::map<int, std::array<double, 3>> truth_;
   std::int64_t judged_ = 0;
   std::int64_t held_ = 0;
 };

@@ -47,6 +47,7 @@ TEST(LandmarkJudgeTest, CountsHeldLandmarksAndAveragesTheScoredOnes) {
   EXPECT_NEAR(Number(run, "mdw_x"), (1.0 + 0.2) / 2, 1e-12);
   EXPECT_NEAR(Number(run, "mdw_y"), (0.2 + 0.4) / 2, 1e-12);
   EXPECT_NEAR(Number(run, "mdw_z"), (0.4 + 0.4) / 2, 1e-12);
+  EXPECT_EQ(Number(run, "L1_truth_y"), 5);
 }
 
 TEST(LandmarkJudgeTest, AScoredLandmarkLeftUnboundedMakesTheMeansInfinite) {

@@ -1,10 +1,12 @@
 // Paper 004's own measure (experiments/paper004/claims.yaml): real-time
-// localization against post-localization (§4.2) over the window sweep's
-// runs, as experiments/paper004 pools them (Paper004PostLocalization).
+// localization against post-localization (§4.2) over the car track's window
+// sweep and the visual-landmarks repeat runs, as experiments/paper004 pools
+// them (Paper004PostLocalization, Paper004RepeatPostLocalization).
 #include <cmath>
 #include <string>
 
 #include "experiments/paper004/paper004.h"
+#include "experiments/paper004/visual.h"
 #include "paper/claim_measures.h"
 
 namespace icp {
@@ -35,7 +37,12 @@ Measurement MeasurePostLocalization(const YAML::Node& measure, const ClaimContex
   std::string which;
   const auto& all_points = Cached<std::vector<PostLocalizationPoint>>(
       context, "paper004/post_localization",
-      [&] { return Paper004PostLocalization(context.runs); });
+      [&] {
+        std::vector<PostLocalizationPoint> points = Paper004PostLocalization(context.runs);
+        for (PostLocalizationPoint& p : Paper004RepeatPostLocalization(context.runs))
+          points.push_back(std::move(p));
+        return points;
+      });
   for (const PostLocalizationPoint& p : all_points) {
     if (!Picks(selectors, p.point)) continue;
     const double v = quantity == "consistency" ? p.post.consistency_rate

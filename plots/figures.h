@@ -84,6 +84,18 @@ void SkipFigure(const FigureText& text, const std::vector<const RunRecord*>& run
 void PlotSweepFigure(const FigureText& text, const std::string& x_label,
                      const std::vector<SweepPoint>& points, const std::string& out_dir,
                      PlotOutput* out);
+// One quantity of a run against the swept value, a panel of the figure below.
+struct SweepQuantity {
+  std::string title;    // "MPV"
+  std::string y_label;  // "volume (m^3)"
+  std::function<double(const RunRecord&)> value;
+};
+// The same kind with other quantities, one panel each, in order; a panel
+// none of whose points has a finite value is left out.
+void PlotSweepFigure(const FigureText& text, const std::string& x_label,
+                     const std::vector<SweepPoint>& points,
+                     const std::vector<SweepQuantity>& quantities, const std::string& out_dir,
+                     PlotOutput* out);
 // Interval error corridors [lo - truth, hi - truth] of x and y over the
 // steps, one row of panels per run, the y range shared by each column.
 void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecord*>& runs,
@@ -126,6 +138,13 @@ void PlotBoxTrackFigure(const FigureText& text,
                         const std::vector<std::pair<std::string, const RunRecord*>>& panels,
                         const Interval& x, const Interval& y, const std::string& out_dir,
                         PlotOutput* out);
+// Paper 004 Fig. 8: a top view of the landmarks' x-y position boxes at the
+// given steps of a run (the step properties L<n>_x_lo ... L<n>_y_hi, clipped
+// to the view, so that an unbounded cone reaches its edge), with their true
+// positions (run properties L<n>_truth_x, _y) and the car's true track.
+void PlotLandmarkBoxesFigure(const FigureText& text, const RunRecord& run,
+                             const std::vector<int>& steps, const std::string& out_dir,
+                             PlotOutput* out);
 // Solve time per CSP, one box per group, pooling its ok runs' steps.
 void PlotTimingFigure(const FigureText& text, const std::vector<const GroupSummary*>& groups,
                       const std::string& out_dir, PlotOutput* out);

@@ -89,10 +89,8 @@ std::string SharedSuffix(const std::vector<std::string>& labels) {
 void PlotSweepFigure(const FigureText& text, const std::string& x_label,
                      const std::vector<SweepPoint>& points, const std::string& out_dir,
                      PlotOutput* out) {
-  if (points.empty()) return Skip(text, out);
-  // The areas and times come from the run metrics, which every ok run has;
-  // the window states' area is a step property, which runs stored with
-  // `record: runs` lack.
+  // The window states' area is a step property, which runs stored with
+  // `record: runs` lack: said, and its panel left out when no run has it.
   std::vector<const RunRecord*> runs;
   for (const SweepPoint& p : points) runs.insert(runs.end(), p.ok_runs.begin(), p.ok_runs.end());
   if (const std::vector<const RunRecord*> runs_only = RunsOnlyOf(runs); !runs_only.empty())
@@ -100,19 +98,28 @@ void PlotSweepFigure(const FigureText& text, const std::string& x_label,
                             ": drawn from the run metrics; the mean area of the window states (a "
                             "step property) lacks " +
                             RunCount(runs_only.size()) + " " + RecordedWithRunsOnly(runs_only));
-  const bool window_area = std::any_of(points.begin(), points.end(), [](const SweepPoint& p) {
-    return std::isfinite(p.mean_window_area);
-  });
+  PlotSweepFigure(
+      text, x_label, points,
+      {{"Mean x-y area of the newest state", "area (m^2)",
+        [](const RunRecord& r) { return r.metrics.mean_area; }},
+       {"Mean x-y area of the window states", "area (m^2)", RunMeanWindowArea},
+       {"Mean time per CSP", "time (ms)",
+        [](const RunRecord& r) { return r.metrics.time_mean_s * 1e3; }}},
+      out_dir, out);
+}
+
+void PlotSweepFigure(const FigureText& text, const std::string& x_label,
+                     const std::vector<SweepPoint>& points,
+                     const std::vector<SweepQuantity>& quantities, const std::string& out_dir,
+                     PlotOutput* out) {
+  if (points.empty()) return Skip(text, out);
   // Keys below the panels: the lines span the whole frame.
-  Quantity area{"Mean x-y area of the newest state", "area (m^2)", "below", {}};
-  Quantity window{"Mean x-y area of the window states", "area (m^2)", "below", {}};
-  Quantity time{"Mean time per CSP", "time (ms)", "below", {}};
+  std::vector<Quantity> rows;
+  for (const SweepQuantity& q : quantities) rows.push_back({q.title, q.y_label, "below", {}});
   const bool bars = std::any_of(points.begin(), points.end(),
                                 [](const SweepPoint& p) { return p.ok_runs.size() >= 6; });
-  if (bars) {
-    for (Quantity* q : {&area, &window, &time})
-      q->title += " (median of seeds, 95 % CI)";
-  }
+  if (bars)
+    for (Quantity& q : rows) q.title += " (median of seeds, 95 % CI)";
   // An algorithm's colour for all its configurations; its second, third ...
   // configuration dashed and marked differently, so they stay apart.
   std::vector<std::string> labels, styles;
@@ -124,14 +131,10 @@ void PlotSweepFigure(const FigureText& text, const std::string& x_label,
     styles.push_back("with yerrorlines lw 2 dt " + std::to_string(1 + nth % 5) + " pt " +
                      std::to_string(7 + 2 * (nth % 3)) + " ps 0.7 lc rgb " +
                      Quote(Colour(points[i].algorithm)));
-    for (Quantity* q : {&area, &window, &time}) q->rows.emplace_back();
-    for (; i < points.size() && points[i].label == label; ++i) {
-      area.rows.back().push_back(
-          MedianRow(points[i], [](const RunRecord& r) { return r.metrics.mean_area; }));
-      window.rows.back().push_back(MedianRow(points[i], RunMeanWindowArea));
-      time.rows.back().push_back(MedianRow(
-          points[i], [](const RunRecord& r) { return r.metrics.time_mean_s * 1e3; }));
-    }
+    for (Quantity& q : rows) q.rows.emplace_back();
+    for (; i < points.size() && points[i].label == label; ++i)
+      for (std::size_t k = 0; k < rows.size(); ++k)
+        rows[k].rows.back().push_back(MedianRow(points[i], quantities[k].value));
   }
   // Parameters every line shares said once, in the title.
   const std::string shared = SharedSuffix(labels);
@@ -140,9 +143,14 @@ void PlotSweepFigure(const FigureText& text, const std::string& x_label,
   Figure f;
   f.name = text.name;
   f.title = text.title + shared;
-  std::vector<const Quantity*> shown = {&area};
-  if (window_area) shown.push_back(&window);
-  shown.push_back(&time);
+  std::vector<const Quantity*> shown;
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    bool finite = false;
+    for (const SweepPoint& p : points)
+      for (const RunRecord* r : p.ok_runs) finite = finite || std::isfinite(quantities[k].value(*r));
+    if (finite) shown.push_back(&rows[k]);
+  }
+  if (shown.empty()) return Skip(text, out);
   // Each group of equal lines noted once, with the panels it is equal in.
   std::vector<std::pair<std::vector<std::size_t>, std::string>> equal;
   for (const Quantity* q : shown) {

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "experiments/paper000/paper000.h"
+#include "experiments/paper004/visual.h"
 #include "harness/metrics.h"
 #include "harness/spec.h"
 
@@ -127,11 +128,14 @@ const RunRecord* Paper004FigureRun(const std::vector<RunRecord>& runs) {
 }
 
 std::vector<TextTable> Paper004Tables(const std::vector<RunRecord>& runs) {
-  return {PostLocalizationTable(runs)};
+  std::vector<TextTable> out = {PostLocalizationTable(runs)};
+  for (TextTable& t : Paper004VisualTables(runs)) out.push_back(std::move(t));
+  return out;
 }
 
 void Paper004Figures(const std::vector<RunRecord>& runs, const std::string& out_dir,
                      PlotOutput* out) {
+  Paper004VisualFigures(runs, out_dir, out);
   const FigureText text{"fig13_post_localization",
                         "Interval error, real-time localization (top) and post-localization",
                         "no ok HC4 car-track run of experiment window with post-localized states "

@@ -51,10 +51,11 @@ void Describe(VisualLandmarksParams& p, ParamSet& set) {
 
 ParamMap ResolveVisualLandmarks(const std::string& owner, const ParamMap& values) {
   const auto p = ParseParams<VisualLandmarksParams>(owner, values);
-  if (!p.map.empty()) {
-    if (p.phase != "repeat") throw ParamError(owner + ".map: only a repeat run reads a map");
-    ReadLandmarkMap(p.map);  // a bad file fails before the first run
-  }
+  // The file is read when a run starts, not here: a spec may name a map
+  // that an earlier command writes (scripts/main.sh: teach, icpbench map,
+  // then repeat).
+  if (!p.map.empty() && p.phase != "repeat")
+    throw ParamError(owner + ".map: only a repeat run reads a map");
   return ResolveParams<VisualLandmarksParams>(owner, values);
 }
 
