@@ -18,7 +18,7 @@ ContractorFactory InnerContractor(const std::string& owner, const std::string& i
   } catch (const std::invalid_argument& e) {
     throw ParamError(owner + ".inner = " + inner + ": " + e.what());
   }
-  if (factory == nullptr)
+  if (factory == nullptr || inner == "digo" || inner == "lic")
     throw ParamError(owner + ".inner = " + inner + ": not a CSP contractor (hc4, bc4, 3b-bc4, ...)");
   return factory;
 }

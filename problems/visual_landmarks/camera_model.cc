@@ -57,7 +57,8 @@ void AddConeDefinition(ConstraintSystem& csp, const LandmarkExprs& l) {
 }
 
 void AddObservation(ConstraintSystem& csp, const PoseExprs& pose, const LandmarkExprs& landmark,
-                    const Interval& u, const Interval& v, const CameraIntrinsics& camera) {
+                    const Interval& u, const Interval& v, const CameraIntrinsics& camera,
+                    bool on_position) {
   // The pixel box's slopes, a = X_c / Z_c and b = Y_c / Z_c: interval
   // constants, so "X_c - [a] Z_c = 0" says "X_c = a Z_c for some a in [a]".
   const Interval focal(camera.focal);
@@ -80,6 +81,12 @@ void AddObservation(ConstraintSystem& csp, const PoseExprs& pose, const Landmark
   csp.AddConstraint(-delta_z - b * (delta_x * cos_theta + delta_y * sin_theta) +
                         landmark.d * (-mz - b * (mx * cos_theta + my * sin_theta)),
                     Interval(0.0));
+  if (!on_position) {
+    csp.AddConstraint(delta_x * cos_theta + delta_y * sin_theta +
+                          landmark.d * (mx * cos_theta + my * sin_theta),
+                      Interval(0.0, kInf));  // Z_c >= 0
+    return;
+  }
   // On the position: D = L - (x, y, height), linear in L.
   const Expr dx = landmark.x - pose.x, dy = landmark.y - pose.y;
   const Expr ahead = dx * cos_theta + dy * sin_theta;  // Z_c

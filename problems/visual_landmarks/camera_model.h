@@ -112,8 +112,11 @@ void AddConeDefinition(ConstraintSystem& csp, const LandmarkExprs& landmark);
 // mirror point behind the camera also fits). Five constraints, sound for
 // any domains, Z_c's holding 0 and d or L unbounded included. The paper's
 // observation ICSP is this with AddConeDefinition.
+// With on_position false, only the cone's form and Z_c >= 0 (three
+// constraints: the observation as the paper writes it, for comparison).
 void AddObservation(ConstraintSystem& csp, const PoseExprs& pose, const LandmarkExprs& landmark,
-                    const Interval& u, const Interval& v, const CameraIntrinsics& camera);
+                    const Interval& u, const Interval& v, const CameraIntrinsics& camera,
+                    bool on_position = true);
 
 }  // namespace icp
 

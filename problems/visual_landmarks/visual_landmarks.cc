@@ -8,6 +8,7 @@
 #include <string>
 
 #include "problems/car_track/window.h"
+#include "problems/visual_landmarks/feature_log.h"
 
 namespace icp {
 
@@ -47,6 +48,11 @@ void Describe(VisualLandmarksParams& p, ParamSet& set) {
   set.Add("min_parallax", &p.min_parallax,
           "teach: the map metrics score the landmarks whose first and last rays part by this, deg",
           Range::Closed(0, 180));
+  set.Add("log", &p.log,
+          "a feature-track log replacing the simulator (feature_log.h); empty: simulate");
+  set.Add("observation", &p.observation,
+          "each sighting on the cone and the position (both) or on the cone alone (the paper's form)",
+          {"both", "cone"});
 }
 
 ParamMap ResolveVisualLandmarks(const std::string& owner, const ParamMap& values) {
@@ -101,19 +107,36 @@ std::array<double, kLandmarkComponents> TrueCone(const std::array<double, 3>& po
 
 }  // namespace
 
+namespace {
+bool Known(const std::array<double, 3>& v) {
+  return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+}
+}  // namespace
+
 VisualLandmarksProblem::VisualLandmarksProblem(const VisualLandmarksParams& params,
                                                std::uint64_t seed)
     : params_(params), drive_params_(DriveParams(params)),
-      drive_(SimulateVisualDrive(drive_params_, seed)) {
-  const int steps = params_.steps;
+      drive_(params.log.empty() ? SimulateVisualDrive(drive_params_, seed)
+                                : ReadFeatureLog(params.log)) {
+  const int steps = NumSteps();
   const int count = static_cast<int>(drive_.landmarks.size());
   const CameraIntrinsics& camera = drive_params_.camera;
+  const std::string source = params_.log.empty() ? "route " + params_.route : params_.log;
   // Pose domains: the start heading plus the gyro's sum; GPS (teach) or the
-  // start fix and dead reckoning (repeat).
+  // start fix and dead reckoning (repeat). A log without the first pose
+  // starts from the whole circle and, in repeat, from its first GPS fix.
   const auto& start = drive_.poses[0];
-  Interval heading(start[2] - params_.heading_error, start[2] + params_.heading_error);
-  Interval x(start[0] - params_.gps_error, start[0] + params_.gps_error);
-  Interval y(start[1] - params_.gps_error, start[1] + params_.gps_error);
+  Interval heading = Known(start) ? Interval(start[2] - params_.heading_error,
+                                             start[2] + params_.heading_error)
+                                  : Interval(-Pi().hi(), Pi().hi());
+  Interval x = drive_.steps[0].gps[0], y = drive_.steps[0].gps[1];
+  if (Known(start)) {
+    x = Interval(start[0] - params_.gps_error, start[0] + params_.gps_error);
+    y = Interval(start[1] - params_.gps_error, start[1] + params_.gps_error);
+  }
+  if (!teach() && !(x.IsBounded() && y.IsBounded()))
+    throw std::invalid_argument(source + ": repeat needs the first step's reference pose or a "
+                                         "GPS fix to start from");
   for (int k = 0; k < steps; ++k) {
     const VisualDriveStep& s = drive_.steps[k];
     if (k > 0) {
@@ -127,6 +150,7 @@ VisualLandmarksProblem::VisualLandmarksProblem(const VisualLandmarksParams& para
   first_sighting_.assign(count, -1);
   landmark_domains_.assign(count, Box(kLandmarkComponents));
   landmark_truth_.assign(count, {});
+  truth_known_.assign(count, false);
   usable_.assign(count, false);
   if (teach()) {
     for (int k = 0; k < steps; ++k) {
@@ -135,12 +159,14 @@ VisualLandmarksProblem::VisualLandmarksProblem(const VisualLandmarksParams& para
         first_sighting_[s.landmark] = k;
         usable_[s.landmark] = true;
         landmark_domains_[s.landmark] = InitialCone(poses_[k], s.u, s.v, camera);
+        if (!Known(drive_.poses[k]) || !Known(drive_.landmarks[s.landmark])) continue;
+        truth_known_[s.landmark] = true;
         landmark_truth_[s.landmark] =
             TrueCone(drive_.poses[k], drive_.landmarks[s.landmark], camera.mount_height);
       }
     }
     for (int n = 0; n < count; ++n)
-      if (first_sighting_[n] >= 0 && Parallax(n) >= params_.min_parallax) scored_.push_back(n);
+      if (truth_known_[n] && Parallax(n) >= params_.min_parallax) scored_.push_back(n);
     return;
   }
   LandmarkMap map;
@@ -148,33 +174,40 @@ VisualLandmarksProblem::VisualLandmarksProblem(const VisualLandmarksParams& para
     const Interval e(-params_.map_error, params_.map_error);
     for (int n = 0; n < count; ++n) {
       const auto& l = drive_.landmarks[n];
+      if (!Known(l))
+        throw std::invalid_argument(source + ": landmark " + std::to_string(n) +
+                                    " has no reference position for a surveyed map; give map");
       map[n] = {Interval(l[0]) + e, Interval(l[1]) + e, Interval(l[2]) + e};
     }
   } else {
     map = ReadLandmarkMap(params_.map);
   }
   for (const auto& [n, box] : map) {
-    if (n >= count)
+    if (n >= count) {
+      if (!params_.log.empty()) continue;  // a landmark the log never sees
       throw std::invalid_argument(params_.map + ": landmark " + std::to_string(n) + ", but route " +
                                   params_.route + " has " + std::to_string(count) +
                                   " (was the map taught with other landmarks or layout_seed?)");
+    }
     const auto& l = drive_.landmarks[n];
-    for (int axis = 0; axis < 3; ++axis)
-      if (!box[axis].Contains(l[axis]))
-        throw std::invalid_argument(
-            params_.map + ": landmark " + std::to_string(n) +
-            "'s box does not hold its position on this route (was it taught on another route or "
-            "layout_seed, or by an unsound estimator?)");
+    if (Known(l)) {
+      for (int axis = 0; axis < 3; ++axis)
+        if (!box[axis].Contains(l[axis]))
+          throw std::invalid_argument(
+              params_.map + ": landmark " + std::to_string(n) + "'s box does not hold its position on " +
+              source + " (was it taught on another route or layout_seed, or by an unsound estimator?)");
+      truth_known_[n] = true;
+      landmark_truth_[n] = {l[0], l[1], l[2], 0, 0, 0, l[0], l[1], l[2]};
+    }
     usable_[n] = true;
     landmark_domains_[n] = Box{box[0],        box[1], box[2], Interval(0.0), Interval(0.0),
                                Interval(0.0), box[0], box[1], box[2]};
-    landmark_truth_[n] = {l[0], l[1], l[2], 0, 0, 0, l[0], l[1], l[2]};
   }
 }
 
 double VisualLandmarksProblem::Parallax(int n) const {
   int last = -1;
-  for (int k = 0; k < params_.steps; ++k)
+  for (int k = 0; k < NumSteps(); ++k)
     for (const LandmarkSighting& s : drive_.steps[k].sightings)
       if (s.landmark == n) last = k;
   const auto& l = drive_.landmarks[n];
@@ -190,7 +223,7 @@ double VisualLandmarksProblem::Parallax(int n) const {
 }
 
 bool VisualLandmarksProblem::Next(Step* step) {
-  if (k_ >= params_.steps) return false;
+  if (k_ >= NumSteps()) return false;
   const int k = k_++;
   const int oldest = std::max(0, k - params_.w);
   std::vector<CarWindowState> states;
@@ -241,7 +274,7 @@ bool VisualLandmarksProblem::Next(Step* step) {
         csp.AddConstraint(l.xc, Relation::kEq, pose.x);
         csp.AddConstraint(l.yc, Relation::kEq, pose.y);
       }
-      AddObservation(csp, pose, l, s.u, s.v, camera);
+      AddObservation(csp, pose, l, s.u, s.v, camera, params_.observation == "both");
       for (int c = before; c < static_cast<int>(csp.constraints().size()); ++c)
         icsp.constraints.push_back(c);
       view.icsps.push_back(std::move(icsp));
@@ -250,14 +283,20 @@ bool VisualLandmarksProblem::Next(Step* step) {
   step->views.step = k;
   step->views.space = CarStateSpace();
   step->views.csp = std::move(view);
-  step->truth = {drive_.poses[k][0], drive_.poses[k][1], drive_.poses[k][2]};
-  for (int j = oldest; j <= k; ++j)
-    step->csp_truth.insert(step->csp_truth.end(), drive_.poses[j].begin(), drive_.poses[j].end());
-  for (int n : seen)
-    step->csp_truth.insert(step->csp_truth.end(), landmark_truth_[n].begin(),
-                           landmark_truth_[n].end());
+  if (Known(drive_.poses[k]))
+    step->truth = {drive_.poses[k][0], drive_.poses[k][1], drive_.poses[k][2]};
+  bool all_known = true;
+  for (int j = oldest; j <= k; ++j) all_known = all_known && Known(drive_.poses[j]);
+  for (int n : seen) all_known = all_known && truth_known_[n];
+  if (all_known) {
+    for (int j = oldest; j <= k; ++j)
+      step->csp_truth.insert(step->csp_truth.end(), drive_.poses[j].begin(), drive_.poses[j].end());
+    for (int n : seen)
+      step->csp_truth.insert(step->csp_truth.end(), landmark_truth_[n].begin(),
+                             landmark_truth_[n].end());
+  }
   for (int n = 0; n < static_cast<int>(drive_.landmarks.size()); ++n)
-    step->landmark_truth[n] = drive_.landmarks[n];
+    if (Known(drive_.landmarks[n])) step->landmark_truth[n] = drive_.landmarks[n];
   step->landmark_position = &LandmarkPosition;
   step->scored_landmarks = scored_;
   return true;

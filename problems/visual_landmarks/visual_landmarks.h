@@ -26,6 +26,11 @@
 // ICSP. In repeat a landmark is its map box: (x_c, y_c, z_c) the box,
 // alpha = phi = d = 0, (x, y, z) the box. A sighting of a landmark the map lacks is ignored.
 //
+// With `log`, a logged drive (feature_log.h) replaces the simulator; where
+// it gives no reference pose or landmark position, the step has no truth
+// for it (a log without the first pose starts from the whole circle of
+// headings, and repeat from its first GPS fix).
+//
 // Sound: every measurement interval holds the truth (visual_drive.h), the
 // truth follows eq. 11 exactly, and the cone and the map box hold each
 // landmark (a map box that does not is refused at construction), so the
@@ -33,6 +38,7 @@
 #ifndef ICPBENCH_PROBLEMS_VISUAL_LANDMARKS_VISUAL_LANDMARKS_H_
 #define ICPBENCH_PROBLEMS_VISUAL_LANDMARKS_VISUAL_LANDMARKS_H_
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -71,6 +77,14 @@ struct VisualLandmarksParams {
   // many degrees (paper 004's fifth landmark, almost on the line of travel,
   // has 0.2 degrees and is not among its "converged" four).
   double min_parallax = 5;
+  // How each sighting is written (camera_model.h AddObservation): "both"
+  // (on the cone and on the position, five constraints) or "cone" (the
+  // paper's form alone, three), for comparison.
+  std::string observation = "both";
+  // A feature-track log (feature_log.h) replacing the simulator: its
+  // odometry, gyro, GPS and matched features; the simulator's parameters
+  // but the intrinsics play no part, and steps is at most its rows.
+  std::string log;
 };
 void Describe(VisualLandmarksParams& p, ParamSet& set);
 ParamMap ResolveVisualLandmarks(const std::string& owner, const ParamMap& values);
@@ -84,7 +98,9 @@ class VisualLandmarksProblem : public Problem {
   // or names a landmark the route does not have.
   VisualLandmarksProblem(const VisualLandmarksParams& params, std::uint64_t seed);
   std::string_view Name() const override { return "visual-landmarks"; }
-  int NumSteps() const override { return params_.steps; }
+  int NumSteps() const override {
+    return std::min(params_.steps, static_cast<int>(drive_.steps.size()));
+  }
   bool Next(Step* step) override;
   const VisualDrive& drive() const { return drive_; }
 
@@ -103,6 +119,7 @@ class VisualLandmarksProblem : public Problem {
   std::vector<std::array<double, kLandmarkComponents>> landmark_truth_;
   std::vector<bool> usable_;                // per landmark: in the map (repeat) or seen (teach)
   std::vector<int> scored_;                 // the landmarks with parallax (teach)
+  std::vector<bool> truth_known_;           // per landmark: its landmark_truth_ is known
   int k_ = 0;
 };
 

@@ -45,6 +45,8 @@ TEST(VisualLandmarksTest, TheTruthSolvesEveryTeachAndRepeatWindow) {
   for (std::uint64_t seed : {1u, 2u, 3u}) {
     auto straight = Make({{"steps", "40"}, {"w", "5"}}, seed);
     ExpectTruthSolvesEveryStep(*straight, "straight teach seed " + std::to_string(seed));
+    auto cone = Make({{"steps", "40"}, {"w", "5"}, {"observation", "cone"}}, seed);
+    ExpectTruthSolvesEveryStep(*cone, "straight teach, cone form, seed " + std::to_string(seed));
     auto loop = Make({{"route", "loop"}, {"speed", "1"}, {"steps", "60"}, {"landmarks", "30"},
                       {"w", "4"}},
                      seed);
