@@ -225,7 +225,14 @@ int main(int argc, char** argv) {
       }
     } else if (*map_cmd) {
       std::string key;
-      const icp::LandmarkMap map = icp::MapOfStoredRun(map_dir, map_terms, &key);
+      std::vector<int> left_out;
+      const icp::LandmarkMap map = icp::MapOfStoredRun(map_dir, map_terms, &key, &left_out);
+      if (!left_out.empty()) {
+        std::cerr << "icpbench: left out " << left_out.size()
+                  << " landmarks whose last box is empty or unbounded:";
+        for (int n : left_out) std::cerr << " " << n;
+        std::cerr << "\n";
+      }
       if (map_out.empty()) {
         icp::WriteLandmarkMap(map, std::cout, "from run " + key);
       } else {

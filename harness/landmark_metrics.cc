@@ -1,8 +1,29 @@
 #include "harness/landmark_metrics.h"
 
+#include <cstdio>
+#include <limits>
+#include <optional>
 #include <string>
 
 namespace icp {
+
+std::map<int, std::array<double, 6>> LandmarkBoxesOf(const Properties& properties) {
+  std::map<int, std::array<double, 6>> out;
+  for (const Property& p : properties) {
+    int n = 0;
+    char axis = 0;
+    char end[3] = {};
+    if (std::sscanf(p.name.c_str(), "L%d_%c_%2s", &n, &axis, end) != 3) continue;
+    const std::string which(end);
+    if ((axis != 'x' && axis != 'y' && axis != 'z') || (which != "lo" && which != "hi")) continue;
+    const std::optional<double> v = NumberProperty({p}, p.name);
+    if (!v) continue;
+    auto [it, inserted] = out.try_emplace(n);
+    if (inserted) it->second.fill(std::numeric_limits<double>::quiet_NaN());
+    it->second[2 * (axis - 'x') + (which == "hi")] = *v;
+  }
+  return out;
+}
 
 void LandmarkJudge::Judge(const Step& step, const std::map<int, Box>& landmarks,
                           Properties* out) {

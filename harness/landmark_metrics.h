@@ -16,6 +16,11 @@
 
 namespace icp {
 
+// The landmark boxes a step's properties hold (L<n>_x_lo ... L<n>_z_hi, as
+// LandmarkJudge writes them), by landmark: {x_lo, x_hi, y_lo, y_hi, z_lo,
+// z_hi}, NaN for a bound the properties lack.
+std::map<int, std::array<double, 6>> LandmarkBoxesOf(const Properties& properties);
+
 class LandmarkJudge {
  public:
   // Adds, when the step reports landmarks: landmarks and landmarks_contained

@@ -1,49 +1,42 @@
 #include "harness/map_command.h"
 
 #include <cmath>
-#include <cstdio>
 #include <map>
-#include <optional>
 #include <stdexcept>
 
+#include "harness/landmark_metrics.h"
 #include "harness/results_store.h"
 
 namespace icp {
 
-LandmarkMap MapOfSteps(const std::vector<StepRecord>& steps, const std::string& run_key) {
+LandmarkMap MapOfSteps(const std::vector<StepRecord>& steps, const std::string& run_key,
+                       std::vector<int>* left_out) {
   // Each landmark's bounds from the last step that reports it.
   std::map<int, std::array<double, 6>> bounds;
-  for (const StepRecord& s : steps) {
-    for (const Property& p : s.properties) {
-      int n = 0;
-      char axis = 0;
-      char end[3] = {};
-      if (std::sscanf(p.name.c_str(), "L%d_%c_%2s", &n, &axis, end) != 3) continue;
-      const std::string which(end);
-      if ((axis != 'x' && axis != 'y' && axis != 'z') || (which != "lo" && which != "hi")) continue;
-      const std::optional<double> v = NumberProperty({p}, p.name);
-      if (!v) continue;
-      bounds[n][2 * (axis - 'x') + (which == "hi")] = *v;
-    }
-  }
+  for (const StepRecord& s : steps)
+    for (const auto& [n, b] : LandmarkBoxesOf(s.properties)) bounds[n] = b;
   if (bounds.empty())
     throw std::invalid_argument("run " + run_key +
                                 " reports no landmark (a teach run of visual-landmarks does)");
   LandmarkMap map;
   for (const auto& [n, b] : bounds) {
-    for (int axis = 0; axis < 3; ++axis) {
-      if (!(b[2 * axis] <= b[2 * axis + 1]) || !std::isfinite(b[2 * axis]) ||
-          !std::isfinite(b[2 * axis + 1]))
-        throw std::invalid_argument("run " + run_key + ": landmark " + std::to_string(n) +
-                                    "'s last box is empty or unbounded: no map of it");
-      map[n][axis] = Interval(b[2 * axis], b[2 * axis + 1]);
+    bool bounded = true;
+    for (int axis = 0; axis < 3; ++axis)
+      bounded = bounded && b[2 * axis] <= b[2 * axis + 1] && std::isfinite(b[2 * axis]) &&
+                std::isfinite(b[2 * axis + 1]);
+    if (!bounded) {
+      left_out->push_back(n);
+      continue;
     }
+    for (int axis = 0; axis < 3; ++axis) map[n][axis] = Interval(b[2 * axis], b[2 * axis + 1]);
   }
+  if (map.empty())
+    throw std::invalid_argument("run " + run_key + ": no landmark's box is bounded: no map");
   return map;
 }
 
 LandmarkMap MapOfStoredRun(const std::string& dir, const std::vector<std::string>& terms,
-                           std::string* run_key) {
+                           std::string* run_key, std::vector<int>* left_out) {
   const auto store = ResultsStore::OpenReadOnly(StorePath(dir));
   std::vector<std::string> matches;
   for (const std::string& key : store->RunKeys()) {
@@ -63,7 +56,7 @@ LandmarkMap MapOfStoredRun(const std::string& dir, const std::vector<std::string
       throw std::invalid_argument("run " + matches[0] + " is " + std::string(ToString(run.status)) +
                                   ": " + run.reason);
     *run_key = matches[0];
-    return MapOfSteps(run.steps, matches[0]);
+    return MapOfSteps(run.steps, matches[0], left_out);
   }
   throw std::invalid_argument("run " + matches[0] + " vanished from " + StorePath(dir));
 }

@@ -6,33 +6,12 @@
 #include <string>
 #include <vector>
 
+#include "harness/landmark_metrics.h"
 #include "plots/figures.h"
 #include "plots/figures_internal.h"
 #include "report/report.h"
 
 namespace icp {
-
-namespace {
-
-// The x-y boxes a step reports for its landmarks (L<n>_x_lo ... L<n>_y_hi),
-// by landmark: {x_lo, x_hi, y_lo, y_hi}.
-std::map<int, std::array<double, 4>> LandmarkBoxes(const StepRecord& s) {
-  std::map<int, std::array<double, 4>> out;
-  for (const Property& p : s.properties) {
-    int n = 0;
-    char axis = 0;
-    char end[3] = {};
-    if (std::sscanf(p.name.c_str(), "L%d_%c_%2s", &n, &axis, end) != 3) continue;
-    if (axis != 'x' && axis != 'y') continue;
-    const std::string which(end);
-    if (which != "lo" && which != "hi") continue;
-    if (const std::optional<double> v = NumberProperty({p}, p.name))
-      out[n][2 * (axis - 'x') + (which == "hi")] = *v;
-  }
-  return out;
-}
-
-}  // namespace
 
 void PlotLandmarkBoxesFigure(const FigureText& text, const RunRecord& run,
                              const std::vector<int>& steps, const std::string& out_dir,
@@ -84,7 +63,7 @@ void PlotLandmarkBoxesFigure(const FigureText& text, const RunRecord& run,
     Series boxes{"using (($1+$2)/2):(($3+$4)/2):1:2:3:4 with boxxyerror lw 1.5 lc rgb " +
                      Quote(shades[shade++ % 4]) + " title " + Quote("step " + std::to_string(k)),
                  {}, ""};
-    for (const auto& [n, b] : LandmarkBoxes(*it))
+    for (const auto& [n, b] : LandmarkBoxesOf(it->properties))
       boxes.rows.push_back({std::clamp(b[0], x_lo, x_hi), std::clamp(b[1], x_lo, x_hi),
                             std::clamp(b[2], y_lo, y_hi), std::clamp(b[3], y_lo, y_hi)});
     if (!boxes.rows.empty()) panel.series.push_back(std::move(boxes));

@@ -95,8 +95,12 @@ double CorridorWidth(const RunMetrics& m, const std::string& var) {
 }
 
 std::vector<PostLocalizationPoint> Paper004PostLocalization(const std::vector<RunRecord>& runs) {
+  return PoolPostLocalization(PostLocalizationPoints(runs));
+}
+
+std::vector<PostLocalizationPoint> PoolPostLocalization(const std::vector<SweepPoint>& points) {
   std::vector<PostLocalizationPoint> out;
-  for (const SweepPoint& p : PostLocalizationPoints(runs)) {
+  for (const SweepPoint& p : points) {
     std::vector<StepRecord> real_time, post;
     for (const RunRecord* r : p.ok_runs) {
       real_time.insert(real_time.end(), r->steps.begin(), r->steps.end());
@@ -152,10 +156,15 @@ void Paper004Figures(const std::vector<RunRecord>& runs, const std::string& out_
     }
     return SkipFigure(text, runs_only, out);
   }
-  RunRecord post = *run;
-  post.steps = PostLocalizedStates(run->steps);
-  const std::string label = RunLabel(*run);
-  PlotCorridorFigure(text, {run, &post}, {label + ", real time", label + ", post-localized"},
+  PlotPostLocalizationFigure(text, *run, out_dir, out);
+}
+
+void PlotPostLocalizationFigure(const FigureText& text, const RunRecord& run,
+                                const std::string& out_dir, PlotOutput* out) {
+  RunRecord post = run;
+  post.steps = PostLocalizedStates(run.steps);
+  const std::string label = RunLabel(run);
+  PlotCorridorFigure(text, {&run, &post}, {label + ", real time", label + ", post-localized"},
                      out_dir, out);
 }
 

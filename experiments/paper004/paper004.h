@@ -48,6 +48,9 @@ struct PostLocalizationPoint {
   RunMetrics post;
 };
 std::vector<PostLocalizationPoint> Paper004PostLocalization(const std::vector<RunRecord>& runs);
+// The same pooling over any points: each point's real-time steps and
+// post-localized states (PostLocalizedStates) over its ok runs.
+std::vector<PostLocalizationPoint> PoolPostLocalization(const std::vector<SweepPoint>& points);
 
 // The mean width of var's interval-error corridor (mean hi - lo); NaN when
 // the metrics have no such corridor.
@@ -59,6 +62,10 @@ const RunRecord* Paper004FigureRun(const std::vector<RunRecord>& runs);
 std::vector<TextTable> Paper004Tables(const std::vector<RunRecord>& runs);
 void Paper004Figures(const std::vector<RunRecord>& runs, const std::string& out_dir,
                      PlotOutput* out);
+// A run's interval-error corridors in real time (top) and post-localized
+// (its PostLocalizedStates, bottom): Figs. 12-13.
+void PlotPostLocalizationFigure(const FigureText& text, const RunRecord& run,
+                                const std::string& out_dir, PlotOutput* out);
 
 }  // namespace icp
 

@@ -180,21 +180,6 @@ TextTable RepeatTable(const std::vector<RunRecord>& runs) {
   return table;
 }
 
-// Pooled real-time and post-localized metrics of each point.
-std::vector<PostLocalizationPoint> Pool(const std::vector<SweepPoint>& points) {
-  std::vector<PostLocalizationPoint> out;
-  for (const SweepPoint& p : points) {
-    std::vector<StepRecord> real_time, post;
-    for (const RunRecord* r : p.ok_runs) {
-      real_time.insert(real_time.end(), r->steps.begin(), r->steps.end());
-      const std::vector<StepRecord> states = PostLocalizedStates(r->steps);
-      post.insert(post.end(), states.begin(), states.end());
-    }
-    out.push_back({p, ComputeMetrics(real_time), ComputeMetrics(post)});
-  }
-  return out;
-}
-
 // The ok run of the smallest seed among groups' (nullptr if none).
 const RunRecord* SmallestSeed(const std::vector<const RunRecord*>& runs) {
   const RunRecord* best = nullptr;
@@ -217,7 +202,7 @@ std::vector<PostLocalizationPoint> Paper004RepeatPostLocalization(const std::vec
   std::vector<SweepPoint> points;
   for (const SweepPoint& p : ParamSweep(runs, kProblem, "w"))
     if (!p.ok_runs.empty() && IsVisualRepeatRun(*p.ok_runs.front())) points.push_back(p);
-  return Pool(points);
+  return PoolPostLocalization(points);
 }
 
 std::vector<TextTable> Paper004VisualTables(const std::vector<RunRecord>& runs) {
@@ -269,11 +254,7 @@ void Paper004VisualFigures(const std::vector<RunRecord>& runs, const std::string
     if (p.point.algorithm == "digo" && p.point.value > widest)
       widest = p.point.value, run = SmallestSeed(p.point.ok_runs);
   if (!run) return SkipFigure(fig12, {}, out);
-  RunRecord post = *run;
-  post.steps = PostLocalizedStates(run->steps);
-  const std::string label = RunLabel(*run);
-  PlotCorridorFigure(fig12, {run, &post}, {label + ", real time", label + ", post-localized"},
-                     out_dir, out);
+  PlotPostLocalizationFigure(fig12, *run, out_dir, out);
 }
 
 }  // namespace icp
