@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "algorithms/registry.h"
 #include "problems/visual_landmarks/visual_landmarks.h"
 
 namespace icp {
@@ -91,6 +92,23 @@ TEST(IcspGraphTest, DigoMapsNarrowerThanLicOnEveryAxis) {
       EXPECT_TRUE(std::isfinite(by_cone[axis])) << "seed " << seed << " axis " << axis;
     }
   }
+}
+
+// Every ICP algorithm of the registry runs on the problem (its windows keep
+// the landmarks too) and holds every pose and landmark, teach and repeat.
+TEST(IcspGraphTest, EveryIcpAlgorithmHoldsEveryPoseAndLandmark) {
+  int algorithms = 0;
+  for (const AlgorithmInfo& info : Algorithms()) {
+    if (info.test_only || info.needs != View::kCsp) continue;
+    ++algorithms;
+    for (const char* phase : {"teach", "repeat"}) {
+      auto estimator = info.make({}, 1);
+      auto problem = MakeVisualLandmarks({{"phase", phase}, {"steps", "12"}, {"w", "3"}}, 2);
+      const auto last = RunAndCheck(*estimator, *problem, info.name + " " + phase);
+      EXPECT_FALSE(last.empty()) << info.name << " " << phase;
+    }
+  }
+  EXPECT_GE(algorithms, 8);  // hc3, hc4, bc3, bc4, 3b-bc4, 3b-hc4, digo, lic
 }
 
 TEST(IcspGraphTest, InnerMustBeACspContractor) {
