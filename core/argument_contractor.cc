@@ -91,8 +91,11 @@ void ContractArgument(Interval& x, Interval& y, Interval& theta) {
     x = y = theta = Interval::Empty();
     return;
   }
-  // Four turns or more: every direction is allowed and theta keeps all.
-  if (!(theta.Width() < 4 * Pi().lo())) return;
+  // Four turns or more: every direction is allowed and theta keeps all. So
+  // far out that a turn is below the doubles' resolution, likewise.
+  if (!(theta.Width() < 4 * Pi().lo()) || !(std::abs(theta.lo()) < 1e12) ||
+      !(std::abs(theta.hi()) < 1e12))
+    return;
   // theta = sign r + offset pi, r the core's angle of (sx x, sy y).
   struct Piece {
     double sx, sy, sign;

@@ -25,8 +25,8 @@
 namespace icp {
 
 // Contracts x, y and theta in place; all three empty when the box holds no
-// point of the set. A theta wider than four turns is not contracted (nor are
-// x and y by it, as every direction is then allowed).
+// point of the set. A theta wider than four turns, or beyond 1e12 rad, is not
+// contracted (nor are x and y by it, as every direction is then allowed).
 void ContractArgument(Interval& x, Interval& y, Interval& theta);
 
 // The same over three components of a box.

@@ -63,6 +63,8 @@ TEST(ArgumentContractorTest, HandComputedCases) {
   // Four turns or more: nothing to contract.
   r = Contract(Interval(1, 2), Interval(1, 2), Interval(-20, 20));
   ExpectNear(r.theta, -20, 20);
+  r = Contract(Interval(1, 2), Interval(1, 2), Interval(1e300, 1e300));
+  EXPECT_EQ(r.theta, Interval(1e300));
 }
 
 TEST(ArgumentContractorTest, ContractsThreeComponentsOfABox) {
