@@ -39,7 +39,8 @@ if [ "${1:-}" = "--ci" ]; then
   programs=(
     minibex_parser tape params paving accumulate image_contractor relaxed_intersection
     metrics results_store spec runner shard
-    car_track marina_sonar chain line_intersection beacon_ranges minibex_file
+    car_track marina_sonar chain line_intersection beacon_ranges minibex_file feature_log
+    landmark_metrics
     window_estimator particle_filter accumulator
   )
   cmake --build build-asan -j"${ICPBENCH_JOBS:-2}" --target "${programs[@]/%/_test}"
