@@ -38,17 +38,20 @@ double TanHi(double t) {
 double AtanLo(double r) { return r == kInf ? HalfPi().lo() : Atan(Interval(r)).lo(); }
 double AtanHi(double r) { return r == kInf ? HalfPi().hi() : Atan(Interval(r)).hi(); }
 
-// p * q for p, q >= 0 rounded down or up, 0 * +oo being 0 (a zero factor is
-// an exact zero here).
-double ProductLo(double p, double q) {
-  if (p == 0 || q == 0) return 0;
-  if (p == kInf || q == kInf) return kInf;
-  return (Interval(p) * Interval(q)).lo();
+// Bounds of y = x tan(theta) from a bound p of x >= 0 and t of tan(theta) >=
+// 0, rounded down or up. A zero tangent (theta = 0) is the x axis: y = 0 for
+// any x. An infinite one (theta = pi/2) is the y axis: below, nothing; above,
+// no bound, even at x = 0.
+double ProductLo(double p, double t) {
+  if (p == 0 || t == 0) return 0;
+  if (p == kInf || t == kInf) return kInf;
+  return (Interval(p) * Interval(t)).lo();
 }
-double ProductHi(double p, double q) {
-  if (p == 0 || q == 0) return 0;
-  if (p == kInf || q == kInf) return kInf;
-  return (Interval(p) * Interval(q)).hi();
+double ProductHi(double p, double t) {
+  if (t == 0) return 0;
+  if (t == kInf || p == kInf) return kInf;
+  if (p == 0) return 0;
+  return (Interval(p) * Interval(t)).hi();
 }
 
 // The core contractor (eq. 4.83) on x, y >= 0, theta in [0, pi/2]: the
@@ -131,6 +134,17 @@ void ContractArgument(Interval& x, Interval& y, Interval& theta) {
     return;
   }
   x = rx, y = ry, theta = rt;
+}
+
+Interval Atan2(const Interval& y, const Interval& x) {
+  Interval cx = x, cy = y, theta(-Pi().hi(), Pi().hi());
+  ContractArgument(cx, cy, theta);
+  return theta;
+}
+
+void BwdAtan2(const Interval& z, Interval& y, Interval& x) {
+  Interval theta = Intersect(z, Interval(-Pi().hi(), Pi().hi()));
+  ContractArgument(x, y, theta);
 }
 
 ContractSummary ArgumentContractor::Contract(Box& box, ContractContext& /*context*/) {

@@ -29,6 +29,14 @@ namespace icp {
 // contracted (nor are x and y by it, as every direction is then allowed).
 void ContractArgument(Interval& x, Interval& y, Interval& theta);
 
+// atan2(y, x): the arguments in [-pi, pi] of the vectors of the box (the
+// hull: [-pi, pi] where the box meets the negative x axis or holds the
+// origin, whose argument is any). Empty when x or y is.
+Interval Atan2(const Interval& y, const Interval& x);
+// The backward projection of z = atan2(y, x): y and x contracted to the
+// vectors whose argument in [-pi, pi] lies in z.
+void BwdAtan2(const Interval& z, Interval& y, Interval& x);
+
 // The same over three components of a box.
 class ArgumentContractor : public Contractor {
  public:

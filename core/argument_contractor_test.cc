@@ -48,6 +48,16 @@ TEST(ArgumentContractorTest, HandComputedCases) {
   ExpectNear(r.y, 0, std::tan(0.4));
   r = Contract(Interval(0), Interval(0), Interval(0.5, 0.6));
   ExpectNear(r.theta, 0.5, 0.6);
+  // On the y axis: the vertical rays, whatever their length.
+  r = Contract(Interval(0), Interval(-2, -1), Interval(-kPi, kPi));
+  ExpectNear(r.theta, -kPi / 2, -kPi / 2);
+  ExpectNear(r.y, -2, -1);
+  r = Contract(Interval(0), Interval(1, kInf), Interval(1, 2));
+  ExpectNear(r.theta, kPi / 2, kPi / 2);
+  EXPECT_EQ(r.y.hi(), kInf);
+  // On the negative x axis, both ends of the cut.
+  r = Contract(Interval(-3, -1), Interval(0), Interval(-kPi, kPi));
+  EXPECT_TRUE(r.theta.Contains(kPi) && r.theta.Contains(-kPi));
   // Across the branch cut at pi.
   r = Contract(Interval(-2, -1), Interval(-0.5, 0.5), Interval(3, 3.3));
   ExpectNear(r.theta, 3, 3.3);

@@ -54,6 +54,7 @@ Expr Tanh(Expr a) { return Un(Op::kTanh, a); }
 Expr Abs(Expr a) { return Un(Op::kAbs, a); }
 Expr Min(Expr a, Expr b) { return Bin(Op::kMin, a, b); }
 Expr Max(Expr a, Expr b) { return Bin(Op::kMax, a, b); }
+Expr Atan2(Expr y, Expr x) { return Bin(Op::kAtan2, y, x); }
 
 ConstraintSystem::ConstraintSystem(const ConstraintSystem& other)
     : graph_(std::make_unique<ExprGraph>(*other.graph_)),

@@ -59,6 +59,9 @@ Expr Tanh(Expr a);
 Expr Abs(Expr a);
 Expr Min(Expr a, Expr b);
 Expr Max(Expr a, Expr b);
+// The argument of the vector (x, y) in [-pi, pi] (thesis 003 §4.7.3): y first,
+// as C's atan2 and Minibex's.
+Expr Atan2(Expr y, Expr x);
 
 enum class Relation { kEq, kLeq, kGeq };
 

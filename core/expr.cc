@@ -9,7 +9,7 @@ namespace icp {
 bool IsBinary(Op op) {
   switch (op) {
     case Op::kAdd: case Op::kSub: case Op::kMul: case Op::kDiv:
-    case Op::kMin: case Op::kMax:
+    case Op::kMin: case Op::kMax: case Op::kAtan2:
       return true;
     default:
       return false;
@@ -26,6 +26,7 @@ std::string_view OpName(Op op) {
     case Op::kDiv: return "/";
     case Op::kMin: return "min";
     case Op::kMax: return "max";
+    case Op::kAtan2: return "atan2";
     case Op::kNeg: return "-";
     case Op::kSqr: return "sqr";
     case Op::kPow: return "^";
@@ -124,7 +125,7 @@ std::string ExprGraph::ToString(int id, const std::vector<std::string>& names) c
       return e.n < static_cast<int>(names.size()) ? names[e.n] : "v" + std::to_string(e.n);
     case Op::kAdd: case Op::kSub: case Op::kMul: case Op::kDiv:
       return "(" + ToString(e.a, names) + std::string(OpName(e.op)) + ToString(e.b, names) + ")";
-    case Op::kMin: case Op::kMax:
+    case Op::kMin: case Op::kMax: case Op::kAtan2:
       return std::string(OpName(e.op)) + "(" + ToString(e.a, names) + "," + ToString(e.b, names) + ")";
     case Op::kNeg:
       return "(-" + ToString(e.a, names) + ")";

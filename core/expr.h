@@ -16,7 +16,7 @@ namespace icp {
 
 enum class Op : std::uint8_t {
   kConst, kVar,
-  kAdd, kSub, kMul, kDiv, kMin, kMax,  // binary
+  kAdd, kSub, kMul, kDiv, kMin, kMax, kAtan2,  // binary (kAtan2: atan2(a, b), a the y)
   kNeg, kSqr, kPow, kSqrt, kExp, kLog, kSin, kCos, kTan, kAtan,
   kSinh, kCosh, kTanh, kAbs,           // unary (kPow carries its exponent)
 };

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/interval.h"
+#include "core/argument_contractor.h"
 #include "core/interval_oracle_testing.h"
 #include "core/projections.h"
 
@@ -61,6 +62,8 @@ std::vector<BackwardOp> BackwardOps() {
        [](I z, Interval& x, Interval& y) { BwdMin(z, x, y); }},
       {"max", 2, Dist::kAny, Binary<mpfr_max>,
        [](I z, Interval& x, Interval& y) { BwdMax(z, x, y); }},
+      {"atan2", 2, Dist::kAny, Binary<mpfr_atan2>,
+       [](I z, Interval& y, Interval& x) { BwdAtan2(z, y, x); }},
   };
   for (int n = -3; n <= 5; ++n) {
     ops.push_back({"pow" + std::string(n < 0 ? "_m" : "") + std::to_string(std::abs(n)), 1,

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/interval.h"
+#include "core/argument_contractor.h"
 #include "core/interval_oracle_testing.h"
 
 namespace icp::oracle {
@@ -66,6 +67,9 @@ std::vector<ForwardOp> ForwardOps() {
       {"abs", 1, Dist::kAny, [](I x, I) { return Abs(x); }, Unary<MpfrAbs>, 0},
       {"min", 2, Dist::kAny, [](I x, I y) { return Min(x, y); }, Binary<mpfr_min>, 0},
       {"max", 2, Dist::kAny, [](I x, I y) { return Max(x, y); }, Binary<mpfr_max>, 0},
+      // atan2(y, x): every quadrant, both zeros and the cut along the
+      // negative x axis come from kAny's draws (signed zeros included).
+      {"atan2", 2, Dist::kAny, [](I y, I x) { return Atan2(y, x); }, Binary<mpfr_atan2>, 0},
   };
   for (int n = -3; n <= 5; ++n) {
     // Each multiplication of pow's repeated squaring rounds once.

@@ -399,3 +399,26 @@ TEST(MinibexParserTest, WritingRefusesTwoNamesThatWouldCollide) {
 
 }  // namespace
 }  // namespace icp
+
+namespace icp {
+namespace {
+
+// atan2(y, x), y first as in C and IBEX: the argument of (x, y) in [-pi, pi]
+// (thesis 003 §4.7.3), evaluated and written back.
+TEST(MinibexParserTest, Atan2IsTheArgumentOfTheVector) {
+  ConstraintSystem csp = ParseMinibex(
+      "Variables x in [1,2]; y in [1,2]; t in [-4,4]; Constraints t = atan2(y, x); end");
+  ASSERT_EQ(csp.constraints().size(), 1u);
+  // t - atan2(y, x) over the domains: atan2 of the box is [atan(1/2), atan(2)].
+  const Interval v = Eval(csp, 0, PointBox({2, 1, 0}));
+  EXPECT_TRUE(v.Contains(-std::atan(0.5))) << v.lo() << " " << v.hi();
+  EXPECT_LT(v.Width(), 1e-12);
+  // The second quadrant and the cut: atan2(0, -1) holds pi.
+  EXPECT_TRUE((-Eval(csp, 0, PointBox({-1, 0, 0}))).Contains(M_PI));
+  EXPECT_NE(csp.ConstraintToString(0).find("atan2(y,x)"), std::string::npos)
+      << csp.ConstraintToString(0);
+  EXPECT_EQ(ParseMinibex(csp.ToMinibex()).ConstraintToString(0), csp.ConstraintToString(0));
+}
+
+}  // namespace
+}  // namespace icp

@@ -3,6 +3,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/argument_contractor.h"
 #include "core/minibex_parser_internal.h"
 
 namespace icp::detail::minibex {
@@ -14,7 +15,7 @@ constexpr std::string_view kKeywords[] = {"for", "begin", "return"};
 // Words IBEX reserves for functions this reader does not support: calling one
 // is a clear "not supported" error rather than "unknown identifier".
 constexpr std::string_view kUnsupportedFunctions[] = {
-    "acos", "asin", "atan2", "acosh", "asinh", "atanh", "sign", "floor", "ceil",
+    "acos", "asin", "acosh", "asinh", "atanh", "sign", "floor", "ceil",
     "integer", "chi", "diff", "inf", "mid", "sup", "sum"};
 
 const UnaryFunction kUnaryFunctions[] = {
@@ -24,7 +25,8 @@ const UnaryFunction kUnaryFunctions[] = {
     {"abs", Abs, Abs},
 };
 
-const BinaryFunction kBinaryFunctions[] = {{"min", Min, Min}, {"max", Max, Max}};
+const BinaryFunction kBinaryFunctions[] = {
+    {"min", Min, Min}, {"max", Max, Max}, {"atan2", Atan2, Atan2}};
 
 }  // namespace
 

@@ -4,6 +4,7 @@
 #ifndef ICPBENCH_CORE_OPS_H_
 #define ICPBENCH_CORE_OPS_H_
 
+#include "core/argument_contractor.h"
 #include "core/expr.h"
 #include "core/interval.h"
 #include "core/projections.h"
@@ -23,6 +24,7 @@ inline Interval EvalOp(Op op, const Interval& a, const Interval& b, int n) {
     case Op::kDiv: return a / b;
     case Op::kMin: return Min(a, b);
     case Op::kMax: return Max(a, b);
+    case Op::kAtan2: return Atan2(a, b);
     case Op::kNeg: return -a;
     case Op::kSqr: return Sqr(a);
     case Op::kPow: return Pow(a, n);
@@ -54,6 +56,7 @@ inline void ProjectOp(Op op, const Interval& z, Interval& a, Interval& b, int n)
     case Op::kDiv: BwdDiv(z, a, b); break;
     case Op::kMin: BwdMin(z, a, b); break;
     case Op::kMax: BwdMax(z, a, b); break;
+    case Op::kAtan2: BwdAtan2(z, a, b); break;
     case Op::kNeg: BwdNeg(z, a); break;
     case Op::kSqr: BwdSqr(z, a); break;
     case Op::kPow: BwdPow(z, a, n); break;
@@ -91,6 +94,7 @@ inline Interval RawDerivOp(Op op, const Interval& a, const Interval& b, const In
       if (a.lo() > b.hi()) return da;
       if (b.lo() > a.hi()) return db;
       return Hull(da, db);
+    case Op::kAtan2: return (b * da - a * db) / (Sqr(a) + Sqr(b));
     case Op::kNeg: return -da;
     case Op::kSqr: return Interval(2.0) * a * da;
     case Op::kPow: return Interval(n) * Pow(a, n - 1) * da;

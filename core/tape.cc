@@ -111,7 +111,7 @@ Tape::Tape(const ExprGraph& graph, const Constraint& constraint) : range_(constr
     recompute_begin_.push_back(static_cast<int>(recompute_slots_.size()));
   }
   for (const TapeInstr& in : code_) {
-    if (in.op == Op::kDiv || in.op == Op::kTan || in.op == Op::kLog ||
+    if (in.op == Op::kDiv || in.op == Op::kTan || in.op == Op::kLog || in.op == Op::kAtan2 ||
         (in.op == Op::kPow && in.n < 0))
       idempotent_when_bounded_ = false;
     if (in.op == Op::kSqrt || in.op == Op::kLog) has_partial_ops_ = true;
