@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,27 @@ int WaitExit(pid_t pid) {
   int status = 0;
   waitpid(pid, &status, 0);
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+// The exit code of pid within seconds, or nullopt (pid killed, with the
+// ranks of its job) when it does not end by then.
+std::optional<int> WaitExitWithin(pid_t pid, double seconds) {
+  std::optional<int> code;
+  testing::WaitFor(
+      [&] {
+        int status = 0;
+        if (waitpid(pid, &status, WNOHANG) != pid) return false;
+        code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        return true;
+      },
+      seconds);
+  if (!code) {
+    for (int rank = 0; rank < 3; ++rank)
+      if (const pid_t p = RankProcess(pid, rank); p > 0) kill(p, SIGKILL);
+    kill(pid, SIGKILL);
+    waitpid(pid, nullptr, 0);
+  }
+  return code;
 }
 
 std::vector<RunRecord> RunsByKey(const std::string& dir, bool with_steps) {
@@ -198,7 +220,14 @@ TEST(MpiSweepTest, AKilledWorkerRanksRunInFlightGoesToAnotherRank) {
   const pid_t rank1 = RankProcess(mpirun, 1);
   ASSERT_GT(rank1, 0);
   kill(rank1, SIGKILL);
-  const int code = WaitExit(mpirun);
+  // Open MPI's recovery itself sometimes fails after the kill (a PMIx error,
+  // then the surviving ranks wait in MPI forever; seen once in about twenty
+  // runs): the dispatcher is then never told, which this test cannot judge.
+  const std::optional<int> exited = WaitExitWithin(mpirun, 120);
+  if (!exited && ReadFile(log).find("PMIX ERROR") != std::string::npos)
+    GTEST_SKIP() << "Open MPI's recovery failed after the kill (PMIx error):\n" << ReadFile(log);
+  ASSERT_TRUE(exited.has_value()) << "mpirun still running after 120 s:\n" << ReadFile(log);
+  const int code = *exited;
   const std::string out = ReadFile(log);
   EXPECT_EQ(code, 0) << out;
   EXPECT_NE(out.find("rank 1 lost (nothing from it for 3 s): 1 of its 1 runs in flight go to other ranks"),
