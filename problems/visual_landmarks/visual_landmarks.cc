@@ -153,8 +153,10 @@ VisualLandmarksProblem::VisualLandmarksProblem(const VisualLandmarksParams& para
   truth_known_.assign(count, false);
   usable_.assign(count, false);
   if (teach()) {
+    std::vector<int> last_sighting(count, -1);
     for (int k = 0; k < steps; ++k) {
       for (const LandmarkSighting& s : drive_.steps[k].sightings) {
+        last_sighting[s.landmark] = k;
         if (first_sighting_[s.landmark] >= 0) continue;
         first_sighting_[s.landmark] = k;
         usable_[s.landmark] = true;
@@ -166,7 +168,8 @@ VisualLandmarksProblem::VisualLandmarksProblem(const VisualLandmarksParams& para
       }
     }
     for (int n = 0; n < count; ++n)
-      if (truth_known_[n] && Parallax(n) >= params_.min_parallax) scored_.push_back(n);
+      if (truth_known_[n] && Parallax(n, last_sighting[n]) >= params_.min_parallax)
+        scored_.push_back(n);
     return;
   }
   LandmarkMap map;
@@ -205,11 +208,7 @@ VisualLandmarksProblem::VisualLandmarksProblem(const VisualLandmarksParams& para
   }
 }
 
-double VisualLandmarksProblem::Parallax(int n) const {
-  int last = -1;
-  for (int k = 0; k < NumSteps(); ++k)
-    for (const LandmarkSighting& s : drive_.steps[k].sightings)
-      if (s.landmark == n) last = k;
+double VisualLandmarksProblem::Parallax(int n, int last) const {
   const auto& l = drive_.landmarks[n];
   auto ray = [&](int k) {
     const auto& p = drive_.poses[k];

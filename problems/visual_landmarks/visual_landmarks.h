@@ -106,9 +106,9 @@ class VisualLandmarksProblem : public Problem {
 
  private:
   bool teach() const { return params_.phase == "teach"; }
-  // The angle between landmark n's rays from its first and last sightings,
-  // degrees (teach; n seen).
-  double Parallax(int n) const;
+  // The angle between landmark n's rays from its first sighting and its
+  // last one (step last), degrees (teach; n seen).
+  double Parallax(int n, int last) const;
 
   VisualLandmarksParams params_;
   VisualDriveParams drive_params_;
