@@ -36,6 +36,11 @@ struct StepResult {
   // components, StateRef::Landmark order), by identity; the harness judges
   // their positions against the truth (Step::landmark_position).
   std::map<int, Box> landmarks;
+  // For a landmark-observation view (paper 002): the landmark
+  // (TypedLandmark::id) each of the step's observations was associated
+  // with, -1 for none; empty when the estimator does not associate. The
+  // harness scores them against the true identities.
+  std::vector<int> associations;
 };
 
 // Thrown by an estimator that finds its own result broken (a contractor that

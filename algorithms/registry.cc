@@ -9,6 +9,7 @@
 #include "algorithms/hc3/hc3.h"
 #include "algorithms/hc4/hc4.h"
 #include "algorithms/icsp_graph/icsp_graph.h"
+#include "algorithms/landmark_tracking/landmark_tracking.h"
 #include "algorithms/particle_filter/particle_filter.h"
 #include "algorithms/polynomial/polynomial.h"
 #include "algorithms/q_relaxed/q_relaxed.h"
@@ -44,6 +45,12 @@ std::vector<AlgorithmInfo>& Table() {
       {"lic", "paper 004's LIC: each ICSP of the newest step solved alone, landmarks kept",
        &MakeLic, &DefaultParams<IcspGraphParams>, &ResolveIcspGraph, View::kCsp,
        {"LIC", 80, "#d95f02"}, &MakeLicContractor},
+      {"landmark-tracking", "paper 002: typed landmarks tracked, matches by belief functions fused by constraint propagation",
+       &MakeLandmarkTracking, &DefaultParams<LandmarkTrackingParams>, &ResolveLandmarkTracking,
+       View::kLandmarkObservations, {"landmark tracking", 90, "#66a61e"}},
+      {"dead-reckoning", "paper 002's baseline: the odometry's pose box alone (eq. 5-7)",
+       &MakeDeadReckoning, &DefaultParams<DeadReckoningParams>, &ResolveParams<DeadReckoningParams>,
+       View::kLandmarkObservations, {"dead reckoning", 95, "#a6761d"}},
       {"q-relaxed", "q-relaxed intersection of the measurement contractors, to a fixpoint or paved (RSIVIA)",
        &MakeQRelaxed, &DefaultParams<QRelaxedParams>, &ResolveParams<QRelaxedParams>,
        View::kMeasurementSet, {"q-relaxed", 100, "#17a2b8"}},
@@ -84,6 +91,18 @@ const AlgorithmInfo& FindAlgorithm(const std::string& name) {
     known += (known.empty() ? "" : ", ") + a.name;
   }
   throw std::invalid_argument("unknown algorithm '" + name + "' (known: " + known + ")");
+}
+
+ContractorFactory InnerContractorFactory(const std::string& owner, const std::string& inner) {
+  ContractorFactory factory = nullptr;
+  try {
+    factory = FindAlgorithm(inner).contractor;
+  } catch (const std::invalid_argument& e) {
+    throw ParamError(owner + ".inner = " + inner + ": " + e.what());
+  }
+  if (factory == nullptr || inner == "digo" || inner == "lic")
+    throw ParamError(owner + ".inner = " + inner + ": not a CSP contractor (hc4, bc4, 3b-bc4, ...)");
+  return factory;
 }
 
 void RegisterAlgorithm(AlgorithmInfo info) {

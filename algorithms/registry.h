@@ -58,6 +58,10 @@ const std::vector<AlgorithmInfo>& Algorithms();
 // The algorithm called name; throws std::invalid_argument listing the known
 // names if there is none.
 const AlgorithmInfo& FindAlgorithm(const std::string& name);
+// The factory of the CSP contractor called inner, for an estimator that
+// nests one (its parameter owner.inner); throws ParamError naming
+// owner.inner when inner is unknown or not a plain CSP contractor.
+ContractorFactory InnerContractorFactory(const std::string& owner, const std::string& inner);
 // Adds a plugin's algorithm; throws std::invalid_argument if the name is taken.
 void RegisterAlgorithm(AlgorithmInfo info);
 

@@ -12,6 +12,7 @@ std::string_view ToString(View view) {
     case View::kCsp: return "csp";
     case View::kMeasurementSet: return "measurement-set";
     case View::kProbabilistic: return "probabilistic";
+    case View::kLandmarkObservations: return "landmark-observations";
   }
   return "?";
 }
@@ -44,6 +45,7 @@ bool Views::Offers(View view) const {
     case View::kCsp: return csp.has_value();
     case View::kMeasurementSet: return measurement_set.has_value();
     case View::kProbabilistic: return probabilistic.has_value();
+    case View::kLandmarkObservations: return landmark_observations.has_value();
   }
   return false;
 }

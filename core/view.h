@@ -5,7 +5,10 @@
 //   - the measurement-set view, for the relaxed solvers: a prior box and one
 //     contractor per measurement, some of which may be outliers;
 //   - the probabilistic view, for the particle filter: a prior and a motion
-//     model to sample, a measurement likelihood to weigh with.
+//     model to sample, a measurement likelihood to weigh with;
+//   - the landmark-observation view, for estimators that associate sensor
+//     returns with a map themselves (paper 002): the map of typed
+//     landmarks, the step's odometry and its typed polar returns.
 // A problem offers some of them at every step; an algorithm needs one. The
 // harness records a pair whose views do not meet as skipped.
 #ifndef ICPBENCH_CORE_VIEW_H_
@@ -14,6 +17,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -25,8 +29,9 @@
 
 namespace icp {
 
-enum class View { kCsp, kMeasurementSet, kProbabilistic };
-// "csp", "measurement-set", "probabilistic": the words of `icpbench list`.
+enum class View { kCsp, kMeasurementSet, kProbabilistic, kLandmarkObservations };
+// "csp", "measurement-set", "probabilistic", "landmark-observations": the
+// words of `icpbench list`.
 std::string_view ToString(View view);
 
 // The state a CSP variable stands for (DESIGN.md "States that do not move
@@ -133,6 +138,46 @@ struct ProbabilisticView {
   std::function<std::vector<double>(RandomEngine&)> sample_global;
 };
 
+// A point landmark of a map with a type (paper 002: corner, edge, other).
+struct TypedLandmark {
+  int id = 0;  // its identity, as the associations name it
+  int type = 0;
+  double x = 0, y = 0;  // m
+};
+
+// One return of a range-and-bearing sensor: its type and its polar
+// coordinates in the robot's frame (bearing counterclockwise from the
+// heading, rad), each an interval holding the true value when the return
+// comes from a landmark (a spurious return comes from none).
+struct PolarObservation {
+  int type = 0;
+  Interval range, bearing;
+};
+
+// A differential drive's odometry over one step (paper 002 §3.3): the wheel
+// radii and the track width (m) and the wheels' rotations over the step
+// (rad), each an interval holding the true value. The displacement is
+// d = (R_r w_r + R_l w_l) / 2 and the turn (R_r w_r - R_l w_l) / L.
+struct WheelOdometry {
+  Interval right_radius, left_radius, track, right_rotation, left_rotation;
+};
+
+// Typed returns not yet associated with landmarks: the association is the
+// estimator's job. The state is (x, y, heading).
+struct LandmarkObservationView {
+  // Step 0: the known start box; later steps: every pose the robot may be
+  // in (the map's bounds, any heading), for an estimator that lost track.
+  Box prior;
+  // The motion from the previous step; unset at step 0.
+  std::optional<WheelOdometry> odometry;
+  // In the order the sensor reports them (by bearing).
+  std::vector<PolarObservation> observations;
+  // The map: every landmark the returns may come from, and the name of each
+  // type (index = TypedLandmark::type).
+  std::shared_ptr<const std::vector<TypedLandmark>> map;
+  std::vector<std::string> type_names;
+};
+
 // Everything an estimator may see of a step. The truth is not here.
 struct Views {
   int step = 0;
@@ -140,6 +185,7 @@ struct Views {
   std::optional<CspView> csp;
   std::optional<MeasurementSetView> measurement_set;
   std::optional<ProbabilisticView> probabilistic;
+  std::optional<LandmarkObservationView> landmark_observations;
   bool Offers(View view) const;
 };
 

@@ -7,6 +7,7 @@
 
 #include "algorithms/registry.h"
 #include "core/memory_budget.h"
+#include "harness/association_metrics.h"
 #include "harness/coverage.h"
 #include "harness/environment_error.h"
 #include "harness/guarantee.h"
@@ -60,6 +61,7 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
   GuaranteeJudge guarantee;
   CoverageCounter coverage;
   LandmarkJudge landmarks;
+  AssociationJudge associations;
   record.spec = spec;
   const auto start = Clock::now();
   int step_index = 0;
@@ -80,6 +82,7 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
       post_states.Judge(step, &result.properties);
       coverage.Add(step, *result.estimate, &result.properties);
       landmarks.Judge(step, result.landmarks, &result.properties);
+      associations.Judge(step, result.associations, r.contained, &result.properties);
       for (Property& p : result.properties) r.properties.push_back(std::move(p));
       for (const Property& p : step.annotations) r.properties.push_back(p);
       for (Property& p : result.estimate->Extras()) r.properties.push_back(std::move(p));
@@ -118,6 +121,7 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
   for (Property& p : guarantee.RunProperties()) record.properties.push_back(std::move(p));
   coverage.AppendRunProperties(&record.properties);
   for (Property& p : landmarks.RunProperties()) record.properties.push_back(std::move(p));
+  for (Property& p : associations.RunProperties()) record.properties.push_back(std::move(p));
   record.wall_time_s = Seconds(Clock::now() - start);
   record.metrics = metrics.Finish(spec.seed);
   return record;

@@ -293,6 +293,7 @@ const ClaimFunctions& ClaimFunctionsRegistry() {
                   {"fastest", MeasureFastest}, {"lowest", MeasureLowest},
                   {"linear_r2", MeasureLinearR2}};
     AddPaper000ClaimFunctions(&f);
+    AddPaper002ClaimFunctions(&f);
     AddThesis003ClaimFunctions(&f);
     AddPaper004ClaimFunctions(&f);
     return f;

@@ -57,6 +57,7 @@ std::string MissingRuns(const ClaimContext& context, const RunSelector& s);
 
 // Each paper's measures and explainers (paper/<paper>_claims.cc).
 void AddPaper000ClaimFunctions(ClaimFunctions* functions);
+void AddPaper002ClaimFunctions(ClaimFunctions* functions);
 void AddThesis003ClaimFunctions(ClaimFunctions* functions);
 void AddPaper004ClaimFunctions(ClaimFunctions* functions);
 

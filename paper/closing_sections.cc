@@ -57,6 +57,7 @@ std::string Sentence(const std::string& text) {
 
 std::vector<ComparisonRow> PaperComparisons::All() const {
   std::vector<ComparisonRow> all = paper000;
+  all.insert(all.end(), paper002.begin(), paper002.end());
   all.insert(all.end(), thesis003.begin(), thesis003.end());
   all.insert(all.end(), paper004.begin(), paper004.end());
   return all;
@@ -65,6 +66,7 @@ std::vector<ComparisonRow> PaperComparisons::All() const {
 PaperComparisons ComparePapers(const std::vector<RunRecord>& runs) {
   ClaimContext context(runs);  // one summary of the store for every paper
   return {EvaluateClaims(ClaimsOf("paper000"), context),
+          EvaluateClaims(ClaimsOf("paper002"), context),
           EvaluateClaims(ClaimsOf("thesis003"), context),
           EvaluateClaims(ClaimsOf("paper004"), context)};
 }
@@ -78,6 +80,7 @@ std::string TallyTex(const PaperComparisons& comparisons) {
 std::string ClaimsJson(const PaperComparisons& comparisons) {
   nlohmann::json out = nlohmann::json::array();
   for (const auto& [paper, rows] : {std::pair{"paper000", &comparisons.paper000},
+                                    std::pair{"paper002", &comparisons.paper002},
                                     std::pair{"thesis003", &comparisons.thesis003},
                                     std::pair{"paper004", &comparisons.paper004}})
     for (const ComparisonRow& r : *rows)
@@ -171,6 +174,7 @@ std::string ConclusionTex(const std::vector<RunRecord>& runs,
   t.numeric = {false, true, true, true, true};
   for (const auto& [paper, rows] :
        {std::pair<std::string, const std::vector<ComparisonRow>*>{"000", &comparisons.paper000},
+        {"002", &comparisons.paper002},
         {"thesis 003", &comparisons.thesis003},
         {"004", &comparisons.paper004}}) {
     const VerdictTally v = Tally(*rows);

@@ -41,6 +41,7 @@ PaperSources GeneratePaper(const std::vector<RunRecord>& runs, const std::string
       {"claims.json", ClaimsJson(rows)},
       {"generated/provenance.tex", ProvenanceTex(runs, store_path)},
       {"generated/paper000.tex", Paper000Tex(runs, rows.paper000, figures)},
+      {"generated/paper002.tex", Paper002Tex(runs, rows.paper002, figures)},
       {"generated/thesis003.tex", Thesis003Tex(runs, rows.thesis003, figures)},
       {"generated/paper004.tex", Paper004Tex(runs, rows.paper004, figures)},
       {"generated/profiles.tex", ProfilesTex(runs, figures)},

@@ -30,6 +30,7 @@ std::string RegistryTex();
 // them.
 struct PaperComparisons {
   std::vector<ComparisonRow> paper000;
+  std::vector<ComparisonRow> paper002;
   std::vector<ComparisonRow> thesis003;
   std::vector<ComparisonRow> paper004;
   std::vector<ComparisonRow> All() const;  // in that order
@@ -39,6 +40,8 @@ PaperComparisons ComparePapers(const std::vector<RunRecord>& runs);
 // A seed paper's section: subsections Setup (the runs and the tables made
 // from them), Claims (its rows), Figures and Discussion (DiscussionTex).
 std::string Paper000Tex(const std::vector<RunRecord>& runs, const std::vector<ComparisonRow>& rows,
+                        const FigureSet& figures);
+std::string Paper002Tex(const std::vector<RunRecord>& runs, const std::vector<ComparisonRow>& rows,
                         const FigureSet& figures);
 std::string Thesis003Tex(const std::vector<RunRecord>& runs,
                          const std::vector<ComparisonRow>& rows, const FigureSet& figures);

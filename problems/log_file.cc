@@ -2,9 +2,12 @@
 // their readers share.
 #include "problems/log_file.h"
 
+#include <istream>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
+
+#include "problems/csv_fields.h"
 
 namespace icp {
 
@@ -39,6 +42,34 @@ std::string QuoteForMessage(std::string_view text) {
   }
   if (text.size() > kMaxQuoted) out += "...";
   return out;
+}
+
+void ReadCsvRows(
+    std::istream& in, const std::string& source, const std::string& header,
+    const std::function<void(const std::vector<std::string_view>& fields, const CsvRowError& fail)>&
+        row) {
+  std::string line;
+  int number = 0;
+  bool seen_header = false;
+  while (std::getline(in, line)) {
+    if (++number == 1) StripByteOrderMark(line);
+    const std::string_view text = TrimField(line);
+    if (text.empty() || text.front() == '#') continue;
+    const CsvRowError fail = [&](const std::string& why) {
+      return std::invalid_argument(source + ":" + std::to_string(number) + ": " + why + " (" +
+                                   QuoteForMessage(text) + ")");
+    };
+    const std::vector<std::string_view> fields = SplitCsvFields(text);
+    if (!seen_header) {
+      std::string joined;
+      for (std::string_view f : fields) joined += (joined.empty() ? "" : ",") + std::string(f);
+      if (joined != header) throw fail("the header must be " + header);
+      seen_header = true;
+      continue;
+    }
+    row(fields, fail);
+  }
+  if (!seen_header) throw std::invalid_argument(source + ": no header line (" + header + ")");
 }
 
 }  // namespace icp

@@ -6,9 +6,12 @@
 #define ICPBENCH_PROBLEMS_LOG_FILE_H_
 
 #include <fstream>
+#include <functional>
 #include <iosfwd>
+#include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace icp {
 
@@ -30,6 +33,20 @@ void StripByteOrderMark(std::string& first_line);
 // after the first 80 as "...", so that a message stays one readable line
 // whatever the file holds.
 std::string QuoteForMessage(std::string_view text);
+
+// What a row of a CSV file raises: the std::invalid_argument
+// "<source>:<line>: <why> (<the row, quoted>)".
+using CsvRowError = std::function<std::invalid_argument(const std::string& why)>;
+
+// Reads a CSV file with one header (the landmark and indoor maps): a
+// byte-order mark, '#' comment lines and blank lines skipped, the header's
+// fields (blanks trimmed) must be `header`, then row(fields, fail) for each
+// row after it. Throws std::invalid_argument "<source>:<line>: the header
+// must be ..." or "<source>: no header line (...)".
+void ReadCsvRows(
+    std::istream& in, const std::string& source, const std::string& header,
+    const std::function<void(const std::vector<std::string_view>& fields, const CsvRowError& fail)>&
+        row);
 
 }  // namespace icp
 

@@ -43,6 +43,10 @@ struct Step {
   // ones is the problem's to say, from the truth, so that every estimator
   // is scored on the same ones).
   std::vector<int> scored_landmarks;
+  // With a landmark-observation view: the landmark (TypedLandmark::id) each
+  // observation truly comes from, -1 for a spurious return. For the
+  // association metrics, never for estimators; empty without that view.
+  std::vector<int> observation_truth;
 };
 
 class Problem {

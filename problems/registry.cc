@@ -6,6 +6,7 @@
 #include "problems/car_track/car_track.h"
 #include "problems/chain/chain.h"
 #include "problems/city_roads/city_roads.h"
+#include "problems/indoor_landmarks/indoor_landmarks.h"
 #include "problems/line_intersection/line_intersection.h"
 #include "problems/marina_sonar/marina_sonar.h"
 #include "problems/minibex_file/minibex_file.h"
@@ -39,6 +40,9 @@ std::vector<ProblemInfo>& Table() {
       {"visual-landmarks", "a car with a camera mapping landmarks as interval cones (teach) and localizing on the map (repeat), paper 004",
        &MakeVisualLandmarks, &DefaultParams<VisualLandmarksParams>, &ResolveVisualLandmarks,
        {View::kCsp}},
+      {"indoor-landmarks", "a robot at a corridor's end with wheel odometry and typed range-bearing returns to associate with a map, paper 002",
+       &MakeIndoorLandmarks, &DefaultParams<IndoorLandmarksParams>, &ResolveIndoorLandmarks,
+       {View::kLandmarkObservations, View::kMeasurementSet, View::kProbabilistic}},
   };
   return table;
 }

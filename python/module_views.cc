@@ -115,7 +115,8 @@ void BindViews(py::module_& m) {
                              "The state's components (an estimate is a box over them).")
       .def_property_readonly("offers", [](const PyView& v) {
         std::vector<std::string> views;
-        for (View k : {View::kCsp, View::kMeasurementSet, View::kProbabilistic})
+        for (View k : {View::kCsp, View::kMeasurementSet, View::kProbabilistic,
+                       View::kLandmarkObservations})
           if (Of(v).Offers(k)) views.emplace_back(ToString(k));
         return views;
       })

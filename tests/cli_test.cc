@@ -203,8 +203,9 @@ TEST(CliTest, EveryAlgorithmSolvesTheExamples) {
   bool refused = false;
   for (const auto& a : list) {
     if (a.contains("test_only")) continue;
-    if (a["needs"] == "probabilistic") {
-      // A Minibex file offers no probabilistic view: solve says so.
+    if (a["needs"] == "probabilistic" || a["needs"] == "landmark-observations") {
+      // A Minibex file offers no probabilistic or landmark-observation
+      // view: solve says so.
       Result r = Icpbench("solve " + Example("paper000_3b.bch") + " --algorithm " +
                           a["name"].get<std::string>());
       EXPECT_EQ(r.exit_code, 2) << r.out;
@@ -219,7 +220,7 @@ TEST(CliTest, EveryAlgorithmSolvesTheExamples) {
     EXPECT_LE(j["box"]["x"][0].get<double>(), 0.0);
     EXPECT_GE(j["box"]["x"][1].get<double>(), 0.0);
   }
-  EXPECT_TRUE(refused);  // particle-filter
+  EXPECT_TRUE(refused);  // particle-filter, landmark-tracking, dead-reckoning
 }
 
 TEST(CliTest, ListShowsNamesDescriptionsAndParameters) {

@@ -156,6 +156,7 @@ std::string SmallProblemFor(View needs) {
     case View::kCsp: return "{name: chain, params: {w: 5}}";
     case View::kMeasurementSet: return "{name: line-intersection, params: {lines: 8, outliers: 2}}";
     case View::kProbabilistic: return "{name: car-track, params: {steps: 5}}";
+    case View::kLandmarkObservations: return "{name: indoor-landmarks, params: {steps: 5}}";
   }
   return "";
 }

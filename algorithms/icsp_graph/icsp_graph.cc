@@ -11,41 +11,29 @@ void Describe(IcspGraphParams& p, ParamSet& set) {
 }
 
 namespace {
-ContractorFactory InnerContractor(const std::string& owner, const std::string& inner) {
-  ContractorFactory factory = nullptr;
-  try {
-    factory = FindAlgorithm(inner).contractor;
-  } catch (const std::invalid_argument& e) {
-    throw ParamError(owner + ".inner = " + inner + ": " + e.what());
-  }
-  if (factory == nullptr || inner == "digo" || inner == "lic")
-    throw ParamError(owner + ".inner = " + inner + ": not a CSP contractor (hc4, bc4, 3b-bc4, ...)");
-  return factory;
-}
-
 std::unique_ptr<Estimator> Make(const std::string& owner, const ParamMap& params, bool local) {
   const auto p = ParseParams<IcspGraphParams>(owner, params);
-  return std::make_unique<WindowEstimator>(InnerContractor(owner, p.inner), ParamMap{},
+  return std::make_unique<WindowEstimator>(InnerContractorFactory(owner, p.inner), ParamMap{},
                                            ParseCarry(p.carry), local);
 }
 }  // namespace
 
 ParamMap ResolveIcspGraph(const std::string& owner, const ParamMap& values) {
   const ParamMap resolved = ResolveParams<IcspGraphParams>(owner, values);
-  InnerContractor(owner, resolved.at("inner"));
+  InnerContractorFactory(owner, resolved.at("inner"));
   return resolved;
 }
 
 std::unique_ptr<Contractor> MakeDigoContractor(const ParamMap& params, const ConstraintSystem& csp) {
   const auto p = ParseParams<IcspGraphParams>("digo", params);
-  return InnerContractor("digo", p.inner)({}, csp);
+  return InnerContractorFactory("digo", p.inner)({}, csp);
 }
 
 std::unique_ptr<Contractor> MakeLicContractor(const ParamMap& params, const ConstraintSystem& csp) {
   const auto p = ParseParams<IcspGraphParams>("lic", params);
   CspView view;
   view.csp = csp;
-  return std::make_unique<LocalIcspContractor>(InnerContractor("lic", p.inner), ParamMap{}, csp,
+  return std::make_unique<LocalIcspContractor>(InnerContractorFactory("lic", p.inner), ParamMap{}, csp,
                                                NewestIcsps(view));
 }
 

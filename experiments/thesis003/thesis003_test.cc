@@ -343,8 +343,8 @@ TEST(Thesis003Test, WithoutItsExperimentsTheFiguresSaySo) {
 }
 
 TEST(Thesis003Test, IsRegistered) {
-  ASSERT_EQ(Papers().size(), 3u);  // paper000, thesis003, paper004
-  EXPECT_EQ(Papers()[1].name, "thesis003");
+  ASSERT_EQ(Papers().size(), 4u);  // paper000, paper002, thesis003, paper004
+  EXPECT_EQ(Papers()[2].name, "thesis003");
   const std::vector<RunRecord> runs = {MakeRun("q-relaxed", {}, "line-intersection", {}, 1,
                                                {MakeStep(1, 2, 3, 3, 1e-3)},
                                                kThesis003RelaxedLines)};

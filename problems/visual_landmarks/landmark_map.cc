@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "core/params.h"
-#include "problems/csv_fields.h"
 #include "problems/log_file.h"
 
 namespace icp {
@@ -20,25 +19,8 @@ constexpr const char* kHeader = "landmark,x_lo,x_hi,y_lo,y_hi,z_lo,z_hi";
 
 LandmarkMap ReadLandmarkMap(std::istream& in, const std::string& source) {
   LandmarkMap map;
-  std::string line;
-  int number = 0;
-  bool header = false;
-  while (std::getline(in, line)) {
-    if (++number == 1) StripByteOrderMark(line);
-    const std::string_view text = TrimField(line);
-    if (text.empty() || text.front() == '#') continue;
-    auto fail = [&](const std::string& why) {
-      return std::invalid_argument(source + ":" + std::to_string(number) + ": " + why + " (" +
-                                   QuoteForMessage(text) + ")");
-    };
-    const std::vector<std::string_view> fields = SplitCsvFields(text);
-    if (!header) {
-      std::string joined;
-      for (std::string_view f : fields) joined += (joined.empty() ? "" : ",") + std::string(f);
-      if (joined != kHeader) throw fail(std::string("the header must be ") + kHeader);
-      header = true;
-      continue;
-    }
+  ReadCsvRows(in, source, kHeader,
+              [&](const std::vector<std::string_view>& fields, const CsvRowError& fail) {
     if (fields.size() != 7) throw fail("expected 7 fields, found " + std::to_string(fields.size()));
     int id = 0;
     if (auto [end, ec] = std::from_chars(fields[0].data(), fields[0].data() + fields[0].size(), id);
@@ -57,8 +39,7 @@ LandmarkMap ReadLandmarkMap(std::istream& in, const std::string& source) {
       box[axis] = Interval(bound[2 * axis], bound[2 * axis + 1]);
     }
     if (!map.emplace(id, box).second) throw fail("landmark " + std::to_string(id) + " twice");
-  }
-  if (!header) throw std::invalid_argument(source + ": no header line (" + kHeader + ")");
+  });
   return map;
 }
 
