@@ -306,7 +306,8 @@ std::string Paper002Tex(const std::vector<RunRecord>& runs, const std::vector<Co
   out << FigureTex(figures, "fig9_odometry",
                    "Fig. 9: the pose boxes of odometry alone on paths a and b, with the truth")
       << FigureTex(figures, "fig11_landmarks",
-                   "Fig. 11: the pose boxes of landmark tracking on paths a and b, with the truth");
+                   "Fig. 11: the pose boxes of landmark tracking on paths a and b around the truth "
+                   "(interval errors in x and y)");
   out << "\\subsection{Discussion}\n" << DiscussionTex(rows);
   return out.str();
 }

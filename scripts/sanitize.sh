@@ -40,7 +40,7 @@ if [ "${1:-}" = "--ci" ]; then
     minibex_parser tape params paving accumulate image_contractor relaxed_intersection
     metrics results_store spec runner shard
     car_track marina_sonar chain line_intersection beacon_ranges minibex_file feature_log
-    landmark_metrics
+    indoor_landmarks landmark_metrics association_metrics belief_association
     window_estimator particle_filter accumulator
   )
   cmake --build build-asan -j"${ICPBENCH_JOBS:-2}" --target "${programs[@]/%/_test}"

@@ -159,15 +159,14 @@ const RunRecord* FigureRun(const std::vector<RunRecord>& runs, const std::string
   return best;
 }
 
-void BothPathsFigure(const std::vector<RunRecord>& runs, const std::string& algorithm,
-                     FigureText text, const std::vector<std::pair<double, double>>& walls,
-                     const std::string& out_dir, PlotOutput* out) {
+// The runs of algorithm that the figures draw, paths a and b; nullptr
+// when either is missing.
+std::pair<const RunRecord*, const RunRecord*> BothPaths(const std::vector<RunRecord>& runs,
+                                                        const std::string& algorithm) {
   const RunRecord* a = FigureRun(runs, algorithm, "a");
   const RunRecord* b = FigureRun(runs, algorithm, "b");
-  if (!a || !b) return SkipFigure(text, {}, out);
-  text.title += " (" + RunLabel(*a) + ")";
-  PlotBoxTrackFigure(text, walls, {{"path a", a}, {"path b", b}}, Interval(-0.5, 16.8),
-                     Interval(-2.5, 4.5), out_dir, out);
+  if (!a || !b) return {nullptr, nullptr};
+  return {a, b};
 }
 
 }  // namespace
@@ -211,15 +210,26 @@ std::vector<TextTable> Paper002Tables(const std::vector<RunRecord>& runs) {
 
 void Paper002Figures(const std::vector<RunRecord>& runs, const std::string& out_dir,
                      PlotOutput* out) {
-  const std::vector<std::pair<double, double>> walls = WallPoints();
   const std::string skip = std::string("no ok run of experiment ") + kPaper002Experiment +
                            " on both paths a and b (specs/default.yaml)";
-  BothPathsFigure(runs, "dead-reckoning",
-                  {"fig9_odometry", "Fig. 9: localization by odometry alone", skip}, walls, out_dir,
-                  out);
-  BothPathsFigure(runs, "landmark-tracking",
-                  {"fig11_landmarks", "Fig. 11: localization with the landmarks", skip}, walls,
-                  out_dir, out);
+  // Fig. 9: the boxes on the map. Fig. 11's boxes are a few cm wide, hidden
+  // under the track on the map: drawn as their interval errors instead.
+  FigureText fig9{"fig9_odometry", "Fig. 9: localization by odometry alone", skip};
+  if (const auto [a, b] = BothPaths(runs, "dead-reckoning"); a) {
+    fig9.title += " (" + RunLabel(*a) + ")";
+    PlotBoxTrackFigure(fig9, WallPoints(), {{"path a", a}, {"path b", b}}, Interval(-0.5, 16.8),
+                       Interval(-2.5, 4.5), out_dir, out);
+  } else {
+    SkipFigure(fig9, {}, out);
+  }
+  FigureText fig11{"fig11_landmarks",
+                   "Fig. 11: localization with the landmarks, the boxes around the truth", skip};
+  if (const auto [a, b] = BothPaths(runs, "landmark-tracking"); a) {
+    fig11.title += " (" + RunLabel(*a) + ")";
+    PlotCorridorFigure(fig11, {a, b}, {"path a", "path b"}, out_dir, out);
+  } else {
+    SkipFigure(fig11, {}, out);
+  }
 }
 
 }  // namespace icp

@@ -11,8 +11,10 @@
 //   values beside them;
 //
 //   the figures fig9_odometry (dead-reckoning's x-y boxes on paths a and
-//   b, with the truth) and fig11_landmarks (landmark-tracking's, belief
-//   association, inner hc3), smallest seed, on the corridor's walls.
+//   b on the corridor's walls, with the truth) and fig11_landmarks
+//   (landmark-tracking's at its defaults as its x and y interval errors
+//   over the steps, lo - truth and hi - truth: its boxes are a few cm wide,
+//   hidden under the track on the map), smallest seed.
 #ifndef ICPBENCH_EXPERIMENTS_PAPER002_PAPER002_H_
 #define ICPBENCH_EXPERIMENTS_PAPER002_PAPER002_H_
 
