@@ -59,6 +59,14 @@ const ProblemInfo& FindProblem(const std::string& name) {
   throw std::invalid_argument("unknown problem '" + name + "' (known: " + known + ")");
 }
 
+std::vector<Step> ProblemSteps(const std::string& name, const ParamMap& params, std::uint64_t seed) {
+  std::unique_ptr<Problem> problem = FindProblem(name).make(params, seed);
+  std::vector<Step> steps;
+  Step step;
+  while (problem->Next(&step)) steps.push_back(std::move(step));
+  return steps;
+}
+
 void RegisterProblem(ProblemInfo info) {
   for (const ProblemInfo& p : Problems())
     if (p.name == info.name)

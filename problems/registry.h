@@ -30,6 +30,9 @@ struct ProblemInfo {
 const std::vector<ProblemInfo>& Problems();
 // Throws std::invalid_argument listing the known names if there is none.
 const ProblemInfo& FindProblem(const std::string& name);
+// Every step of problem `name` made with params and seed, in order (tests
+// and tools); throws as its factory does.
+std::vector<Step> ProblemSteps(const std::string& name, const ParamMap& params, std::uint64_t seed);
 // Adds a plugin's problem; throws std::invalid_argument if the name is taken.
 void RegisterProblem(ProblemInfo info);
 

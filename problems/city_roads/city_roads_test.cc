@@ -15,11 +15,7 @@ namespace icp {
 namespace {
 
 std::vector<Step> Drive(const ParamMap& params, std::uint64_t seed) {
-  auto problem = FindProblem("city-roads").make(params, seed);
-  std::vector<Step> steps;
-  Step step;
-  while (problem->Next(&step)) steps.push_back(std::move(step));
-  return steps;
+  return ProblemSteps("city-roads", params, seed);
 }
 
 TEST(CityMapTest, ShippedPngIsTheDrawnMapInItsFrame) {

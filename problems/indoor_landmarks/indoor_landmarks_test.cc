@@ -15,11 +15,7 @@ namespace icp {
 namespace {
 
 std::vector<Step> Drive(const ParamMap& params, std::uint64_t seed) {
-  auto problem = FindProblem("indoor-landmarks").make(params, seed);
-  std::vector<Step> steps;
-  Step step;
-  while (problem->Next(&step)) steps.push_back(std::move(step));
-  return steps;
+  return ProblemSteps("indoor-landmarks", params, seed);
 }
 
 TEST(IndoorMapTest, ShippedCorridorEndHasWallsAndEveryLandmarkType) {

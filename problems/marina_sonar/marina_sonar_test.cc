@@ -38,11 +38,7 @@ MarinaSonarParams Short(int steps = 60) {
 }
 
 std::vector<Step> Drive(const ParamMap& params, std::uint64_t seed) {
-  auto problem = FindProblem("marina-sonar").make(params, seed);
-  std::vector<Step> steps;
-  Step step;
-  while (problem->Next(&step)) steps.push_back(std::move(step));
-  return steps;
+  return ProblemSteps("marina-sonar", params, seed);
 }
 
 Box Around(const std::vector<double>& p, double r) {
