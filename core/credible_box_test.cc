@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -63,6 +64,49 @@ TEST(CredibleBoxTest, HoldsItsLevelOfTheWeight) {
   }
   EXPECT_THROW(CredibleBox(cloud, std::vector<double>(n, 0.0), 0.9), std::invalid_argument);
   EXPECT_THROW(CredibleBox(cloud, w, 1), std::invalid_argument);
+}
+
+// The tails' selection against a full sort, where it is easy to get wrong:
+// few particles, many ties (values on a coarse grid), zero weights, equal
+// and very unequal weights, one and three components, every level.
+TEST(CredibleBoxTest, EqualsTheSortedQuantilesWithTiesAndZeroWeights) {
+  RandomEngine rng(11);
+  for (int trial = 0; trial < 400; ++trial) {
+    const int n = static_cast<int>(UniformInt(rng, 1, trial < 200 ? 40 : 3000));
+    const int d = trial % 2 == 0 ? 1 : 3;
+    const double grid = trial % 3 == 0 ? 0.5 : 1e-9;  // coarse: ties everywhere
+    cv::Mat cloud(n, d, CV_64F);
+    std::vector<double> w(n);
+    for (int i = 0; i < n; ++i) {
+      for (int c = 0; c < d; ++c)
+        cloud.at<double>(i, c) = grid * std::round(UniformReal(rng, -3, 3) / grid);
+      const double draw = UniformReal(rng, 0, 1);
+      w[i] = trial % 4 == 0 ? 1 : draw < 0.1 ? 0 : std::exp(-20 * draw);
+    }
+    if (std::all_of(w.begin(), w.end(), [](double x) { return x == 0; })) w[0] = 1;
+    for (double level : {0.5, 0.95, 0.999}) {
+      const Box box = CredibleBox(cloud, w, level);
+      const double tail = CredibleTail(level, d);
+      for (int c = 0; c < d; ++c) {
+        std::vector<double> v(n);
+        for (int i = 0; i < n; ++i) v[i] = cloud.at<double>(i, c);
+        ASSERT_EQ(box[c].lo(), WeightedQuantile(v, w, tail)) << trial << " " << level << " " << c;
+        ASSERT_EQ(box[c].hi(), WeightedQuantile(v, w, 1 - tail)) << trial << " " << level << " " << c;
+      }
+    }
+  }
+}
+
+// A NaN value (a broken particle) sorts after every number: it never
+// narrows the box, and the box is the numbers' while they hold the tails.
+TEST(CredibleBoxTest, NanValuesSortAfterEveryNumber) {
+  const int n = 1000;
+  cv::Mat cloud(n, 1, CV_64F);
+  for (int i = 0; i < n; ++i) cloud.at<double>(i, 0) = i % 10 == 0 ? std::nan("") : i;
+  const Box box = CredibleBox(cloud, std::vector<double>(n, 1.0), 0.5);
+  EXPECT_FALSE(std::isnan(box[0].lo()));
+  EXPECT_GE(box[0].lo(), 200);
+  EXPECT_FALSE(std::isnan(box[0].hi()));
 }
 
 TEST(CredibleBoxTest, IsTheParticleEstimatesRegionAndSetsHaveNone) {
