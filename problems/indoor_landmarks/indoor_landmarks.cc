@@ -20,7 +20,23 @@ constexpr double kSpuriousFloor = 0.05;  // the likelihood's share for spurious 
 constexpr double kSightingRatio = 0.01;
 constexpr int kSightingIterations = 20;
 
-const Interval kAnyHeading(-std::numbers::pi, std::numbers::pi);
+// Every heading: [-3 pi, 3 pi] (outward rounded), so that any heading
+// interval narrower than 2 pi fits in it once moved by a multiple of 2 pi
+// (InHeadingFrame).
+const Interval kAnyHeading = Interval(-3, 3) * Pi();
+
+// The headings of t (rad, unwrapped) in the frame of kAnyHeading, the
+// prior's: t moved by the multiple of 2 pi that puts its lower bound in
+// [-2 pi, 0), so that it never crosses the frame's ends; the whole frame
+// when t is 2 pi wide or more. The relaxed solvers intersect the prior
+// with the prediction: an unwrapped prediction would cut angles off.
+Interval InHeadingFrame(const Interval& t) {
+  if (t.IsEmpty()) return t;
+  if (!t.IsBounded() || !(t.hi() - t.lo() < 2 * std::numbers::pi)) return kAnyHeading;
+  const double turns = std::floor(t.lo() / (2 * std::numbers::pi)) + 1;
+  const Interval moved = t - Interval(turns) * TwoPi();
+  return moved.IsSubsetOf(kAnyHeading) ? moved : kAnyHeading;
+}
 
 double UniformIn(const Interval& x, RandomEngine& rng) { return UniformReal(rng, x.lo(), x.hi()); }
 
@@ -105,7 +121,9 @@ bool IndoorLandmarksProblem::Next(Step* step) {
     set.predict = [odometry = r.odometry](const Box& previous) {
       if (previous.size() != 3)
         throw std::invalid_argument("indoor-landmarks predict: the box must be (x, y, theta)");
-      return PredictPose(previous, odometry);
+      Box next = PredictPose(previous, odometry);
+      next[2] = InHeadingFrame(next[2]);
+      return next;
     };
   step->views.measurement_set = std::move(set);
   step->views.probabilistic = Probabilistic(k);

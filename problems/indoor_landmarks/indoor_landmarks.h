@@ -10,8 +10,11 @@
 //     landmark of its type" (the union over those landmarks of eq. 10-11,
 //     core/polar_sighting.h), an outlier when no landmark of its type
 //     explains it at the true pose (a spurious return, as a rule); prior:
-//     the start box at step 0, later the map's bounds with any heading;
-//     predict: eq. 5-7;
+//     the start box at step 0, later the map's bounds with any heading
+//     (theta in [-3 pi, 3 pi]);
+//     predict: eq. 5-7, its heading moved by a multiple of 2 pi into the
+//     prior's frame (headings in [-3 pi, 3 pi], so that any heading interval
+//     narrower than 2 pi fits in it);
 //   - probabilistic: motion drawn within the odometry's intervals (wheel
 //     radii, track, rotations), likelihood per return the best landmark of
 //     its type (Gaussian in range and bearing with sigma the error bound)

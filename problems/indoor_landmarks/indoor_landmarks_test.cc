@@ -2,12 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "algorithms/registry.h"
 #include "core/polar_sighting.h"
 #include "problems/registry.h"
 
@@ -153,6 +155,46 @@ TEST(IndoorLandmarksTest, DeadReckoningHoldsTheTruthAndGrows) {
     width = w;
   }
   EXPECT_GT(width, 0.5);
+}
+
+// Whether box holds pose, its heading taken modulo 2 pi.
+bool HoldsModuloTurns(const Box& box, const std::vector<double>& pose) {
+  for (int turns = -4; turns <= 4; ++turns)
+    if (box.Contains({pose[0], pose[1], pose[2] + 2 * std::numbers::pi * turns})) return true;
+  return false;
+}
+
+// The measurement set's prediction puts the heading in the prior's frame:
+// the relaxed solvers intersect the two, so an unwrapped heading would lose
+// the truth once the drive has turned past pi.
+TEST(IndoorLandmarksTest, PredictionsHoldTheTruthInThePriorsFrame) {
+  const std::vector<Step> steps = Drive({{"path", "random"}, {"steps", "300"}}, 4);
+  double turned = 0;
+  for (std::size_t k = 1; k < steps.size(); ++k) {
+    const MeasurementSetView& set = *steps[k].views.measurement_set;
+    const std::vector<double>& before = steps[k - 1].truth;
+    const Box next = set.predict(Box({Interval(before[0]), Interval(before[1]), Interval(before[2])}));
+    EXPECT_TRUE(HoldsModuloTurns(Intersect(set.prior, next), steps[k].truth)) << k;
+    const Box wide = set.predict(set.prior);
+    EXPECT_TRUE(set.prior[2].IsSubsetOf(wide[2])) << "a heading box of 2 pi predicts every heading";
+    turned = std::max(turned, std::abs(steps[k].truth[2]));
+  }
+  EXPECT_GT(turned, 2 * std::numbers::pi);  // the drive wraps
+}
+
+// The guaranteed relaxed configuration (auto_q = false) holds the truth on
+// every step where its assumption holds: without ghosts, every step.
+TEST(IndoorLandmarksTest, TheGuaranteedRelaxedSolverHoldsTheTruthOnEveryStep) {
+  auto solver =
+      FindAlgorithm("q-relaxed").make({{"outlier_share", "0.3"}, {"auto_q", "false"}}, 5);
+  int steps = 0;
+  for (const Step& s :
+       Drive({{"path", "random"}, {"steps", "150"}, {"spurious_rate", "0"}}, 5)) {
+    const StepResult r = solver->Step(s.views, StopCondition());
+    EXPECT_TRUE(HoldsModuloTurns(r.estimate->Hull(), s.truth)) << s.views.step;
+    ++steps;
+  }
+  EXPECT_EQ(steps, 150);
 }
 
 TEST(IndoorLandmarksTest, BadParametersAreRefused) {
