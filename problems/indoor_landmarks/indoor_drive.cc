@@ -48,6 +48,7 @@ constexpr double kWallMargin = 0.4;    // m: the random drive keeps this far fro
 constexpr double kMaxWander = 0.2;     // rad: the random drive's turn a step
 constexpr double kGhostMin = 0.05, kGhostMax = 0.25;  // m: a ghost's offset
 constexpr double kMeasured = 0.9;      // a reading's error within this share of its bound
+constexpr double kStartX = 0.8;        // m: every path starts here, heading along x
 
 struct Motion {
   double d = 0, turn = 0;
@@ -161,19 +162,25 @@ void Observe(const IndoorLandmarksParams& p, const IndoorMap& map, IndoorRecord&
   }
 }
 
+double StartY(const IndoorLandmarksParams& p) { return p.path == "b" ? 1.15 : 0.85; }
+
 }  // namespace
+
+void CheckIndoorStart(const IndoorLandmarksParams& p, const IndoorMap& map) {
+  if (!Free(map, kStartX, StartY(p)))
+    throw ParamError("indoor-landmarks.map: the start (" + FormatDouble(kStartX) + ", " +
+                     FormatDouble(StartY(p)) + ") of path " + p.path + " is off the map or within " +
+                     FormatDouble(kWallMargin) + " m of a wall");
+}
 
 std::vector<IndoorRecord> SimulateIndoorDrive(const IndoorLandmarksParams& p, const IndoorMap& map,
                                               std::uint64_t seed) {
   if (p.path != "random" && p.steps > kPaperAcquisitions)
     throw ParamError("indoor-landmarks.steps = " + std::to_string(p.steps) + ": path " + p.path +
                      " has " + std::to_string(kPaperAcquisitions) + " acquisitions");
+  CheckIndoorStart(p, map);
   RandomEngine rng(seed);
-  double x = 0.8, y = p.path == "b" ? 1.15 : 0.85, heading = 0;
-  if (!Free(map, x, y))
-    throw ParamError("indoor-landmarks.map: the start (" + std::to_string(x) + ", " +
-                     std::to_string(y) + ") is within " + std::to_string(kWallMargin) +
-                     " m of a wall or off the map");
+  double x = kStartX, y = StartY(p), heading = 0;
   const std::vector<Motion> motions =
       p.path == "a"   ? PaperPath(p.steps, kTurnStep)
       : p.path == "b" ? PaperPath(p.steps, -kTurnStep)

@@ -75,8 +75,12 @@ struct IndoorRecord {
   std::vector<int> identities;          // per observation: its landmark, -1 spurious
 };
 
-// The drive of a run: one record per acquisition. Throws ParamError when a
-// path cannot fit the map (a random drive with no free place to start).
+// Throws ParamError when the drive's start, (0.8, 0.85) or on path b
+// (0.8, 1.15), lies off the map or within 0.4 m of one of its walls.
+void CheckIndoorStart(const IndoorLandmarksParams& params, const IndoorMap& map);
+
+// The drive of a run: one record per acquisition. Throws ParamError as
+// CheckIndoorStart.
 std::vector<IndoorRecord> SimulateIndoorDrive(const IndoorLandmarksParams& params,
                                               const IndoorMap& map, std::uint64_t seed);
 

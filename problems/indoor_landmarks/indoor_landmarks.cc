@@ -195,7 +195,8 @@ IndoorLandmarksParams ParseChecked(const std::string& owner, const ParamMap& val
 }  // namespace
 
 ParamMap ResolveIndoorLandmarks(const std::string& owner, const ParamMap& values) {
-  LoadMap(ParseChecked(owner, values));
+  const IndoorLandmarksParams p = ParseChecked(owner, values);
+  CheckIndoorStart(p, LoadMap(p));
   return ResolveParams<IndoorLandmarksParams>(owner, values);
 }
 

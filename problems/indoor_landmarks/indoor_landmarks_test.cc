@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -203,6 +204,16 @@ TEST(IndoorLandmarksTest, BadParametersAreRefused) {
   EXPECT_THROW(info.resolve("p", {{"path", "a"}, {"steps", "47"}}), ParamError);
   EXPECT_NO_THROW(info.resolve("p", {{"path", "random"}, {"steps", "47"}}));
   EXPECT_THROW(info.resolve("p", {{"map", "/nonexistent.csv"}}), std::invalid_argument);
+  // A map whose wall runs through the start.
+  const std::string walled = ::testing::TempDir() + "walled_map.csv";
+  std::ofstream(walled) << "kind,x1,y1,x2,y2\nwall,0,0.6,5,0.6\ncorner,3,2\nedge,0,-1\n";
+  try {
+    info.resolve("p", {{"map", walled}});
+    ADD_FAILURE() << "a start on a wall was accepted";
+  } catch (const ParamError& e) {
+    EXPECT_NE(std::string(e.what()).find("start (0.8, 0.85)"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(info.resolve("p", {{"map", walled}, {"path", "b"}}));  // 0.55 m from it
   EXPECT_THROW(info.resolve("p", {{"dropout_rate", "1"}}), ParamError);
   EXPECT_THROW(info.resolve("p", {{"wheel_radius", "0.0001"}}), ParamError);  // below its error
   EXPECT_THROW(info.resolve("p", {{"track_error", "0.5"}}), ParamError);
