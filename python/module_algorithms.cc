@@ -100,6 +100,8 @@ class PythonEstimator : public Estimator {
     try {
       py::object out = instance_.attr("step")(PyView{std::make_shared<const Views>(views)});
       result.estimate = std::make_unique<BoxEstimate>(ToBox(out, views.space.size()));
+      if (py::hasattr(instance_, "associations"))
+        result.associations = instance_.attr("associations")().cast<std::vector<int>>();
       if (py::hasattr(instance_, "properties"))
         for (const auto& [key, value] : instance_.attr("properties")().cast<py::dict>())
           result.properties.push_back(ToProperty(py::str(key), value));
@@ -178,7 +180,9 @@ void Register(const std::string& name, py::object factory, const std::string& cl
   if (needs == "csp") view = View::kCsp;
   else if (needs == "measurement-set") view = View::kMeasurementSet;
   else if (needs == "probabilistic") view = View::kProbabilistic;
-  else throw py::value_error("needs='" + needs + "': must be csp, measurement-set or probabilistic");
+  else if (needs == "landmark-observations") view = View::kLandmarkObservations;
+  else throw py::value_error("needs='" + needs +
+                             "': must be csp, measurement-set, probabilistic or landmark-observations");
   for (const auto& [other, algorithm] : Registered())
     if (algorithm.class_path == class_path)
       throw py::value_error(class_path + " is already registered as '" + other + "'");

@@ -7,6 +7,7 @@
 
 #include "algorithms/registry.h"
 #include "algorithms/window/window_estimator.h"
+#include "core/polar_sighting.h"
 #include "core/random.h"
 
 namespace icp::python {
@@ -78,6 +79,96 @@ py::tuple ContractCsp(const PyView& v, const py::handle& lo, const py::handle& h
   return BoundsOf(box);
 }
 
+const LandmarkObservationView& ObservationsOf(const PyView& v) {
+  if (!v.views->landmark_observations)
+    throw py::value_error("this step offers no landmark-observations view");
+  return *v.views->landmark_observations;
+}
+
+py::tuple IntervalOf(const Interval& x) { return py::make_tuple(x.lo(), x.hi()); }
+
+// The map as arrays: id, type, x, y.
+py::dict MapOf(const PyView& v) {
+  const LandmarkObservationView& view = ObservationsOf(v);
+  std::vector<double> x, y;
+  std::vector<int> id, type;
+  for (const TypedLandmark& l : *view.map) {
+    id.push_back(l.id);
+    type.push_back(l.type);
+    x.push_back(l.x);
+    y.push_back(l.y);
+  }
+  py::dict out;
+  out["id"] = py::array_t<int>(static_cast<py::ssize_t>(id.size()), id.data());
+  out["type"] = py::array_t<int>(static_cast<py::ssize_t>(type.size()), type.data());
+  out["x"] = Array(x);
+  out["y"] = Array(y);
+  return out;
+}
+
+// The returns as arrays: type, range (lo, hi) and bearing (lo, hi).
+py::dict ReturnsOf(const PyView& v) {
+  const LandmarkObservationView& view = ObservationsOf(v);
+  std::vector<int> type;
+  std::vector<double> range_lo, range_hi, bearing_lo, bearing_hi;
+  for (const PolarObservation& o : view.observations) {
+    type.push_back(o.type);
+    range_lo.push_back(o.range.lo());
+    range_hi.push_back(o.range.hi());
+    bearing_lo.push_back(o.bearing.lo());
+    bearing_hi.push_back(o.bearing.hi());
+  }
+  py::dict out;
+  out["type"] = py::array_t<int>(static_cast<py::ssize_t>(type.size()), type.data());
+  out["range"] = py::make_tuple(Array(range_lo), Array(range_hi));
+  out["bearing"] = py::make_tuple(Array(bearing_lo), Array(bearing_hi));
+  return out;
+}
+
+py::object OdometryOf(const PyView& v) {
+  const LandmarkObservationView& view = ObservationsOf(v);
+  if (!view.odometry) return py::none();
+  const WheelOdometry& o = *view.odometry;
+  py::dict out;
+  out["right_radius"] = IntervalOf(o.right_radius);
+  out["left_radius"] = IntervalOf(o.left_radius);
+  out["track"] = IntervalOf(o.track);
+  out["right_rotation"] = IntervalOf(o.right_rotation);
+  out["left_rotation"] = IntervalOf(o.left_rotation);
+  out["distance"] = IntervalOf(OdometryDistance(o));
+  out["turn"] = IntervalOf(OdometryTurn(o));
+  return out;
+}
+
+// Contracts a pose box (x, y, theta) by return i seen from the landmark
+// with identity `landmark` (eq. 10-11, core/polar_sighting.h) with a
+// registered CSP contractor.
+py::tuple ContractSighting(const PyView& v, std::size_t i, int landmark, const py::handle& lo,
+                           const py::handle& hi, const std::string& algorithm) {
+  const LandmarkObservationView& view = ObservationsOf(v);
+  if (i >= view.observations.size())
+    throw py::index_error("return " + std::to_string(i) + " of " +
+                          std::to_string(view.observations.size()));
+  const TypedLandmark* l = nullptr;
+  for (const TypedLandmark& candidate : *view.map)
+    if (candidate.id == landmark) l = &candidate;
+  if (l == nullptr) throw py::value_error("no landmark " + std::to_string(landmark) + " in the map");
+  const AlgorithmInfo& info = FindAlgorithm(algorithm);
+  if (info.contractor == nullptr) throw py::value_error("'" + algorithm + "' is not a CSP contractor");
+  Box box = BoxFromBounds(lo, hi, 3);
+  if (!box.IsEmpty()) {
+    ConstraintSystem csp;
+    Expr x = csp.AddVariable("x", box[0]);
+    Expr y = csp.AddVariable("y", box[1]);
+    Expr theta = csp.AddVariable("theta", box[2]);
+    AddPolarSighting(csp, x, y, theta, l->x, l->y, view.observations[i]);
+    py::gil_scoped_release release;
+    ContractContext context;
+    info.contractor({}, csp)->Contract(box, context);
+  }
+  return BoundsOf(box);
+}
+
 py::tuple ContractMeasurement(const PyView& v, std::size_t i, const py::handle& lo,
                               const py::handle& hi) {
   const MeasurementSetView& view = MeasurementsOf(v);
@@ -138,6 +229,19 @@ void BindViews(py::module_& m) {
                              [](const PyView& v) { return MeasurementsOf(v).measurements.size(); })
       .def("contract_measurement", &ContractMeasurement, py::arg("i"), py::arg("lo"), py::arg("hi"),
            "Contracts a box over the state with measurement i's contractor.")
+      // landmark observations
+      .def_property_readonly("observation_prior",
+                             [](const PyView& v) { return BoundsOf(ObservationsOf(v).prior); },
+                             "The start box at step 0, later every pose the robot may be in.")
+      .def_property_readonly("landmark_map", &MapOf, "The map's landmarks: id, type, x, y arrays.")
+      .def_property_readonly("type_names", [](const PyView& v) { return ObservationsOf(v).type_names; })
+      .def_property_readonly("returns", &ReturnsOf,
+                             "The typed returns: type, range (lo, hi), bearing (lo, hi).")
+      .def_property_readonly("odometry", &OdometryOf,
+                             "The wheel odometry since the last step as (lo, hi) intervals; None at step 0.")
+      .def("contract_sighting", &ContractSighting, py::arg("i"), py::arg("landmark"), py::arg("lo"),
+           py::arg("hi"), py::arg("algorithm") = "hc4",
+           "Contracts a pose box by return i seen from a landmark (paper 002 eq. 10-11).")
       // probabilistic
       .def("sample_prior", [](const PyView& v, std::size_t n, std::uint64_t seed) {
         return Samples(v, n, seed, false);

@@ -144,8 +144,11 @@ def register_algorithm(name, cls, needs="csp", params=None, description=""):
     cls(**params[, seed=...]) makes the estimator; its step(view) gets an
     icpbench.View and returns the estimate's box over view.names as (lo, hi),
     an object with .lo and .hi, or None for an empty estimate; an optional
-    properties() returns a dict stored with the step. needs: the view it
-    needs, "csp", "measurement-set" or "probabilistic". params: name ->
+    properties() returns a dict stored with the step, and an optional
+    associations() the landmark each of the step's returns was matched with
+    (-1 for none), scored against the truth. needs: the view it needs,
+    "csp", "measurement-set", "probabilistic" or "landmark-observations".
+    params: name ->
     default, or (default, doc), or (default, doc, [choices]) for a str; the
     type is the default's (bool, int, float, str), checked like a C++
     plugin's. The runs' parameters include `python`, the class's import path.

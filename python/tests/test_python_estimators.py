@@ -3,6 +3,8 @@ beside the C++ ones: the same boxes as the C++ algorithm they wrap, their
 parameters checked like a plugin's, and one that raises recorded as failed
 while the others finish."""
 
+import math
+
 import pytest
 
 import icpbench
@@ -77,3 +79,88 @@ def test_a_python_estimator_steps_by_hand_too():
         lo, hi = estimator.step(step.view)
         theirs = hc4.step(step)
         assert list(lo) == list(theirs.lo) and list(hi) == list(theirs.hi)
+
+
+class NearestOfItsType:
+    """A toy association rule on paper 002's landmark-observation view: the
+    odometry's prediction, then each return given the landmark of its type
+    nearest its world position, kept when its sighting leaves the box
+    non-empty."""
+
+    def __init__(self):
+        self.pose, self.matched = None, []
+
+    def step(self, view):
+        lo, hi = view.observation_prior
+        if self.pose is not None and view.odometry is not None:
+            lo, hi = self._predict(*self.pose, view.odometry)
+        returns, landmarks = view.returns, view.landmark_map
+        self.matched = []
+        for i, kind in enumerate(returns["type"]):
+            rng = (returns["range"][0][i] + returns["range"][1][i]) / 2
+            bearing = (returns["bearing"][0][i] + returns["bearing"][1][i]) / 2
+            theta = (lo[2] + hi[2]) / 2
+            wx = (lo[0] + hi[0]) / 2 + rng * math.cos(theta + bearing)
+            wy = (lo[1] + hi[1]) / 2 + rng * math.sin(theta + bearing)
+            same = [j for j in range(len(landmarks["id"])) if landmarks["type"][j] == kind]
+            best = min(same, key=lambda j: (landmarks["x"][j] - wx) ** 2 + (landmarks["y"][j] - wy) ** 2)
+            nlo, nhi = view.contract_sighting(i, int(landmarks["id"][best]), lo, hi)
+            if all(a <= b for a, b in zip(nlo, nhi)):
+                lo, hi = nlo, nhi
+                self.matched.append(int(landmarks["id"][best]))
+            else:
+                self.matched.append(-1)
+        self.pose = (lo, hi)
+        return lo, hi
+
+    def associations(self):
+        return self.matched
+
+    @staticmethod
+    def _predict(lo, hi, odometry):
+        # Eq. 5-7 by corners: a sketch, widened so that it stays an enclosure.
+        d_lo, d_hi = odometry["distance"]
+        t_lo, t_hi = odometry["turn"]
+        xs, ys, ts = [], [], []
+        for theta in (lo[2], hi[2]):
+            for d in (d_lo, d_hi):
+                for t in (t_lo, t_hi):
+                    xs.append(d * math.cos(theta + t / 2))
+                    ys.append(d * math.sin(theta + t / 2))
+                    ts.append(theta + t)
+        pad = 1e-3 + 0.05 * (hi[2] - lo[2])
+        return ([lo[0] + min(xs) - pad, lo[1] + min(ys) - pad, min(ts) - pad],
+                [hi[0] + max(xs) + pad, hi[1] + max(ys) + pad, max(ts) + pad])
+
+
+icpbench.register_algorithm("nearest-python", NearestOfItsType, needs="landmark-observations")
+
+
+def test_a_python_association_rule_on_paper_002s_view_is_scored(tmp_path):
+    spec = {"name": "python-association", "seeds": [1], "experiments": [
+        {"name": "indoor", "algorithms": ["nearest-python", "landmark-tracking"],
+         "problems": [{"name": "indoor-landmarks", "params": {"steps": 12, "spurious_rate": 0}}]}]}
+    summary = icpbench.run(spec, out=tmp_path, jobs=2)
+    assert summary["ok"] == 2
+    with icpbench.open(tmp_path) as store:
+        runs = store.runs().set_index("algorithm")
+        props = store.step_properties(int(runs.loc["nearest-python", "id"]))
+    right = props[props["name"] == "associations_right"]["value"].astype(int)
+    assert len(right) == 12 and right.sum() > 12  # several landmarks a step, mostly right
+
+
+def test_the_landmark_observation_view_from_python():
+    steps = list(icpbench.problem("indoor-landmarks", seed=2, steps=3))
+    first, second = steps[0].view, steps[1].view
+    assert "landmark-observations" in first.offers
+    assert first.odometry is None and second.odometry is not None
+    lo, hi = second.odometry["distance"]
+    assert lo < 0.30 < hi
+    assert first.type_names == ["corner", "edge", "other"]
+    returns = first.returns
+    assert len(returns["type"]) > 3 and all((returns["range"][0] < returns["range"][1]))
+    lo, hi = first.observation_prior
+    with pytest.raises(ValueError, match="no landmark 999"):
+        first.contract_sighting(0, 999, lo, hi)
+    with pytest.raises(IndexError):
+        first.contract_sighting(len(returns["type"]), 0, lo, hi)
