@@ -62,44 +62,49 @@ std::string ConsistencyWhileRight(const GroupSummary& g) {
   return FormatNumber(100.0 * contained / held) + " (" + std::to_string(held) + ")";
 }
 
-TextTable IndoorTable(const std::vector<RunRecord>& runs) {
+// The groups of indoor runs with an ok run, in SummariseGroups' order; they
+// point into `indoor`, which must outlive them.
+std::vector<GroupSummary> IndoorGroups(const std::vector<RunRecord>& runs,
+                                       std::vector<RunRecord>* indoor) {
+  for (const RunRecord& r : runs)
+    if (IsIndoorRun(r)) indoor->push_back(r);
+  std::vector<GroupSummary> groups;
+  for (GroupSummary& g : SummariseGroups(*indoor))
+    if (g.ok > 0) groups.push_back(std::move(g));
+  return groups;
+}
+
+// A group's first two cells: the configuration (the problem parameters
+// other than the path in brackets) and the path.
+std::vector<std::string> Configuration(const GroupSummary& g) {
+  ParamMap shown = g.problem_params;
+  shown.erase("path");
+  return {WithParams(DisplayOf(g.algorithm).label, g.algorithm_params) +
+              (shown.empty() ? "" : " [" + CompactParams(shown) + "]"),
+          PathOf(*g.ok_runs.front())};
+}
+
+constexpr double kConfigurationCm = 4.2;  // the LaTeX column that wraps
+
+TextTable AccuracyTable(const std::vector<GroupSummary>& groups) {
   TextTable table;
   table.title = "Paper 002: a robot at a corridor's end tracking typed landmarks (indoor-landmarks)";
   table.headers = {"configuration", "path", "runs", "consistent (%)", "while assumption held (%)",
                    "widest x (m)", "widest y (m)", "widest θ (°)", "position error (m)",
-                   "heading error (°)", "associations right / wrong / missed",
-                   "wrong → lost", "time per step (ms)"};
-  table.numeric = {false, false, true, true, true, true, true, true, true, true, false, false, true};
+                   "heading error (°)"};
+  table.numeric = {false, false, true, true, true, true, true, true, true, true};
+  table.wrap_cm = {kConfigurationCm};
   table.omit_if_empty = true;
-  std::vector<const RunRecord*> selected;
-  std::vector<RunRecord> copies;
-  for (const RunRecord& r : runs)
-    if (IsIndoorRun(r)) copies.push_back(r);
-  for (const GroupSummary& g : SummariseGroups(copies)) {
-    if (g.ok == 0) continue;
-    const std::string path = PathOf(*g.ok_runs.front());
-    const double right = Total(g, "associations_right");
-    const std::string associations =
-        std::isnan(right) ? "—"
-                          : FormatNumber(right) + " / " + FormatNumber(Total(g, "associations_wrong")) +
-                                " / " + FormatNumber(Total(g, "associations_missed"));
-    const double wrong_steps = Total(g, "wrong_association_steps");
-    const std::string lost = std::isnan(wrong_steps)
-                                 ? "—"
-                                 : FormatNumber(Total(g, "wrong_association_losses")) + " of " +
-                                       FormatNumber(wrong_steps);
-    ParamMap shown = g.problem_params;
-    shown.erase("path");
-    table.rows.push_back(
-        {WithParams(DisplayOf(g.algorithm).label, g.algorithm_params) +
-             (shown.empty() ? "" : " [" + CompactParams(shown) + "]"),
-         path, OkRunsCell(g), FormatNumber(100 * g.metrics.consistency_rate),
-         ConsistencyWhileRight(g), Median(g, [](const IndoorRunStats& s) { return s.widest_x; }),
-         Median(g, [](const IndoorRunStats& s) { return s.widest_y; }),
-         Median(g, [](const IndoorRunStats& s) { return s.widest_theta_deg; }),
-         Median(g, [](const IndoorRunStats& s) { return s.position_error; }),
-         Median(g, [](const IndoorRunStats& s) { return s.heading_error_deg; }), associations, lost,
-         FormatWithInterval(RunMedian(g, RunMeanTime), 1e3)});
+  for (const GroupSummary& g : groups) {
+    std::vector<std::string> row = Configuration(g);
+    row.insert(row.end(),
+               {OkRunsCell(g), FormatNumber(100 * g.metrics.consistency_rate),
+                ConsistencyWhileRight(g), Median(g, [](const IndoorRunStats& s) { return s.widest_x; }),
+                Median(g, [](const IndoorRunStats& s) { return s.widest_y; }),
+                Median(g, [](const IndoorRunStats& s) { return s.widest_theta_deg; }),
+                Median(g, [](const IndoorRunStats& s) { return s.position_error; }),
+                Median(g, [](const IndoorRunStats& s) { return s.heading_error_deg; })});
+    table.rows.push_back(std::move(row));
   }
   if (table.rows.empty()) {
     table.notes.push_back(std::string("No ok indoor-landmarks runs of experiment ") +
@@ -108,25 +113,56 @@ TextTable IndoorTable(const std::vector<RunRecord>& runs) {
   }
   const Paper002Published& p = kPaper002;
   table.rows.push_back({"odometry alone, paper (Fig. 9)", "2 paths", "", "", "", "grows", "grows",
-                        "", "", "", "", "", ""});
+                        "", "", ""});
   table.rows.push_back({"landmarks, paper (Fig. 11)", "2 paths", "", "", "",
                         "< " + FormatNumber(p.widest_xy), "< " + FormatNumber(p.widest_xy),
                         "< " + FormatNumber(p.widest_theta_deg), "≈ " + FormatNumber(p.position_error),
-                        "≈ " + FormatNumber(p.heading_error_deg), "", "", ""});
+                        "≈ " + FormatNumber(p.heading_error_deg)});
   table.notes.push_back(
       "Per configuration and path over its seeds: consistent, the share of steps whose box holds "
       "the true pose; while assumption held, the same over the steps where the estimator's "
       "guarantee applies, with their number: for landmark tracking, those before the run's "
-      "first wrong association (it assumes every association right); for the q-relaxed "
-      "intersection, those with at most its bound of wrong returns since its last restart; "
-      "widest, the median over seeds of the widest box of the run; errors, the median "
-      "of the run's mean distance from the box's centre to the truth; associations, summed over "
-      "the seeds (right: a landmark's return given its landmark; wrong: given another, or a "
-      "spurious return given any; missed: a landmark's return given none); wrong → lost: the "
-      "steps with a wrong association whose box missed the truth, of all steps with one. The "
-      "relaxed solvers and the particle filter do not associate (—): a wrong association is an "
-      "outlier to them. The paper's corridor, robot and sensor are simulated from its "
-      "description (problems/indoor_landmarks/indoor_drive.h), so its numbers compare in kind.");
+      "first wrong association (it assumes every association right); for the relaxed solvers, "
+      "those with at most their bound of wrong returns since their last restart; widest, the "
+      "median over seeds of the widest box of the run; errors, the median of the run's mean "
+      "distance from the box's centre to the truth. The paper's corridor, robot and sensor are "
+      "simulated from its description (problems/indoor_landmarks/indoor_drive.h), so its "
+      "numbers compare in kind.");
+  return table;
+}
+
+TextTable AssociationTable(const std::vector<GroupSummary>& groups) {
+  TextTable table;
+  table.title = "Paper 002: associations and time per step (indoor-landmarks)";
+  table.headers = {"configuration", "path", "runs", "associations right / wrong / missed",
+                   "wrong → lost", "time per step (ms)"};
+  table.numeric = {false, false, true, false, false, true};
+  table.wrap_cm = {kConfigurationCm};
+  table.omit_if_empty = true;
+  for (const GroupSummary& g : groups) {
+    const double right = Total(g, "associations_right");
+    const double wrong_steps = Total(g, "wrong_association_steps");
+    std::vector<std::string> row = Configuration(g);
+    row.insert(row.end(),
+               {OkRunsCell(g),
+                std::isnan(right) ? "—"
+                                  : FormatNumber(right) + " / " +
+                                        FormatNumber(Total(g, "associations_wrong")) + " / " +
+                                        FormatNumber(Total(g, "associations_missed")),
+                std::isnan(wrong_steps) ? "—"
+                                        : FormatNumber(Total(g, "wrong_association_losses")) +
+                                              " of " + FormatNumber(wrong_steps),
+                FormatWithInterval(RunMedian(g, RunMeanTime), 1e3)});
+    table.rows.push_back(std::move(row));
+  }
+  if (table.rows.empty()) return table;
+  table.notes.push_back(
+      "Associations, summed over the seeds: right, a landmark's return given its landmark; "
+      "wrong, given another, or a spurious return given any; missed, a landmark's return given "
+      "none. Wrong → lost: the steps with a wrong association whose box missed the truth, of "
+      "all steps with one. The relaxed solvers, the particle filter and odometry alone do not "
+      "associate (—): a wrong association is an outlier to the relaxed solvers. Time: the "
+      "median over seeds of the mean solve time per step.");
   return table;
 }
 
@@ -205,7 +241,9 @@ IndoorRunStats IndoorStats(const RunRecord& run) {
 }
 
 std::vector<TextTable> Paper002Tables(const std::vector<RunRecord>& runs) {
-  return {IndoorTable(runs)};
+  std::vector<RunRecord> indoor;
+  const std::vector<GroupSummary> groups = IndoorGroups(runs, &indoor);
+  return {AccuracyTable(groups), AssociationTable(groups)};
 }
 
 void Paper002Figures(const std::vector<RunRecord>& runs, const std::string& out_dir,

@@ -2,13 +2,14 @@
 // typed landmarks) in the report and the figures, from the indoor-landmarks
 // runs of spec experiments `indoor` and `indoor-spurious` (specs/default.yaml):
 //
-//   the table "Paper 002: ...": per configuration and path, pooled over
-//   seeds, the share of steps whose box holds the true pose (all steps, and
-//   those where every association so far was right), the widest box in x,
-//   y (m) and theta (deg), the position and heading errors of the box's
-//   centre, the associations right / wrong / missed, how often a step with
-//   a wrong association lost the truth, and the time per step; the paper's
-//   values beside them;
+//   the tables "Paper 002: ..." (accuracy) and "Paper 002: associations
+//   and time per step": per configuration and path, pooled over seeds, the
+//   share of steps whose box holds the true pose (all steps, and those
+//   where the estimator's assumption held), the widest box in x, y (m) and
+//   theta (deg), the position and heading errors of the box's centre, with
+//   the paper's values beside them; then the associations right / wrong /
+//   missed, how often a step with a wrong association lost the truth, and
+//   the time per step;
 //
 //   the figures fig9_odometry (dead-reckoning's x-y boxes on paths a and
 //   b on the corridor's walls, with the truth) and fig11_landmarks

@@ -60,16 +60,18 @@ TEST(Paper002Test, TableRowsPerConfigurationAndPathWithThePapersRows) {
                                        IndoorRun("landmark-tracking", "a", 2),
                                        IndoorRun("landmark-tracking", "b", 1)};
   const std::vector<TextTable> tables = Paper002Tables(runs);
-  ASSERT_EQ(tables.size(), 1u);
-  const TextTable& t = tables[0];
-  ASSERT_EQ(t.rows.size(), 4u);  // a, b, and the paper's two rows
-  EXPECT_EQ(t.rows[0][1], "a");
-  EXPECT_EQ(t.rows[0][2], "2");
-  EXPECT_EQ(t.rows[0][4], "100 (2)");
-  EXPECT_EQ(t.rows[0][10], "20 / 2 / 4");
-  EXPECT_EQ(t.rows[0][11], "0 of 2");
-  EXPECT_EQ(t.rows[1][1], "b");
-  EXPECT_NE(t.rows[3][5].find("0.2"), std::string::npos);
+  ASSERT_EQ(tables.size(), 2u);
+  const TextTable& accuracy = tables[0];
+  ASSERT_EQ(accuracy.rows.size(), 4u);  // a, b, and the paper's two rows
+  EXPECT_EQ(accuracy.rows[0][1], "a");
+  EXPECT_EQ(accuracy.rows[0][2], "2");
+  EXPECT_EQ(accuracy.rows[0][4], "100 (2)");
+  EXPECT_EQ(accuracy.rows[1][1], "b");
+  EXPECT_NE(accuracy.rows[3][5].find("0.2"), std::string::npos);
+  const TextTable& associations = tables[1];
+  ASSERT_EQ(associations.rows.size(), 2u);
+  EXPECT_EQ(associations.rows[0][3], "20 / 2 / 4");
+  EXPECT_EQ(associations.rows[0][4], "0 of 2");
   EXPECT_TRUE(Paper002Tables({}).front().rows.empty());
 }
 
