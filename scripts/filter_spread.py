@@ -1,0 +1,72 @@
+#!/usr/bin/env python3
+"""Whether a particle filter's cloud is as wide as its errors, per run of a
+results store (docs/reproduction/thesis003.md, "Particle-filter coverage").
+
+For each particle-filter run and each state component, from the step
+properties mean_<c> and cov_<c>_<c> and the stored truth: the share of steps
+whose truth lies within z standard deviations of the cloud's mean, z the
+Gaussian quantile of each component's share of a 50 % box under the Sidak
+split the credible box uses (0.5^(1/d) for d components: 0.794 for three,
+0.707 for two); the share where all components do (joint) against the
+product of the shares (what independent components would give); and the
+stored covered_50. A share above the expected one says the cloud is wider
+than its errors in that component; joint above product says the
+components' errors go together. Headings are compared modulo 2 pi.
+
+    python3 scripts/filter_spread.py results/coverage
+"""
+import collections
+import math
+import sqlite3
+import statistics
+import sys
+
+
+def main(directory):
+    db = sqlite3.connect(f"file:{directory}/results.sqlite?mode=ro", uri=True)
+    runs = db.execute("SELECT id, problem, seed FROM runs WHERE algorithm = 'particle-filter' "
+                      "AND status = 'ok' ORDER BY problem, seed").fetchall()
+    if not runs:
+        sys.exit(f"{directory}: no ok particle-filter run")
+    print("problem\tseed\tsteps\tcovered_50\tjoint\tproduct\texpected\tshare within z sd, per component")
+    for run_id, problem, seed in runs:
+        props = collections.defaultdict(dict)
+        for step, name, value in db.execute(
+                "SELECT step, name, value FROM step_properties WHERE run_id = ?", (run_id,)):
+            props[step][name] = value
+        truth = collections.defaultdict(dict)
+        for step, var, value in db.execute(
+                "SELECT step, var, truth FROM step_values WHERE run_id = ?", (run_id,)):
+            truth[step][var] = value
+        names = sorted({n[5:] for p in props.values() for n in p if n.startswith("mean_")})
+        expected = 0.5 ** (1 / len(names))
+        z = statistics.NormalDist().inv_cdf((1 + expected) / 2)
+        within = {c: 0 for c in names}
+        steps = joint = covered = 0
+        for step, p in props.items():
+            if any(f"mean_{c}" not in p or truth[step].get(c) is None for c in names):
+                continue
+            steps += 1
+            covered += int(p.get("covered_50", 0))
+            every = True
+            for c in names:
+                sd = math.sqrt(max(float(p[f"cov_{c}_{c}"]), 0.0))
+                error = truth[step][c] - float(p[f"mean_{c}"])
+                if c in ("theta", "heading"):
+                    error = math.remainder(error, 2 * math.pi)
+                inside = abs(error) <= z * sd
+                within[c] += inside
+                every &= inside
+            joint += every
+        if steps == 0:
+            continue
+        product = math.prod(within[c] / steps for c in names)
+        shares = ", ".join(f"{c} {within[c] / steps:.3f}" for c in names)
+        print(f"{problem}\t{seed}\t{steps}\t{covered / steps:.3f}\t{joint / steps:.3f}\t"
+              f"{product:.3f}\t{expected:.3f}\t{shares}")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    main(sys.argv[1])
