@@ -9,6 +9,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -38,9 +39,9 @@ struct StepResult {
   std::map<int, Box> landmarks;
   // For a landmark-observation view (paper 002): the landmark
   // (TypedLandmark::id) each of the step's observations was associated
-  // with, -1 for none; empty when the estimator does not associate. The
+  // with, -1 for none; unset when the estimator does not associate. The
   // harness scores them against the true identities.
-  std::vector<int> associations;
+  std::optional<std::vector<int>> associations;
 };
 
 // Thrown by an estimator that finds its own result broken (a contractor that

@@ -5,14 +5,15 @@
 
 namespace icp {
 
-void AssociationJudge::Judge(const Step& step, const std::vector<int>& associations,
-                             int contained, Properties* out) {
-  // Nothing to score: no view to associate, no truth, or an estimator that
-  // does not associate (no associations while there were returns).
-  if (!step.views.landmark_observations) return;
+void AssociationJudge::Judge(const Step& step,
+                             const std::optional<std::vector<int>>& estimated, int contained,
+                             Properties* out) {
+  // Nothing to score: an estimator that does not associate, no view to
+  // associate, or no truth.
+  if (!estimated || !step.views.landmark_observations) return;
   const std::vector<int>& truth = step.observation_truth;
   if (truth.size() != step.views.landmark_observations->observations.size()) return;
-  if (associations.empty() && !truth.empty()) return;
+  const std::vector<int>& associations = *estimated;
   if (associations.size() != truth.size())
     throw std::invalid_argument("step " + std::to_string(step.views.step) + ": " +
                                 std::to_string(associations.size()) + " associations for " +

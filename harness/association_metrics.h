@@ -5,6 +5,7 @@
 #define ICPBENCH_HARNESS_ASSOCIATION_METRICS_H_
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "core/estimate.h"
@@ -14,8 +15,8 @@ namespace icp {
 
 class AssociationJudge {
  public:
-  // When the step has true identities and the estimator reported
-  // associations (one per return), adds associations_right (a landmark's
+  // When the estimator associates (associations set) and the step has true
+  // identities, adds associations_right (a landmark's
   // return given its landmark), associations_wrong (a return given another
   // landmark, or a spurious return given any), associations_missed (a
   // landmark's return given none) and assumption_held (1 while every
@@ -23,8 +24,8 @@ class AssociationJudge {
   // needs it, so its misses are counted apart). `contained` is the step's
   // StepRecord::contained (1, 0, or -1 unknown). Throws
   // std::invalid_argument when the associations are not one per return.
-  void Judge(const Step& step, const std::vector<int>& associations, int contained,
-             Properties* out);
+  void Judge(const Step& step, const std::optional<std::vector<int>>& associations,
+             int contained, Properties* out);
   // None when no step was judged; else the totals associations_right,
   // associations_wrong, associations_missed, wrong_association_steps (steps
   // with a wrong association) and wrong_association_losses (those whose

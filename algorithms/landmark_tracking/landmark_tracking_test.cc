@@ -32,14 +32,15 @@ Tally Track(const std::string& name, const ParamMap& estimator, const ParamMap& 
     ++t.steps;
     const bool held = r.estimate->Contains(step.truth);
     t.held += held;
+    const std::vector<int> given = r.associations.value_or(std::vector<int>{});
     if (name != "dead-reckoning")
-      EXPECT_EQ(r.associations.size(), step.observation_truth.size());
+      EXPECT_EQ(given.size(), step.observation_truth.size());
     else
-      EXPECT_TRUE(r.associations.empty());
-    for (std::size_t i = 0; i < r.associations.size(); ++i) {
-      if (r.associations[i] < 0) {
+      EXPECT_FALSE(r.associations.has_value());
+    for (std::size_t i = 0; i < given.size(); ++i) {
+      if (given[i] < 0) {
         t.missed += step.observation_truth[i] >= 0;
-      } else if (r.associations[i] == step.observation_truth[i]) {
+      } else if (given[i] == step.observation_truth[i]) {
         ++t.right;
       } else {
         ++t.wrong;
