@@ -1,6 +1,7 @@
 #include "core/polar_sighting.h"
 
 #include <numbers>
+#include <stdexcept>
 
 namespace icp {
 
@@ -16,6 +17,17 @@ void AddPolarSighting(ConstraintSystem& csp, Expr x, Expr y, Expr heading, doubl
   Expr c = Cos(direction);
   Expr s = Sin(direction);
   csp.AddConstraint(Atan2(c * dy - s * dx, c * dx + s * dy), bearing - Interval(b));
+}
+
+ConstraintSystem PoseSighting(double xl, double yl, const PolarObservation& observation,
+                              const Box& pose) {
+  if (pose.size() != 3) throw std::invalid_argument("PoseSighting: the pose is (x, y, theta)");
+  ConstraintSystem csp;
+  Expr x = csp.AddVariable("x", pose[0]);
+  Expr y = csp.AddVariable("y", pose[1]);
+  Expr theta = csp.AddVariable("theta", pose[2]);
+  AddPolarSighting(csp, x, y, theta, xl, yl, observation);
+  return csp;
 }
 
 std::array<Interval, 2> SightingWorldBox(const Box& pose, const PolarObservation& observation) {

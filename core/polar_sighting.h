@@ -32,6 +32,12 @@ namespace icp {
 void AddPolarSighting(ConstraintSystem& csp, Expr x, Expr y, Expr heading, double xl, double yl,
                       const PolarObservation& observation);
 
+// The sighting alone as a system over the pose: variables x, y, theta with
+// the domains of `pose` (three components), constrained as AddPolarSighting
+// does.
+ConstraintSystem PoseSighting(double xl, double yl, const PolarObservation& observation,
+                              const Box& pose);
+
 // The world box of the sighted point seen from any pose of `pose` (x, y,
 // heading), eq. 8-9: x + d cos(heading + bearing), y + d sin(heading +
 // bearing).

@@ -16,13 +16,9 @@ constexpr double kPi = std::numbers::pi;
 
 // The sighting of (xl, yl) as a contractor over (x, y, theta).
 ContractSummary ContractBySighting(Box& pose, double xl, double yl, const PolarObservation& o) {
-  ConstraintSystem csp;
-  Expr x = csp.AddVariable("x", Interval());
-  Expr y = csp.AddVariable("y", Interval());
-  Expr theta = csp.AddVariable("theta", Interval());
-  AddPolarSighting(csp, x, y, theta, xl, yl, o);
-  FixpointContractor fixpoint(std::make_shared<SequenceContractor>(ConstraintContractors(csp)),
-                              0.001, 100);
+  FixpointContractor fixpoint(
+      std::make_shared<SequenceContractor>(ConstraintContractors(PoseSighting(xl, yl, o, Box(3)))),
+      0.001, 100);
   ContractContext context;
   return fixpoint.Contract(pose, context);
 }

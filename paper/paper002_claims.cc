@@ -12,7 +12,7 @@
 //                   summed over their runs (the same seeds and paths)
 #include <algorithm>
 #include <cmath>
-#include <functional>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
@@ -46,6 +46,26 @@ double WrongAssociations(const std::vector<const RunRecord*>& runs) {
   return total;
 }
 
+// The per-run quantities (IndoorStats) and which of the runs' values each
+// claim judges.
+enum class Pick { kLowest, kWidest, kMedian };
+struct Quantity {
+  const char* name;
+  double (*of)(const IndoorRunStats&);
+  Pick pick;
+  const char* unit;
+};
+const Quantity kQuantities[] = {
+    {"growth", [](const IndoorRunStats& s) { return s.growth_share; }, Pick::kLowest, ""},
+    {"widest_xy", [](const IndoorRunStats& s) { return std::max(s.widest_x, s.widest_y); },
+     Pick::kWidest, " m"},
+    {"widest_theta", [](const IndoorRunStats& s) { return s.widest_theta_deg; }, Pick::kWidest, "°"},
+    {"position_error", [](const IndoorRunStats& s) { return s.position_error; }, Pick::kMedian,
+     " m"},
+    {"heading_error", [](const IndoorRunStats& s) { return s.heading_error_deg; }, Pick::kMedian,
+     "°"},
+};
+
 Measurement MeasureIndoor(const YAML::Node& measure, const ClaimContext& context) {
   const std::string quantity = measure["quantity"] ? measure["quantity"].as<std::string>() : "";
   const std::vector<RunSelector> selectors = SelectorsUnder(measure, "runs");
@@ -77,46 +97,26 @@ Measurement MeasureIndoor(const YAML::Node& measure, const ClaimContext& context
     if (std::isnan(m.value)) m.missing = "neither rule made a wrong association" + over;
     return m;
   }
-  std::function<double(const IndoorRunStats&)> of;
-  bool highest = true, median = false, lowest = false;
-  std::string unit;
-  if (quantity == "growth") {
-    of = [](const IndoorRunStats& s) { return s.growth_share; };
-    highest = false, lowest = true;
-  } else if (quantity == "widest_xy") {
-    of = [](const IndoorRunStats& s) { return std::max(s.widest_x, s.widest_y); };
-    unit = " m";
-  } else if (quantity == "widest_theta") {
-    of = [](const IndoorRunStats& s) { return s.widest_theta_deg; };
-    unit = "°";
-  } else if (quantity == "position_error") {
-    of = [](const IndoorRunStats& s) { return s.position_error; };
-    highest = false, median = true, unit = " m";
-  } else if (quantity == "heading_error") {
-    of = [](const IndoorRunStats& s) { return s.heading_error_deg; };
-    highest = false, median = true, unit = "°";
-  } else {
+  const auto quantity_it = std::find_if(std::begin(kQuantities), std::end(kQuantities),
+                                        [&](const Quantity& q) { return quantity == q.name; });
+  if (quantity_it == std::end(kQuantities))
     throw ClaimsError("indoor needs 'quantity': growth, widest_xy, widest_theta, position_error, "
                       "heading_error or wrong_ratio");
-  }
+  const Quantity& q = *quantity_it;
   std::vector<double> values;
   for (const RunRecord* r : runs)
-    if (const double v = of(IndoorStats(*r)); !std::isnan(v)) values.push_back(v);
+    if (const double v = q.of(IndoorStats(*r)); !std::isnan(v)) values.push_back(v);
   if (values.empty()) {
     m.missing = "the runs have no step rows (record: runs?): rerun " + context.spec;
     return m;
   }
   std::sort(values.begin(), values.end());
-  if (median) {
-    m.value = MedianWithInterval(values).median;
-    m.text = "median " + FormatNumber(m.value) + unit + over;
-  } else if (lowest) {
-    m.value = values.front();
-    m.text = "lowest " + FormatNumber(m.value) + over;
-  } else if (highest) {
-    m.value = values.back();
-    m.text = "widest " + FormatNumber(m.value) + unit + over;
+  switch (q.pick) {
+    case Pick::kLowest: m.value = values.front(), m.text = "lowest "; break;
+    case Pick::kWidest: m.value = values.back(), m.text = "widest "; break;
+    case Pick::kMedian: m.value = MedianWithInterval(values).median, m.text = "median "; break;
   }
+  m.text += FormatNumber(m.value) + q.unit + over;
   return m;
 }
 

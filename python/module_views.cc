@@ -157,11 +157,7 @@ py::tuple ContractSighting(const PyView& v, std::size_t i, int landmark, const p
   if (info.contractor == nullptr) throw py::value_error("'" + algorithm + "' is not a CSP contractor");
   Box box = BoxFromBounds(lo, hi, 3);
   if (!box.IsEmpty()) {
-    ConstraintSystem csp;
-    Expr x = csp.AddVariable("x", box[0]);
-    Expr y = csp.AddVariable("y", box[1]);
-    Expr theta = csp.AddVariable("theta", box[2]);
-    AddPolarSighting(csp, x, y, theta, l->x, l->y, view.observations[i]);
+    const ConstraintSystem csp = PoseSighting(l->x, l->y, view.observations[i], box);
     py::gil_scoped_release release;
     ContractContext context;
     info.contractor({}, csp)->Contract(box, context);

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <map>
-#include <set>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -111,9 +110,10 @@ class LandmarkTracker : public Estimator {
   // when the box stays non-empty.
   bool TryMatch(StepCsp& s, const PolarObservation& o, const TypedLandmark& l,
                 const StopCondition& stop);
-  // The return track t follows, -1 for none (§3.5).
+  // The return track t follows, -1 for none (§3.5), among the returns not
+  // associated yet (associations[i] < 0).
   int Follow(StepCsp& s, const Track& t, const std::vector<PolarObservation>& observations,
-             const std::vector<bool>& matched, const StopCondition& stop);
+             const std::vector<int>& associations, const StopCondition& stop);
 
   const TypedLandmark& Landmark(int id) const { return (*map_)[index_of_.at(id)]; }
 
@@ -147,12 +147,12 @@ bool LandmarkTracker::TryMatch(StepCsp& s, const PolarObservation& o, const Type
 
 int LandmarkTracker::Follow(StepCsp& s, const Track& t,
                             const std::vector<PolarObservation>& observations,
-                            const std::vector<bool>& matched, const StopCondition& stop) {
+                            const std::vector<int>& associations, const StopCondition& stop) {
   const Box pose = PoseOf(s.box, s.pose);
   std::vector<int> frame;
   std::vector<double> overlap;
   for (int i = 0; i < static_cast<int>(observations.size()); ++i) {
-    if (matched[i] || observations[i].type != t.type) continue;
+    if (associations[i] >= 0 || observations[i].type != t.type) continue;
     frame.push_back(i);
     overlap.push_back(OverlapPercent(SightingWorldBox(pose, observations[i]), t.box));
   }
@@ -206,20 +206,19 @@ StepResult LandmarkTracker::Step(const Views& views, const StopCondition& stop) 
   }
   started_ = true;
 
-  std::vector<bool> matched(n, false);
-  std::vector<int> associations(n, -1);
-  std::set<int> matched_landmarks;
+  std::vector<int> associations(n, -1);  // the landmark of each return, -1 none yet
   auto accept = [&](int i, int landmark) {
-    matched[i] = true;
     associations[i] = landmark;
-    matched_landmarks.insert(landmark);
     return SightingWorldBox(PoseOf(s.box, s.pose), observations[i]);
+  };
+  auto associated = [&](int landmark) {
+    return std::find(associations.begin(), associations.end(), landmark) != associations.end();
   };
 
   // Following the tracks (§3.5).
   if (!s.box.IsEmpty()) {
     for (Track& t : tracks_) {
-      const int i = Follow(s, t, observations, matched, stop);
+      const int i = Follow(s, t, observations, associations, stop);
       if (i < 0) {
         ++t.missed;
         continue;
@@ -233,10 +232,10 @@ StepResult LandmarkTracker::Step(const Views& views, const StopCondition& stop) 
   // Starting tracks (§3.4): the landmarks of the return's type inside its
   // world box, in map order, the first consistent one.
   for (int i = 0; i < n && !s.box.IsEmpty(); ++i) {
-    if (matched[i]) continue;
+    if (associations[i] >= 0) continue;
     const WorldBox world = SightingWorldBox(PoseOf(s.box, s.pose), observations[i]);
     for (const TypedLandmark& l : *map_) {
-      if (l.type != observations[i].type || matched_landmarks.count(l.id) != 0) continue;
+      if (l.type != observations[i].type || associated(l.id)) continue;
       if (!world[0].Contains(l.x) || !world[1].Contains(l.y)) continue;
       if (!TryMatch(s, observations[i], l, stop)) continue;
       const WorldBox box = accept(i, l.id);
@@ -259,8 +258,8 @@ StepResult LandmarkTracker::Step(const Views& views, const StopCondition& stop) 
   result.summary.work = work_;
   result.properties = WorkProperties(work_);
   result.properties.push_back({"tracks", static_cast<std::int64_t>(tracks_.size())});
-  result.properties.push_back(
-      {"matched", static_cast<std::int64_t>(std::count(matched.begin(), matched.end(), true))});
+  const auto unmatched = std::count(associations.begin(), associations.end(), -1);
+  result.properties.push_back({"matched", static_cast<std::int64_t>(n - unmatched)});
   result.properties.push_back({"cancelled_matches", static_cast<std::int64_t>(cancelled_)});
   result.associations = std::move(associations);
   if (pose_.IsEmpty()) result.summary.status = ContractStatus::kEmpty;

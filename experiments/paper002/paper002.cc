@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numbers>
 
+#include "experiments/thesis003/guarantee_columns.h"
 #include "harness/spec.h"
 #include "problems/indoor_landmarks/indoor_map.h"
 
@@ -32,10 +34,6 @@ bool IsIndoorRun(const RunRecord& run) {
   return run.spec.problem == kProblem && ExperimentOf(run).rfind(kPaper002Experiment, 0) == 0;
 }
 
-double Property(const RunRecord& run, const std::string& name) {
-  return NumberProperty(run.properties, name).value_or(kNaN);
-}
-
 // The summed property over a group's ok runs; NaN when none has it.
 double Total(const GroupSummary& g, const std::string& name) {
   double total = 0;
@@ -45,32 +43,39 @@ double Total(const GroupSummary& g, const std::string& name) {
   return any ? total : kNaN;
 }
 
-std::string Median(const GroupSummary& g, double (*of)(const IndoorRunStats&), double scale = 1) {
-  return FormatWithInterval(RunMedian(g, [&](const RunRecord& r) { return of(IndoorStats(r)); }),
-                            scale);
+// Each run's IndoorStats, computed once for the table's columns.
+class StatsCache {
+ public:
+  const IndoorRunStats& Of(const RunRecord& run) {
+    auto it = stats_.find(&run);
+    if (it == stats_.end()) it = stats_.emplace(&run, IndoorStats(run)).first;
+    return it->second;
+  }
+
+ private:
+  std::map<const RunRecord*, IndoorRunStats> stats_;
+};
+
+std::string Median(const GroupSummary& g, StatsCache& cache, double (*of)(const IndoorRunStats&)) {
+  return FormatWithInterval(RunMedian(g, [&](const RunRecord& r) { return of(cache.Of(r)); }));
 }
 
-// Consistency over the steps whose assumption held (every association so
-// far right): "share (steps)".
-std::string ConsistencyWhileRight(const GroupSummary& g) {
-  int held = 0, contained = 0;
-  for (const RunRecord* r : g.ok_runs)
-    for (const StepRecord& s : r->steps)
-      if (IntProperty(s.properties, "assumption_held").value_or(0) == 1)
-        ++held, contained += s.contained == 1;
-  if (held == 0) return "—";
-  return FormatNumber(100.0 * contained / held) + " (" + std::to_string(held) + ")";
+// Consistency over the steps whose assumption held (for landmark tracking:
+// every association so far right): "share (steps)".
+std::string ConsistencyWhereHeld(const GroupSummary& g) {
+  const GuaranteeSummary guarantee = SummariseGuarantee(g);
+  if (guarantee.held == 0) return "—";
+  return FormatNumber(100 * guarantee.ConsistencyWhereHeld()) + " (" +
+         std::to_string(guarantee.held) + ")";
 }
 
-// The groups of indoor runs with an ok run, in SummariseGroups' order; they
-// point into `indoor`, which must outlive them.
-std::vector<GroupSummary> IndoorGroups(const std::vector<RunRecord>& runs,
-                                       std::vector<RunRecord>* indoor) {
-  for (const RunRecord& r : runs)
-    if (IsIndoorRun(r)) indoor->push_back(r);
+// The configurations with an ok run of the indoor experiments.
+std::vector<GroupSummary> IndoorGroups(const std::vector<RunRecord>& runs) {
   std::vector<GroupSummary> groups;
-  for (GroupSummary& g : SummariseGroups(*indoor))
-    if (g.ok > 0) groups.push_back(std::move(g));
+  for (GroupSummary& g : SummariseGroups(runs))
+    if (g.problem == kProblem && std::any_of(g.ok_runs.begin(), g.ok_runs.end(),
+                                             [](const RunRecord* r) { return IsIndoorRun(*r); }))
+      groups.push_back(std::move(g));
   return groups;
 }
 
@@ -95,15 +100,17 @@ TextTable AccuracyTable(const std::vector<GroupSummary>& groups) {
   table.numeric = {false, false, true, true, true, true, true, true, true, true};
   table.wrap_cm = {kConfigurationCm};
   table.omit_if_empty = true;
+  StatsCache stats;
   for (const GroupSummary& g : groups) {
     std::vector<std::string> row = Configuration(g);
     row.insert(row.end(),
                {OkRunsCell(g), FormatNumber(100 * g.metrics.consistency_rate),
-                ConsistencyWhileRight(g), Median(g, [](const IndoorRunStats& s) { return s.widest_x; }),
-                Median(g, [](const IndoorRunStats& s) { return s.widest_y; }),
-                Median(g, [](const IndoorRunStats& s) { return s.widest_theta_deg; }),
-                Median(g, [](const IndoorRunStats& s) { return s.position_error; }),
-                Median(g, [](const IndoorRunStats& s) { return s.heading_error_deg; })});
+                ConsistencyWhereHeld(g),
+                Median(g, stats, [](const IndoorRunStats& s) { return s.widest_x; }),
+                Median(g, stats, [](const IndoorRunStats& s) { return s.widest_y; }),
+                Median(g, stats, [](const IndoorRunStats& s) { return s.widest_theta_deg; }),
+                Median(g, stats, [](const IndoorRunStats& s) { return s.position_error; }),
+                Median(g, stats, [](const IndoorRunStats& s) { return s.heading_error_deg; })});
     table.rows.push_back(std::move(row));
   }
   if (table.rows.empty()) {
@@ -241,8 +248,7 @@ IndoorRunStats IndoorStats(const RunRecord& run) {
 }
 
 std::vector<TextTable> Paper002Tables(const std::vector<RunRecord>& runs) {
-  std::vector<RunRecord> indoor;
-  const std::vector<GroupSummary> groups = IndoorGroups(runs, &indoor);
+  const std::vector<GroupSummary> groups = IndoorGroups(runs);
   return {AccuracyTable(groups), AssociationTable(groups)};
 }
 

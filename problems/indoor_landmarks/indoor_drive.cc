@@ -68,8 +68,9 @@ std::vector<Motion> PaperPath(int steps, double turn) {
   return motions;
 }
 
-bool Free(const IndoorMap& map, double x, double y) {
-  const Box bounds = map.Bounds();
+// Whether (x, y) lies within the map's bounds (map.Bounds(), computed once
+// by the caller) and kWallMargin or more from every wall.
+bool Free(const IndoorMap& map, const Box& bounds, double x, double y) {
   return bounds[0].Contains(x) && bounds[1].Contains(y) && DistanceToWalls(map, x, y) >= kWallMargin;
 }
 
@@ -78,6 +79,7 @@ bool Free(const IndoorMap& map, double x, double y) {
 // come within kWallMargin of a wall or cross one.
 std::vector<Motion> RandomPath(const IndoorMap& map, int steps, double x, double y, double heading,
                                RandomEngine& rng) {
+  const Box bounds = map.Bounds();
   std::vector<Motion> motions;
   for (int k = 1; k < steps; ++k) {
     const double wander = UniformReal(rng, -kMaxWander, kMaxWander);
@@ -87,7 +89,7 @@ std::vector<Motion> RandomPath(const IndoorMap& map, int steps, double x, double
       Motion m{kStepLength, wander + extra};
       double nx = x, ny = y, nh = heading;
       Move(nx, ny, nh, m);
-      if (Free(map, nx, ny) && !CrossesWall(map, x, y, nx, ny)) {
+      if (Free(map, bounds, nx, ny) && !CrossesWall(map, x, y, nx, ny)) {
         chosen = m;
         break;
       }
@@ -167,7 +169,7 @@ double StartY(const IndoorLandmarksParams& p) { return p.path == "b" ? 1.15 : 0.
 }  // namespace
 
 void CheckIndoorStart(const IndoorLandmarksParams& p, const IndoorMap& map) {
-  if (!Free(map, kStartX, StartY(p)))
+  if (!Free(map, map.Bounds(), kStartX, StartY(p)))
     throw ParamError("indoor-landmarks.map: the start (" + FormatDouble(kStartX) + ", " +
                      FormatDouble(StartY(p)) + ") of path " + p.path + " is off the map or within " +
                      FormatDouble(kWallMargin) + " m of a wall");

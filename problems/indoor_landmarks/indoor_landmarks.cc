@@ -47,14 +47,10 @@ std::shared_ptr<Contractor> AnyLandmarkOfItsType(const IndoorMap& map,
   SharedContractors candidates;
   for (const TypedLandmark& l : map.landmarks) {
     if (l.type != observation.type) continue;
-    ConstraintSystem csp;
-    Expr x = csp.AddVariable("x", Interval());
-    Expr y = csp.AddVariable("y", Interval());
-    Expr theta = csp.AddVariable("theta", Interval());
-    AddPolarSighting(csp, x, y, theta, l.x, l.y, observation);
     candidates.push_back(std::make_shared<FixpointContractor>(
-        std::make_shared<SequenceContractor>(ConstraintContractors(csp)), kSightingRatio,
-        kSightingIterations));
+        std::make_shared<SequenceContractor>(
+            ConstraintContractors(PoseSighting(l.x, l.y, observation, Box(3)))),
+        kSightingRatio, kSightingIterations));
   }
   return std::make_shared<UnionContractor>(std::move(candidates));
 }
@@ -64,15 +60,15 @@ class IndoorLandmarksProblem : public Problem {
   IndoorLandmarksProblem(const IndoorLandmarksParams& params, IndoorMap map,
                          std::vector<IndoorRecord> records)
       : params_(params),
-        map_(std::move(map)),
-        landmarks_(std::make_shared<const std::vector<TypedLandmark>>(map_.landmarks)),
+        map_(std::make_shared<const IndoorMap>(std::move(map))),
+        landmarks_(map_, &map_->landmarks),  // the view's map: the same landmarks
         records_(std::move(records)) {
     const IndoorRecord& first = records_[0];
     start_ = Box({Interval(first.x) + Interval(-params_.start_error, params_.start_error),
                   Interval(first.y) + Interval(-params_.start_error, params_.start_error),
                   Interval(first.heading) +
                       Interval(-params_.start_heading_error, params_.start_heading_error)});
-    const Box bounds = map_.Bounds();
+    const Box bounds = map_->Bounds();
     anywhere_ = Box({bounds[0], bounds[1], kAnyHeading});
   }
   std::string_view Name() const override { return "indoor-landmarks"; }
@@ -83,7 +79,7 @@ class IndoorLandmarksProblem : public Problem {
   ProbabilisticView Probabilistic(int k) const;
 
   IndoorLandmarksParams params_;
-  IndoorMap map_;
+  std::shared_ptr<const IndoorMap> map_;
   std::shared_ptr<const std::vector<TypedLandmark>> landmarks_;
   std::vector<IndoorRecord> records_;
   Box start_, anywhere_;
@@ -111,7 +107,7 @@ bool IndoorLandmarksProblem::Next(Step* step) {
   MeasurementSetView set;
   set.prior = k == 0 ? start_ : anywhere_;
   for (const PolarObservation& o : r.observations) {
-    set.measurements.push_back(AnyLandmarkOfItsType(map_, o));
+    set.measurements.push_back(AnyLandmarkOfItsType(*map_, o));
     Box at_truth({Interval(r.x), Interval(r.y), Interval(r.heading)});
     ContractContext context;
     set.measurements.back()->Contract(at_truth, context);
