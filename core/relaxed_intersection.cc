@@ -193,6 +193,47 @@ double FirstCovered(const Bounds& b, const std::vector<int>& live, std::size_t d
   }
   return downward ? -kInf : kInf;
 }
+// The hull when at most one live box may be left out (spare = live boxes -
+// need, 0 or 1), in O(m n) instead of a sweep: with none spare it is the
+// intersection of the live boxes; with one, the hull over i of the
+// intersection of all but box i (prefix and suffix intersections). The
+// fixpoints of the relaxed solvers mostly land here: once the outliers'
+// boxes are empty, the inliers left are exactly the m - q needed.
+Box FewSpare(const Bounds& b, const std::vector<int>& live, int spare) {
+  const std::size_t n = b.n, k = live.size();
+  Box out(n);
+  out.SetEmpty();
+  // prefix[j * n + d]: the intersection of live boxes 0..j-1 along d;
+  // suffix[j * n + d]: that of boxes j..k-1.
+  thread_local std::vector<double> pre_lo, pre_hi, suf_lo, suf_hi;
+  pre_lo.assign((k + 1) * n, -kInf);
+  pre_hi.assign((k + 1) * n, kInf);
+  suf_lo.assign((k + 1) * n, -kInf);
+  suf_hi.assign((k + 1) * n, kInf);
+  for (std::size_t j = 0; j < k; ++j)
+    for (std::size_t d = 0; d < n; ++d) {
+      pre_lo[(j + 1) * n + d] = std::max(pre_lo[j * n + d], b.Lo(live[j], d));
+      pre_hi[(j + 1) * n + d] = std::min(pre_hi[j * n + d], b.Hi(live[j], d));
+      const std::size_t r = k - 1 - j;
+      suf_lo[r * n + d] = std::max(suf_lo[(r + 1) * n + d], b.Lo(live[r], d));
+      suf_hi[r * n + d] = std::min(suf_hi[(r + 1) * n + d], b.Hi(live[r], d));
+    }
+  auto add_if_nonempty = [&](auto lo_at, auto hi_at) {
+    for (std::size_t d = 0; d < n; ++d)
+      if (lo_at(d) > hi_at(d)) return;
+    for (std::size_t d = 0; d < n; ++d) out[d] = Hull(out[d], Interval(lo_at(d), hi_at(d)));
+  };
+  if (spare == 0) {
+    add_if_nonempty([&](std::size_t d) { return pre_lo[k * n + d]; }, [&](std::size_t d) { return pre_hi[k * n + d]; });
+  } else {
+    for (std::size_t i = 0; i < k; ++i)
+      add_if_nonempty(
+          [&](std::size_t d) { return std::max(pre_lo[i * n + d], suf_lo[(i + 1) * n + d]); },
+          [&](std::size_t d) { return std::min(pre_hi[i * n + d], suf_hi[(i + 1) * n + d]); });
+  }
+  if (out.IsEmpty()) out.SetEmpty();
+  return out;
+}
 }  // namespace
 
 Interval RelaxedIntersection(std::span<const Interval> intervals, int q) {
@@ -249,6 +290,8 @@ Box RelaxedIntersection(std::span<const Box> boxes, int q, std::size_t n) {
     out.SetEmpty();
     return out;
   }
+  const int spare = static_cast<int>(live.size()) - need;
+  if (spare <= 1) return FewSpare(b, live, spare);
   if (n == 1) {
     std::vector<Interval> xs;
     for (int i : live) xs.push_back(boxes[i][0]);

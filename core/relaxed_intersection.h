@@ -27,7 +27,8 @@ Interval RelaxedIntersection(std::span<const Interval> intervals, int q);
 // dimension n (an empty box holds no point). Each bound is found by a sweep
 // along its dimension that stops at the first box bound where m - q boxes
 // share a point: O(m log m) per bound for n = 2 (a max-add segment tree over
-// the other coordinate), O(m^(n-1) log m) for larger n. With m = 0 or
+// the other coordinate), O(m^(n-1) log m) for larger n; O(m n) when at
+// most one of the non-empty boxes may be left out. With m = 0 or
 // q >= m, the entire space of dimension n; q < 0 is std::invalid_argument.
 Box RelaxedIntersection(std::span<const Box> boxes, int q, std::size_t n);
 
