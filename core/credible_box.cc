@@ -82,38 +82,50 @@ class Tails {
       : m_(std::min(n, 8 + 2 * static_cast<std::size_t>(std::ceil(tail * static_cast<double>(n))))),
         tail_(tail) {}
 
-  // Keeps the m_ least and the m_ greatest of value[i * stride] over the
-  // particles i in `positive` (those of positive weight; reordered), ties in
-  // the order of i, each in its order: std::nth_element, then a sort of the
-  // few, so O(n + m_ log m_). (Inserting each value into the kept ones in
-  // turn was quadratic: m_ grows with n.)
+  // Keeps the m_ least and the m_ greatest (value, weight) pairs of
+  // value[i * stride] over the particles i in `positive` (those of positive
+  // weight), each in its order. For few kept (a
+  // filter's cloud: m_ is 20 for 600 particles and 3 components), one pass
+  // that inserts into the kept pairs only what beats the last of them: most
+  // values are rejected by one comparison. For many, std::nth_element then
+  // a sort of the few, O(n + m_ log m_) (insertion is O(n m_) at worst, and
+  // m_ grows with n).
   void Select(const double* value, std::size_t stride, const std::vector<double>& weights,
-              std::vector<std::uint32_t>& positive) {
+              const std::vector<std::uint32_t>& positive) {
+    constexpr std::size_t kInsertAtMost = 64;
     count_ = positive.size();
-    auto at = [&](std::uint32_t i) { return value[i * stride]; };
     // A strict weak order whatever the values: NaN after every number.
-    auto less = [&](std::uint32_t a, std::uint32_t b) {
-      const double va = at(a), vb = at(b);
-      if (va < vb) return true;
-      if (vb < va) return false;
-      const bool na = std::isnan(va), nb = std::isnan(vb);
-      return na != nb ? nb : a < b;
+    auto less = [](const auto& a, const auto& b) {
+      return a.first < b.first || (std::isnan(b.first) && !std::isnan(a.first));
     };
-    auto greater = [&](std::uint32_t a, std::uint32_t b) {
-      const double va = at(a), vb = at(b);
-      if (va > vb) return true;
-      if (vb > va) return false;
-      const bool na = std::isnan(va), nb = std::isnan(vb);
-      return na != nb ? nb : a < b;
+    auto greater = [](const auto& a, const auto& b) {
+      return a.first > b.first || (std::isnan(b.first) && !std::isnan(a.first));
     };
+    const std::size_t k = std::min(m_, positive.size());
+    low_.clear();
+    high_.clear();
+    if (m_ <= kInsertAtMost) {
+      auto insert = [k](auto before, std::vector<std::pair<double, double>>& kept, const auto& p) {
+        if (kept.size() == k) {
+          if (!before(p, kept.back())) return;
+          kept.pop_back();
+        }
+        kept.insert(std::upper_bound(kept.begin(), kept.end(), p, before), p);
+      };
+      for (std::uint32_t i : positive) {
+        const std::pair<double, double> p(value[i * stride], weights[i]);
+        insert(less, low_, p);
+        insert(greater, high_, p);
+      }
+      return;
+    }
+    pairs_.clear();
+    for (std::uint32_t i : positive) pairs_.emplace_back(value[i * stride], weights[i]);
     auto keep = [&](auto before, std::vector<std::pair<double, double>>& kept) {
-      const std::size_t k = std::min(m_, positive.size());
-      if (k < positive.size())
-        std::nth_element(positive.begin(), positive.begin() + static_cast<std::ptrdiff_t>(k),
-                         positive.end(), before);
-      std::sort(positive.begin(), positive.begin() + static_cast<std::ptrdiff_t>(k), before);
-      kept.clear();
-      for (std::size_t j = 0; j < k; ++j) kept.emplace_back(at(positive[j]), weights[positive[j]]);
+      const auto end = pairs_.begin() + static_cast<std::ptrdiff_t>(k);
+      if (k < pairs_.size()) std::nth_element(pairs_.begin(), end, pairs_.end(), before);
+      std::sort(pairs_.begin(), end, before);
+      kept.assign(pairs_.begin(), end);
     };
     keep(less, low_);
     keep(greater, high_);
@@ -158,7 +170,7 @@ class Tails {
   std::size_t m_;
   double tail_;
   std::size_t count_ = 0;
-  std::vector<std::pair<double, double>> low_, high_;
+  std::vector<std::pair<double, double>> pairs_, low_, high_;
 };
 
 }  // namespace

@@ -67,12 +67,6 @@ pid_t RankProcess(pid_t mpirun, int rank) {
   return found.empty() ? -1 : found[0];
 }
 
-int WaitExit(pid_t pid) {
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
-
 // The exit code of pid within seconds, or nullopt (pid killed, with the
 // ranks of its job) when it does not end by then.
 std::optional<int> WaitExitWithin(pid_t pid, double seconds) {
@@ -255,7 +249,11 @@ TEST(MpiSweepTest, AKilledRankZeroLeavesAStoreThatARerunCompletes) {
   const pid_t rank0 = RankProcess(mpirun, 0);
   ASSERT_GT(rank0, 0);
   kill(rank0, SIGKILL);
-  EXPECT_NE(WaitExit(mpirun), 0);  // Open MPI ends the job
+  // Open MPI ends the job (or, as after SIGTERM below, its mpiexec is killed
+  // when it hangs on its ranks).
+  if (const std::optional<int> exited = WaitExitWithin(mpirun, 60)) {
+    EXPECT_NE(*exited, 0);
+  }
   const std::size_t kept = RunsByKey(dir, false).size();
   EXPECT_GE(kept, 2u);
   EXPECT_LT(kept, 6u);
@@ -272,7 +270,12 @@ TEST(MpiSweepTest, SigtermToMpirunKeepsTheFinishedRunsAndSaysSo) {
   ASSERT_TRUE(testing::WaitFor([&] { return ReadFile(log).find("[1/6]") != std::string::npos; }, 20))
       << ReadFile(log);
   kill(mpirun, SIGTERM);
-  EXPECT_NE(WaitExit(mpirun), 0);
+  // Open MPI's mpiexec now and then never reaps its ranks after passing
+  // SIGTERM on (seen 2026-12-07: the ranks zombies, their output complete,
+  // mpiexec asleep): it is killed then, and what the ranks wrote is checked.
+  if (const std::optional<int> exited = WaitExitWithin(mpirun, 60)) {
+    EXPECT_NE(*exited, 0);
+  }
   const std::string out = ReadFile(log);
   EXPECT_NE(out.find("runs in flight were stopped"), std::string::npos) << out;
   const std::size_t kept = RunsByKey(dir, false).size();

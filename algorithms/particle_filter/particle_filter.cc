@@ -217,6 +217,37 @@ class ParticleFilter : public Estimator {
                       [&](const tbb::blocked_range<std::size_t>& range) { weigh(range.begin(), range.end()); });
   }
 
+  // The mean of periodic component c: in the chart of the previous centre
+  // `reference` (each particle's offset from it wrapped into half a period)
+  // when the cloud lies within a small arc of it, where that mean and the
+  // circular one agree to second order in the spread; else the circular
+  // mean (atan2 of the mean sine and cosine), in the frame of reference.
+  // The chart needs no sine or cosine per particle.
+  double PeriodicMean(int c, double period, const std::vector<double>& w, double reference) const {
+    constexpr double kChartSpread = 1.0 / 16;  // the chart's largest standard deviation, in periods
+    const std::size_t n = particles_.size();
+    double offset = 0, square = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (w[i] == 0) continue;
+      double delta = particles_[i][c] - reference;
+      if (std::fabs(delta) > period / 2) delta -= period * std::round(delta / period);
+      offset += w[i] * delta;
+      square += w[i] * delta * delta;
+    }
+    if (square - offset * offset < kChartSpread * kChartSpread * period * period) return reference + offset;
+    const double scale = 2 * std::acos(-1.0) / period;
+    double sum_sin = 0, sum_cos = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (w[i] == 0) continue;
+      double sin = 0, cos = 0;
+      ::sincos(scale * particles_[i][c], &sin, &cos);  // glibc: both for the price of one
+      sum_sin += w[i] * sin;
+      sum_cos += w[i] * cos;
+    }
+    const double circular = std::atan2(sum_sin, sum_cos) / scale;
+    return circular + period * std::round((reference - circular) / period);
+  }
+
   // Puts each periodic component within half a period of its circular mean
   // (in the previous centre's frame) and returns the estimate; its
   // statistics go into properties. Two passes over the particles.
@@ -225,31 +256,16 @@ class ParticleFilter : public Estimator {
     const std::size_t n = particles_.size();
     const int d = space.size();
     const auto du = static_cast<std::size_t>(d);
-    std::vector<double> period(du), scale(du), linear(du, 0.0), sum_sin(du, 0.0), sum_cos(du, 0.0);
-    for (int c = 0; c < d; ++c) {
-      period[c] = space.Period(c);
-      scale[c] = period[c] > 0 ? 2 * std::acos(-1.0) / period[c] : 0;
-    }
+    std::vector<double> period(du), linear(du, 0.0);
+    for (int c = 0; c < d; ++c) period[c] = space.Period(c);
     for (std::size_t i = 0; i < n; ++i) {
       if (w[i] == 0) continue;
       const double* row = particles_[i].data();
-      for (int c = 0; c < d; ++c) {
-        linear[c] += w[i] * row[c];
-        if (period[c] > 0) {
-          double sin = 0, cos = 0;
-          ::sincos(scale[c] * row[c], &sin, &cos);  // glibc: both for the price of one
-          sum_sin[c] += w[i] * sin;
-          sum_cos[c] += w[i] * cos;
-        }
-      }
+      for (int c = 0; c < d; ++c) linear[c] += w[i] * row[c];
     }
     std::vector<double> centre = linear;
-    for (int c = 0; c < d; ++c) {
-      if (!(period[c] > 0)) continue;
-      const double circular = std::atan2(sum_sin[c], sum_cos[c]) / scale[c];
-      const double reference = centre_.size() == du ? centre_[c] : linear[c];
-      centre[c] = circular + period[c] * std::round((reference - circular) / period[c]);
-    }
+    for (int c = 0; c < d; ++c)
+      if (period[c] > 0) centre[c] = PeriodicMean(c, period[c], w, centre_.size() == du ? centre_[c] : linear[c]);
     centre_ = centre;
 
     const bool hull = p_.region == "hull";

@@ -20,13 +20,18 @@
 //
 // Periodic components (StateSpace::periods, a heading) are never wrapped by
 // the motion; after each weighing every particle's value is moved by a
-// multiple of the period to lie within half a period of the weighted
-// circular mean, itself put in the frame of the previous step's centre (at
-// the first step, of the values' weighted mean), so the cloud stays in one
-// frame and the statistics below are those of angles.
+// multiple of the period to lie within half a period of the component's
+// mean, in the frame of the previous step's centre (at the first step, of
+// the values' weighted mean), so the cloud stays in one frame and the
+// statistics below are those of angles. The mean: the weighted mean of each
+// particle's offset from that centre, wrapped into half a period, when the
+// offsets' standard deviation is below 1/16 of the period (a concentrated
+// cloud, where it agrees with the circular mean to second order in the
+// spread and needs no sine or cosine per particle); else the weighted
+// circular mean (a spread cloud, a global start).
 //
 // The estimate is a ParticleEstimate: the particles, their normalised
-// weights, the centre (the weighted mean; the circular mean for periodic
+// weights, the centre (the weighted mean; the mean above for periodic
 // components) and the region, the box that stands for the set in the shared
 // metrics (containment, area):
 //   - "95": the credible box at level 0.95 (core/credible_box.h): per
