@@ -13,6 +13,13 @@ stored covered_50. A share above the expected one says the cloud is wider
 than its errors in that component; joint above product says the
 components' errors go together. Headings are compared modulo 2 pi.
 
+And how much one run's covered_50 share can say: its steps are not
+independent (a filter off the truth stays off for a while), so the run's
+effective number of steps, n_eff = steps / (1 + 2 sum of the lag
+autocorrelations of covered_50, up to the first one below 0), and the
+standard deviation of the share a calibrated 50 % box would show over
+n_eff independent steps, sqrt(0.25 / n_eff).
+
     python3 scripts/filter_spread.py results/coverage
 """
 import collections
@@ -22,13 +29,31 @@ import statistics
 import sys
 
 
+def effective_steps(series):
+    """len(series) / (1 + 2 sum of its lag autocorrelations, up to the
+    first one below 0); len(series) for a constant series."""
+    n = len(series)
+    mean = sum(series) / n
+    variance = sum((x - mean) ** 2 for x in series) / n
+    if variance == 0:
+        return float(n)
+    total = 0.0
+    for lag in range(1, n // 2):
+        rho = sum((series[i] - mean) * (series[i + lag] - mean) for i in range(n - lag)) / (n * variance)
+        if rho < 0:
+            break
+        total += rho
+    return n / (1 + 2 * total)
+
+
 def main(directory):
     db = sqlite3.connect(f"file:{directory}/results.sqlite?mode=ro", uri=True)
     runs = db.execute("SELECT id, problem, seed FROM runs WHERE algorithm = 'particle-filter' "
                       "AND status = 'ok' ORDER BY problem, seed").fetchall()
     if not runs:
         sys.exit(f"{directory}: no ok particle-filter run")
-    print("problem\tseed\tsteps\tcovered_50\tjoint\tproduct\texpected\tshare within z sd, per component")
+    print("problem\tseed\tsteps\tcovered_50\tn_eff\tsd at 50 %\tjoint\tproduct\texpected\t"
+          "share within z sd, per component")
     for run_id, problem, seed in runs:
         props = collections.defaultdict(dict)
         for step, name, value in db.execute(
@@ -43,6 +68,7 @@ def main(directory):
         z = statistics.NormalDist().inv_cdf((1 + expected) / 2)
         within = {c: 0 for c in names}
         steps = joint = covered = 0
+        covered_series = [int(props[k].get("covered_50", 0)) for k in sorted(props) if "covered_50" in props[k]]
         for step, p in props.items():
             if any(f"mean_{c}" not in p or truth[step].get(c) is None for c in names):
                 continue
@@ -62,8 +88,9 @@ def main(directory):
             continue
         product = math.prod(within[c] / steps for c in names)
         shares = ", ".join(f"{c} {within[c] / steps:.3f}" for c in names)
-        print(f"{problem}\t{seed}\t{steps}\t{covered / steps:.3f}\t{joint / steps:.3f}\t"
-              f"{product:.3f}\t{expected:.3f}\t{shares}")
+        n_eff = effective_steps(covered_series) if covered_series else float("nan")
+        print(f"{problem}\t{seed}\t{steps}\t{covered / steps:.3f}\t{n_eff:.0f}\t{math.sqrt(0.25 / n_eff):.3f}\t"
+              f"{joint / steps:.3f}\t{product:.3f}\t{expected:.3f}\t{shares}")
 
 
 if __name__ == "__main__":
