@@ -148,7 +148,9 @@ TEST(ArgumentContractorTest, SoundAndMinimalAgainstBruteForce) {
     const std::string where = "trial " + std::to_string(trial);
     if (b.theta.IsEmpty()) {
       // The grid may miss a sliver; then the result is thin or empty.
-      if (!r.theta.IsEmpty()) EXPECT_LT(r.theta.Width(), 1e-2) << where;
+      if (!r.theta.IsEmpty()) {
+        EXPECT_LT(r.theta.Width(), 1e-2) << where;
+      }
       ++emptied;
       continue;
     }
