@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <bit>
-#include <functional>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <utility>
