@@ -285,6 +285,29 @@ TEST(MpiSweepTest, SigtermToMpirunKeepsTheFinishedRunsAndSaysSo) {
   ExpectARerunRunsTheRest(command, dir, kept);
 }
 
+// A rank that SIGKILL or a crash ends leaves its step directory in the
+// temporary directory; the next sweep's worker ranks remove those whose
+// process is gone and leave one whose process lives.
+TEST(MpiSweepTest, StepDirectoriesOfDeadRanksAreRemoved) {
+  const pid_t dead = fork();
+  if (dead == 0) _exit(0);
+  waitpid(dead, nullptr, 0);
+  const std::filesystem::path tmp = std::filesystem::temp_directory_path();
+  const std::filesystem::path stale = tmp / ("icpbench-rank7-" + std::to_string(dead));
+  const std::filesystem::path alive = tmp / ("icpbench-rank7-" + std::to_string(getpid()));
+  std::filesystem::create_directories(stale);
+  std::ofstream(stale / ".steps-1-2.ndjson") << "{}\n";
+  std::filesystem::create_directories(alive);
+  const std::string spec = testing::WriteFile("mpi_small.yaml", "algorithms: [hc4]\nproblems: [chain]\n");
+  const std::string dir = FreshDir("stale_dirs");
+  const testing::Result r = testing::RunCommand(MpiCommand(3, "run " + spec + " --mpi --out " + dir), "");
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(stale));
+  EXPECT_TRUE(std::filesystem::exists(alive));
+  std::filesystem::remove_all(alive);
+  std::filesystem::remove_all(stale);
+}
+
 TEST(MpiSweepTest, ABadSpecIsExitCodeTwoAndNamesTheError) {
   const std::string spec = testing::WriteFile("mpi_bad.yaml", "algorithms: [no-such]\nproblems: [chain]\n");
   const std::string dir = FreshDir("bad");

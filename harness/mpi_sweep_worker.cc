@@ -1,12 +1,16 @@
 // A worker rank of the MPI sweep: tells rank 0 how many runs it takes, runs
 // what it is sent in forked workers and sends each result back.
+#include <signal.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <system_error>
 
 #include "harness/mpi_sweep_internal.h"
@@ -15,14 +19,45 @@
 
 namespace icp::detail {
 
+namespace {
+
+constexpr std::string_view kStepDirPrefix = "icpbench-rank";
+
+// The step directory of a worker rank in the temporary directory: its rank
+// and process id in the name, so ranks sharing a node do not meet.
+std::filesystem::path StepDir(int rank) {
+  return std::filesystem::temp_directory_path() /
+         (std::string(kStepDirPrefix) + std::to_string(rank) + "-" + std::to_string(getpid()));
+}
+
+// Removes the step directories that killed ranks left (a rank removes its
+// own when it ends, but not when SIGKILL or a crash ends it): those named as
+// StepDir names them whose process no longer exists. A directory whose
+// process lives, or that cannot be removed (another user's), stays.
+void RemoveStaleStepDirs() {
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::temp_directory_path(), ec)) {
+    const std::string name = entry.path().filename().string();
+    if (!name.starts_with(kStepDirPrefix)) continue;
+    const std::size_t dash = name.rfind('-');
+    int pid = 0;
+    const char* first = name.data() + dash + 1;
+    const char* last = name.data() + name.size();
+    if (dash == std::string::npos || std::from_chars(first, last, pid).ptr != last || pid <= 0) continue;
+    if (kill(pid, 0) == 0 || errno != ESRCH) continue;
+    std::filesystem::remove_all(entry.path(), ec);
+  }
+}
+
+}  // namespace
+
 WorkerRank::WorkerRank(int rank, const Spec* spec, const RunnerOptions& options,
                        const MpiSweepOptions& mpi)
     : rank_(rank),
       spec_(spec),
       mpi_(mpi),
       jobs_(std::max(1, options.jobs)),
-      step_dir_(std::filesystem::temp_directory_path() /
-                ("icpbench-rank" + std::to_string(rank) + "-" + std::to_string(getpid()))),
+      step_dir_(StepDir(rank)),
       pool_(step_dir_.string(), options.jobs, options.kill_grace_s),
       machine_(CurrentProvenance().machine) {}
 
@@ -33,6 +68,7 @@ WorkerRank::~WorkerRank() {
 }
 
 int WorkerRank::Run(std::string error, bool* peer_lost) {
+  RemoveStaleStepDirs();
   std::error_code ec;
   std::filesystem::create_directories(step_dir_, ec);
   if (error.empty() && ec)
