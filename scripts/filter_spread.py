@@ -48,13 +48,13 @@ def effective_steps(series):
 
 def main(directory):
     db = sqlite3.connect(f"file:{directory}/results.sqlite?mode=ro", uri=True)
-    runs = db.execute("SELECT id, problem, seed FROM runs WHERE algorithm = 'particle-filter' "
-                      "AND status = 'ok' ORDER BY problem, seed").fetchall()
+    runs = db.execute("SELECT id, key FROM runs WHERE algorithm = 'particle-filter' "
+                      "AND status = 'ok' ORDER BY key").fetchall()
     if not runs:
         sys.exit(f"{directory}: no ok particle-filter run")
-    print("problem\tseed\tsteps\tcovered_50\tn_eff\tsd at 50 %\tjoint\tproduct\texpected\t"
+    print("run\tsteps\tcovered_50\tn_eff\tsd at 50 %\tjoint\tproduct\texpected\t"
           "share within z sd, per component")
-    for run_id, problem, seed in runs:
+    for run_id, key in runs:
         props = collections.defaultdict(dict)
         for step, name, value in db.execute(
                 "SELECT step, name, value FROM step_properties WHERE run_id = ?", (run_id,)):
@@ -89,7 +89,7 @@ def main(directory):
         product = math.prod(within[c] / steps for c in names)
         shares = ", ".join(f"{c} {within[c] / steps:.3f}" for c in names)
         n_eff = effective_steps(covered_series) if covered_series else float("nan")
-        print(f"{problem}\t{seed}\t{steps}\t{covered / steps:.3f}\t{n_eff:.0f}\t{math.sqrt(0.25 / n_eff):.3f}\t"
+        print(f"{key}\t{steps}\t{covered / steps:.3f}\t{n_eff:.0f}\t{math.sqrt(0.25 / n_eff):.3f}\t"
               f"{joint / steps:.3f}\t{product:.3f}\t{expected:.3f}\t{shares}")
 
 

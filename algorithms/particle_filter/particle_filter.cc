@@ -27,6 +27,9 @@ void Describe(ParticleFilterParams& p, ParamSet& set) {
   set.Add("inject", &p.inject,
           "share of particles replaced by global-prior draws at each resampling (0: none)",
           Range::Closed(0, 0.5));
+  set.Add("roughen", &p.roughen,
+          "jitter after resampling, in standard deviations of the cloud per component (0: none)",
+          Range::Closed(0, 10));
   set.Add("region", &p.region,
           "the set's box: 95 (the 95 % credible box) or hull (every particle)",
           {"95", "hull"});
@@ -163,6 +166,7 @@ class ParticleFilter : public Estimator {
       ++resamplings_;
       injected = Resample(w, view);
       injected_ += injected;
+      Roughen(views.space.size());
     }
     result.properties.push_back({"resampled", std::int64_t{resample}});
     result.properties.push_back({"reinitialised", std::int64_t{reinitialised}});
@@ -289,6 +293,8 @@ class ParticleFilter : public Estimator {
       }
     }
     if (!hull) region = CredibleBox(cloud, w, kRegionLevel);
+    sd_.resize(du);
+    for (int c = 0; c < d; ++c) sd_[c] = std::sqrt(std::max(0.0, cov[c * d + c]));
     for (int c = 0; c < d; ++c)
       properties->push_back({"mean_" + space.names[c], centre[c]});
     for (int a = 0; a < d; ++a)
@@ -319,12 +325,22 @@ class ParticleFilter : public Estimator {
     return static_cast<std::int64_t>(k);
   }
 
+  // Each particle's first d components moved by a uniform draw of standard
+  // deviation roughen times the cloud's (sd_, of the weighed cloud).
+  void Roughen(int d) {
+    if (!(p_.roughen > 0)) return;
+    const double half_width = std::sqrt(3.0) * p_.roughen;  // uniform on [-a, a]: sd a / sqrt(3)
+    for (State& s : particles_)
+      for (int c = 0; c < d; ++c) s[c] += half_width * sd_[c] * UniformReal(rng_, -1, 1);
+  }
+
   ParticleFilterParams p_;
   RandomEngine rng_;
   std::vector<State> particles_;
   std::vector<State> spare_;
   std::vector<double> log_w_;
   std::vector<double> centre_;  // the previous step's, for the periodic frame
+  std::vector<double> sd_;      // this step's weighted standard deviations, for Roughen
   std::int64_t resamplings_ = 0;
   std::int64_t reinitialisations_ = 0;
   std::int64_t injected_ = 0;

@@ -16,7 +16,8 @@
 //   4. if the effective sample size ESS = 1 / sum w_i^2 (normalised
 //      weights) is below resample_threshold * particles, or the threshold is
 //      1, the cloud is resampled to equal weights, then a share `inject` of
-//      it is replaced by draws of sample_global (none when unset).
+//      it is replaced by draws of sample_global (none when unset), then,
+//      with roughen > 0, every particle jittered (ParticleFilterParams).
 //
 // Periodic components (StateSpace::periods, a heading) are never wrapped by
 // the motion; after each weighing every particle's value is moved by a
@@ -88,6 +89,13 @@ struct ParticleFilterParams {
   // injected particle costs accuracy while it survives; a few per cent
   // suffice to recover in tens of steps.
   double inject = 0.02;
+  // Regularisation after each resampling, >= 0: every particle's
+  // state-space components moved by a uniform draw of standard deviation
+  // roughen times the weighted cloud's in that component (hidden
+  // components are left alone); 0 for none. It keeps a cloud diverse where
+  // a narrow motion model and a box likelihood would leave few distinct
+  // particles (docs/reproduction/thesis003.md, "Particle-filter coverage").
+  double roughen = 0;
   // The box that stands for the set: "95" (the 95 % credible box) or
   // "hull" (every particle of positive weight).
   std::string region = "95";

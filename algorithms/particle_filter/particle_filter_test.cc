@@ -2,9 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <numbers>
 #include <variant>
 
@@ -257,6 +259,42 @@ TEST(ParticleFilterTest, ConcentratedCloudMeanIsTheCircularMeanAcrossTheCut) {
   for (int i = 0; i < estimate.particles().rows; ++i)
     EXPECT_LE(std::fabs(estimate.particles().at<double>(i, 0) - centre), kPi);
   EXPECT_GT(total, 0);
+}
+
+// After a resampling that leaves few distinct particles, roughen jitters
+// each by about roughen times the weighed cloud's spread: the copies part,
+// and stay near where they were.
+TEST(ParticleFilterTest, RoughenPartsTheCopiesOfAResampling) {
+  auto distinct_after_resampling = [](double roughen, double* spread) {
+    StateSpace space;
+    space.names = {"x"};
+    Views first;
+    first.space = space;
+    ProbabilisticView view;
+    view.sample_prior = [](RandomEngine& rng) { return std::vector<double>{UniformReal(rng, 0, 1)}; };
+    // Only the particles in [0.5, 0.52] survive the first weighing.
+    view.log_likelihood = [](const std::vector<double>& s) {
+      return s[0] >= 0.5 && s[0] <= 0.52 ? 0.0 : -std::numeric_limits<double>::infinity();
+    };
+    first.probabilistic = view;
+    Views second = first;
+    second.probabilistic->log_likelihood = [](const std::vector<double>&) { return 0.0; };
+    std::unique_ptr<Estimator> filter = MakeParticleFilter(
+        {{"particles", "500"}, {"inject", "0"}, {"resample_threshold", "1"}, {"roughen", std::to_string(roughen)}}, 5);
+    filter->Step(first, StopCondition());
+    const StepResult r = filter->Step(second, StopCondition());
+    const cv::Mat& cloud = dynamic_cast<const ParticleEstimate&>(*r.estimate).particles();
+    std::vector<double> values(cloud.begin<double>(), cloud.end<double>());
+    *spread = *std::max_element(values.begin(), values.end()) - *std::min_element(values.begin(), values.end());
+    std::sort(values.begin(), values.end());
+    return std::unique(values.begin(), values.end()) - values.begin();
+  };
+  double spread_without = 0, spread_with = 0;
+  EXPECT_LE(distinct_after_resampling(0, &spread_without), 20);  // about 10 survivors, copied
+  EXPECT_LE(spread_without, 0.02);
+  EXPECT_EQ(distinct_after_resampling(0.5, &spread_with), 500);
+  EXPECT_GT(spread_with, spread_without);
+  EXPECT_LT(spread_with, 0.06);  // the survivors' 0.02 widened by about 0.5 of their sd a side
 }
 
 TEST(ParticleFilterTest, EveryParticleImpossibleReinitialisesWithoutNaN) {

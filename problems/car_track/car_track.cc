@@ -41,6 +41,9 @@ void Describe(CarTrackParams& p, ParamSet& set) {
   set.Add("heading_known", &p.heading_known,
           "th[0] is the true heading ± 0.1 rad (else [-pi, pi])");
   set.Add("log", &p.log, "CSV log replacing the simulator (empty: simulate)");
+  set.Add("filter_noise", &p.filter_noise,
+          "the particle filter's noise: bounds (uniform in each interval) or simulator (in its central 0.9)",
+          {"bounds", "simulator"});
 }
 
 void Validate(const CarTrackParams& p, const std::string& owner) {
@@ -51,6 +54,9 @@ void Validate(const CarTrackParams& p, const std::string& owner) {
   if (!(p.radius_error < p.wheel_radius))
     throw ParamError(owner + ".radius_error = " + FormatDouble(p.radius_error) +
                      ": must be below wheel_radius (" + FormatDouble(p.wheel_radius) + ")");
+  if (p.filter_noise == "simulator" && !p.log.empty())
+    throw ParamError(owner + ".filter_noise = simulator: a recorded drive's noise is not the simulator's; "
+                     "use bounds with log");
 }
 
 namespace {

@@ -38,15 +38,17 @@
 //     std::invalid_argument.
 //   - sample_motion: eq. 12 with ds and dth drawn uniformly within the step's
 //     intervals [ds_k] and [dth_k] (the bounded-error motion the CSP states;
-//     the identity at step 0). The heading is not wrapped.
+//     the identity at step 0), or within their central 0.9 with
+//     filter_noise=simulator. The heading is not wrapped.
 //   - log_likelihood: the GPS fix as a bounded-error measurement, uniform
 //     inside its box: 0 inside [x] x [y], -inf outside; 0 for every state
 //     without a fix. The simulator's GPS error is itself uniform (within 0.9
-//     of the half-width), so this is its exact model up to the 0.9; and a
+//     of the half-width), so this is its exact model up to the 0.9
+//     (filter_noise=simulator takes the central 0.9 of the box); and a
 //     positive weight only inside the box keeps a filter's estimate inside
 //     the step's domains, which the harness checks of every estimate.
-//   - sample_global: x and y uniform in the step's GPS box, th uniform in
-//     [-pi, pi]; unset without a fix.
+//   - sample_global: x and y uniform in the step's GPS box (the likelihood's),
+//     th uniform in [-pi, pi]; unset without a fix.
 //
 // Each step with a GPS fix in use is annotated (Step::annotations, stored
 // with the step's properties) with that box: gps_x_lo, gps_x_hi, gps_y_lo,
@@ -110,7 +112,17 @@ struct CarTrackParams {
   // Path of a CSV log (ReadCarTrackLog) that replaces the simulator; empty
   // to simulate.
   std::string log;
+  // The particle filter's noise model (the probabilistic view only; the CSP
+  // keeps the bounds): "bounds", each reading uniform within its interval
+  // and the GPS likelihood its box; "simulator", each within the central
+  // kSimulatorNoiseShare of it, the GPS box too: the simulator's own noise.
+  // "simulator" needs the simulator (no log).
+  std::string filter_noise = "bounds";
 };
+
+// The simulator's noise: every error uniform within this share of its bound,
+// so the truth lies strictly inside every measurement interval.
+constexpr double kSimulatorNoiseShare = 0.9;
 void Describe(CarTrackParams& p, ParamSet& set);
 // Checks every range and what ranges alone cannot (radius_error below
 // wheel_radius); throws ParamError naming owner.field.

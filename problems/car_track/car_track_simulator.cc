@@ -60,7 +60,7 @@ std::vector<CarTrackRecord> SimulateCarTrack(const CarTrackParams& p, std::uint6
   auto unit = [&] { return UniformReal(rng, -1, 1); };
   // Bounded noise: at most 0.9 of each bound, so the truth stays strictly
   // inside every measurement interval and rounding cannot push it out.
-  auto noise = [&](double bound) { return 0.9 * bound * unit(); };
+  auto noise = [&](double bound) { return kSimulatorNoiseShare * bound * unit(); };
 
   const double theta0 = 0.999 * kPi * unit();
   const double speed_phase = kPi * unit();

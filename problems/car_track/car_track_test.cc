@@ -11,6 +11,7 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "core/estimate.h"
@@ -384,6 +385,42 @@ TEST(CarTrackTest, ProbabilisticViewFollowsTheMeasurements) {
     }
     previous = truth;
   }
+}
+
+// filter_noise=simulator: the view keeps the central 0.9 of each interval,
+// the simulator's noise, so the truth still scores 0 and moves within it;
+// a state just inside the GPS box but outside its central 0.9 is impossible.
+// A recorded drive's noise is not the simulator's: refused with a log.
+TEST(CarTrackTest, SimulatorNoiseKeepsTheCentralShareOfEachInterval) {
+  const CarTrackParams defaults;
+  const double e = defaults.gps_error;
+  auto problem = Make({{"steps", "100"}, {"filter_noise", "simulator"}}, 3);
+  RandomEngine rng(1);
+  Step step;
+  std::vector<double> previous;
+  while (problem->Next(&step)) {
+    SCOPED_TRACE("step " + std::to_string(step.views.step));
+    const ProbabilisticView& view = *step.views.probabilistic;
+    const std::vector<double>& truth = step.truth;
+    EXPECT_EQ(view.log_likelihood(truth), 0.0);
+    const double centre_x = (std::get<double>(step.annotations.at(0).value) +
+                             std::get<double>(step.annotations.at(1).value)) / 2;  // gps_x_lo, gps_x_hi
+    const std::vector<double> edge = {centre_x + 0.95 * e, truth[1], truth[2]};
+    EXPECT_EQ(view.log_likelihood(edge), -std::numeric_limits<double>::infinity());
+    for (int i = 0; i < 20; ++i) {
+      const std::vector<double> g = view.sample_global(rng);
+      EXPECT_LE(std::fabs(g[0] - centre_x), 0.9 * e + 1e-9);
+    }
+    if (!previous.empty()) {
+      std::vector<double> moved = previous;
+      view.sample_motion(moved, rng);
+      EXPECT_LT(std::fabs(moved[2] - truth[2]), 2 * 0.9 * defaults.gyro_error + 1e-12);
+    }
+    previous = truth;
+  }
+  const std::string log = std::string(ICPBENCH_CAR_TRACK_DATA) + "/example_log.csv";
+  EXPECT_THROW(Make({{"log", log}, {"filter_noise", "simulator"}}, 1), ParamError);
+  EXPECT_NO_THROW(Make({{"log", log}}, 1));
 }
 
 TEST(CarTrackTest, ProbabilisticPriorWithoutAFixAtTheStartHoldsTheStart) {

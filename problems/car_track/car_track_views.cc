@@ -20,9 +20,18 @@ constexpr double kPi = std::numbers::pi;
 
 double Uniform(RandomEngine& rng, const Interval& x) { return UniformReal(rng, x.lo(), x.hi()); }
 
+// The central share of x (x itself for share 1).
+Interval Central(const Interval& x, double share) {
+  if (share == 1 || !x.IsBounded()) return x;
+  const double mid = x.Mid(), half = share * x.Width() / 2;
+  return Interval(mid - half, mid + half);
+}
+
 // The probabilistic view of a step with measurement m (header comment):
-// prior, the box of state 0; first, whether this is step 0.
-ProbabilisticView CarProbabilisticView(const CarTrackMeasurement& m, const Box& prior, bool first) {
+// prior, the box of state 0; first, whether this is step 0; share, the
+// central share of each reading's interval the noise model keeps.
+ProbabilisticView CarProbabilisticView(const CarTrackMeasurement& m, const Box& prior, bool first,
+                                       double share) {
   ProbabilisticView view;
   view.sample_prior = [prior](RandomEngine& rng) {
     if (!prior[0].IsBounded() || !prior[1].IsBounded())
@@ -35,7 +44,8 @@ ProbabilisticView CarProbabilisticView(const CarTrackMeasurement& m, const Box& 
   if (first) {
     view.sample_motion = [](std::vector<double>&, RandomEngine&) {};
   } else {
-    view.sample_motion = [ds = m.ds, dth = m.dth](std::vector<double>& s, RandomEngine& rng) {
+    view.sample_motion = [ds = Central(m.ds, share), dth = Central(m.dth, share)](std::vector<double>& s,
+                                                                                  RandomEngine& rng) {
       const double d = Uniform(rng, ds);
       const double turn = Uniform(rng, dth);
       const double heading = s[2] + turn / 2;  // eq. 12
@@ -45,12 +55,12 @@ ProbabilisticView CarProbabilisticView(const CarTrackMeasurement& m, const Box& 
     };
   }
   const bool fix = m.x.IsBounded() && m.y.IsBounded();
-  view.log_likelihood = [fix, x = m.x, y = m.y](const std::vector<double>& s) {
+  view.log_likelihood = [fix, x = Central(m.x, share), y = Central(m.y, share)](const std::vector<double>& s) {
     if (!fix || (x.Contains(s[0]) && y.Contains(s[1]))) return 0.0;
     return -std::numeric_limits<double>::infinity();
   };
   if (fix)
-    view.sample_global = [x = m.x, y = m.y](RandomEngine& rng) {
+    view.sample_global = [x = Central(m.x, share), y = Central(m.y, share)](RandomEngine& rng) {
       const double gx = Uniform(rng, x);
       const double gy = Uniform(rng, y);
       return std::vector<double>{gx, gy, UniformReal(rng, -kPi, kPi)};
@@ -78,7 +88,8 @@ bool CarTrackProblem::Next(Step* step) {
   step->views.step = k;
   step->views.space = CarStateSpace();
   step->views.csp = BuildCarWindow(oldest, states);
-  step->views.probabilistic = CarProbabilisticView(measurements_[k], prior_, k == 0);
+  step->views.probabilistic = CarProbabilisticView(measurements_[k], prior_, k == 0,
+                           params_.filter_noise == "simulator" ? kSimulatorNoiseShare : 1.0);
   if (const CarTrackMeasurement& m = measurements_[k]; m.x.IsBounded() && m.y.IsBounded())
     step->annotations = {{"gps_x_lo", m.x.lo()}, {"gps_x_hi", m.x.hi()},
                          {"gps_y_lo", m.y.lo()}, {"gps_y_hi", m.y.hi()}};
