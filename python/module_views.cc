@@ -110,18 +110,16 @@ py::dict MapOf(const PyView& v) {
 py::dict ReturnsOf(const PyView& v) {
   const LandmarkObservationView& view = ObservationsOf(v);
   std::vector<int> type;
-  std::vector<double> range_lo, range_hi, bearing_lo, bearing_hi;
+  std::vector<Interval> range, bearing;
   for (const PolarObservation& o : view.observations) {
     type.push_back(o.type);
-    range_lo.push_back(o.range.lo());
-    range_hi.push_back(o.range.hi());
-    bearing_lo.push_back(o.bearing.lo());
-    bearing_hi.push_back(o.bearing.hi());
+    range.push_back(o.range);
+    bearing.push_back(o.bearing);
   }
   py::dict out;
   out["type"] = py::array_t<int>(static_cast<py::ssize_t>(type.size()), type.data());
-  out["range"] = py::make_tuple(Array(range_lo), Array(range_hi));
-  out["bearing"] = py::make_tuple(Array(bearing_lo), Array(bearing_hi));
+  out["range"] = BoundsOf(Box(std::move(range)));
+  out["bearing"] = BoundsOf(Box(std::move(bearing)));
   return out;
 }
 

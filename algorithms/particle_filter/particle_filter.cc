@@ -252,9 +252,10 @@ class ParticleFilter : public Estimator {
     return circular + period * std::round((reference - circular) / period);
   }
 
-  // Puts each periodic component within half a period of its circular mean
-  // (in the previous centre's frame) and returns the estimate; its
-  // statistics go into properties. Two passes over the particles.
+  // Puts each periodic component within half a period of its mean
+  // (PeriodicMean, in the previous centre's frame) and returns the estimate;
+  // its statistics go into properties, the standard deviations into sd_.
+  // Two passes over the particles, and one or two per periodic component.
   std::unique_ptr<Estimate> MakeEstimate(const StateSpace& space, const std::vector<double>& w,
                                          Properties* properties) {
     const std::size_t n = particles_.size();

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "algorithms/particle_filter/particle_filter.h"
-#include "problems/car_track/car_track.h"
+#include "problems/registry.h"
 
 #ifdef ICPBENCH_HAVE_MRPT
 #include "algorithms/particle_filter/mrpt_filter.h"
@@ -19,13 +19,7 @@ namespace icp {
 namespace {
 
 const std::vector<Step>& Drive() {
-  static const std::vector<Step> steps = [] {
-    std::unique_ptr<Problem> problem = MakeCarTrack({{"steps", "500"}}, 1);
-    std::vector<Step> out;
-    Step step;
-    while (problem->Next(&step)) out.push_back(step);
-    return out;
-  }();
+  static const std::vector<Step> steps = ProblemSteps("car-track", {{"steps", "500"}}, 1);
   return steps;
 }
 

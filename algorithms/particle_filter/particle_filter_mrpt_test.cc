@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "algorithms/particle_filter/particle_filter.h"
-#include "problems/car_track/car_track.h"
+#include "problems/registry.h"
 
 #ifdef ICPBENCH_HAVE_MRPT
 #include "algorithms/particle_filter/mrpt_filter.h"
@@ -25,11 +25,7 @@ constexpr int kSteps = 300;
 
 // The steps of one simulated drive (seed), with the truth.
 std::vector<Step> Drive(std::uint64_t seed) {
-  std::unique_ptr<Problem> problem = MakeCarTrack({{"steps", std::to_string(kSteps)}}, seed);
-  std::vector<Step> steps;
-  Step step;
-  while (problem->Next(&step)) steps.push_back(step);
-  return steps;
+  return ProblemSteps("car-track", {{"steps", std::to_string(kSteps)}}, seed);
 }
 
 double Error(const std::vector<double>& centre, const std::vector<double>& truth) {

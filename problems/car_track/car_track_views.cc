@@ -55,12 +55,13 @@ ProbabilisticView CarProbabilisticView(const CarTrackMeasurement& m, const Box& 
     };
   }
   const bool fix = m.x.IsBounded() && m.y.IsBounded();
-  view.log_likelihood = [fix, x = Central(m.x, share), y = Central(m.y, share)](const std::vector<double>& s) {
+  const Interval gps_x = Central(m.x, share), gps_y = Central(m.y, share);
+  view.log_likelihood = [fix, x = gps_x, y = gps_y](const std::vector<double>& s) {
     if (!fix || (x.Contains(s[0]) && y.Contains(s[1]))) return 0.0;
     return -std::numeric_limits<double>::infinity();
   };
   if (fix)
-    view.sample_global = [x = Central(m.x, share), y = Central(m.y, share)](RandomEngine& rng) {
+    view.sample_global = [x = gps_x, y = gps_y](RandomEngine& rng) {
       const double gx = Uniform(rng, x);
       const double gy = Uniform(rng, y);
       return std::vector<double>{gx, gy, UniformReal(rng, -kPi, kPi)};

@@ -13,12 +13,7 @@ namespace icp {
 namespace {
 
 std::vector<Step> DriveFrom(const std::string& start, int steps, std::uint64_t seed) {
-  auto problem =
-      FindProblem("marina-sonar").make({{"steps", std::to_string(steps)}, {"start", start}}, seed);
-  std::vector<Step> out;
-  Step step;
-  while (problem->Next(&step)) out.push_back(std::move(step));
-  return out;
+  return ProblemSteps("marina-sonar", {{"steps", std::to_string(steps)}, {"start", start}}, seed);
 }
 
 double AreaOf(const Box& b) { return b[0].Width() * b[1].Width(); }
