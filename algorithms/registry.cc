@@ -61,7 +61,7 @@ std::vector<AlgorithmInfo>& Table() {
        &MakeAccumulator, &DefaultParams<AccumulatorParams>, &ResolveParams<AccumulatorParams>,
        View::kMeasurementSet, {"accumulator", 120, "#e83e8c"}},
       {"particle-filter", "particle filter (SIR): systematic resampling, random particles injected, thesis 003 §6.7",
-       &MakeParticleFilter, &DefaultParams<ParticleFilterParams>, &ResolveParams<ParticleFilterParams>,
+       &MakeParticleFilter, &DefaultParams<ParticleFilterParams>, &ResolveParticleFilter,
        View::kProbabilistic, {"particle filter", 200, "#8c6d31"}},
       {"fault", "not an algorithm: injects a crash, hang, exception or bad box (harness tests)",
        &MakeFault, &DefaultParams<FaultParams>, &ResolveParams<FaultParams>, View::kCsp,

@@ -2,7 +2,7 @@
 // chain_windows.h: w = 5, 10, 20, the oldest heading with a prior or cold),
 // for HC4 and 3B-BC4: the numbers issue 32 pins. Each iteration contracts
 // the next of the 12 windows, so the time is the mean over the windows.
-//   build/bench/hc4_windows_benchmark --benchmark_repetitions=5 \
+//   build/bench/hc4_windows_benchmark --benchmark_repetitions=5
 //     --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 

@@ -136,6 +136,13 @@ struct ProbabilisticView {
   // the past ignored), for the particles a filter injects to recover from a
   // wrong convergence (paper 003 §6.7); unset: nothing to inject from.
   std::function<std::vector<double>(RandomEngine&)> sample_global;
+  // The regularisation this model needs, >= 0: after each resampling a
+  // filter moves every particle's state-space components by a uniform draw
+  // of standard deviation roughen times the weighted cloud's in that
+  // component (a narrow motion model with a box likelihood leaves few
+  // distinct particles otherwise); 0 for none. particle-filter's `roughen`
+  // parameter overrides it.
+  double roughen = 0;
 };
 
 // A point landmark of a map with a type (paper 002: corner, edge, other).

@@ -13,7 +13,10 @@
 // zero sum of weights). And one that MRPT 2.5 gets wrong: performResampling
 // resets the weights only for an explicit output count (its loop runs to
 // out_particle_count, 0 by default), so after executeOn the copies would
-// keep their old weights; performSubstitution below resets them.
+// keep their old weights; performSubstitution below resets them. After a
+// resampling the copies are jittered as particle-filter does with the view's
+// roughen (uniform, roughen times the weighted cloud's standard deviation
+// per component), which MRPT's SIR filter does not offer.
 #ifndef ICPBENCH_ALGORITHMS_PARTICLE_FILTER_MRPT_FILTER_H_
 #define ICPBENCH_ALGORITHMS_PARTICLE_FILTER_MRPT_FILTER_H_
 
@@ -67,6 +70,10 @@ class MrptFilter : public MrptParticles,
   void performSubstitution(const std::vector<std::size_t>& indx) override {
     CParticleFilterDataImpl::performSubstitution(indx);
     for (auto& p : m_particles) p.log_w = 0;
+    if (!(view_->roughen > 0)) return;
+    const double half_width = std::sqrt(3.0) * view_->roughen;  // uniform on [-a, a]: sd a / sqrt(3)
+    for (auto& p : m_particles)
+      for (std::size_t c = 0; c < sd_.size(); ++c) p.d[c] += half_width * sd_[c] * UniformReal(rng_, -1, 1);
   }
 
  protected:
@@ -94,13 +101,22 @@ class MrptFilter : public MrptParticles,
       }
     }
     mean_.assign(m_particles.front().d.size(), 0.0);
+    w_.resize(m_particles.size());
     double total = 0;
-    for (const auto& p : m_particles) {
-      const double w = std::exp(p.log_w - top);
-      total += w;
-      for (std::size_t c = 0; c < mean_.size(); ++c) mean_[c] += w * p.d[c];
+    for (std::size_t i = 0; i < m_particles.size(); ++i) {
+      w_[i] = std::exp(m_particles[i].log_w - top);
+      total += w_[i];
+      for (std::size_t c = 0; c < mean_.size(); ++c) mean_[c] += w_[i] * m_particles[i].d[c];
     }
     for (double& m : mean_) m /= total;
+    if (!(view_->roughen > 0)) return;
+    sd_.assign(mean_.size(), 0.0);  // every component: the car has no hidden ones
+    for (std::size_t i = 0; i < m_particles.size(); ++i)
+      for (std::size_t c = 0; c < sd_.size(); ++c) {
+        const double e = m_particles[i].d[c] - mean_[c];
+        sd_[c] += w_[i] / total * e * e;
+      }
+    for (double& v : sd_) v = std::sqrt(v);
   }
 
  private:
@@ -109,6 +125,8 @@ class MrptFilter : public MrptParticles,
   mrpt::bayes::CParticleFilter filter_;
   const ProbabilisticView* view_ = nullptr;
   std::vector<double> mean_;
+  std::vector<double> w_;   // the weights over the largest, for the mean
+  std::vector<double> sd_;  // of the weighted cloud before resampling, for the jitter
 };
 
 }  // namespace icp

@@ -28,8 +28,9 @@ void Describe(ParticleFilterParams& p, ParamSet& set) {
           "share of particles replaced by global-prior draws at each resampling (0: none)",
           Range::Closed(0, 0.5));
   set.Add("roughen", &p.roughen,
-          "jitter after resampling, in standard deviations of the cloud per component (0: none)",
-          Range::Closed(0, 10));
+          "jitter after resampling, in standard deviations of the cloud per component "
+          "(0: none; -1: the problem's, its probabilistic view's)",
+          Range::Closed(kRoughenOfView, 10));
   set.Add("region", &p.region,
           "the set's box: 95 (the 95 % credible box) or hull (every particle)",
           {"95", "hull"});
@@ -166,7 +167,7 @@ class ParticleFilter : public Estimator {
       ++resamplings_;
       injected = Resample(w, view);
       injected_ += injected;
-      Roughen(views.space.size());
+      Roughen(views.space.size(), p_.roughen == kRoughenOfView ? view.roughen : p_.roughen);
     }
     result.properties.push_back({"resampled", std::int64_t{resample}});
     result.properties.push_back({"reinitialised", std::int64_t{reinitialised}});
@@ -327,10 +328,10 @@ class ParticleFilter : public Estimator {
   }
 
   // Each particle's first d components moved by a uniform draw of standard
-  // deviation roughen times the cloud's (sd_, of the weighed cloud).
-  void Roughen(int d) {
-    if (!(p_.roughen > 0)) return;
-    const double half_width = std::sqrt(3.0) * p_.roughen;  // uniform on [-a, a]: sd a / sqrt(3)
+  // deviation h times the cloud's (sd_, of the weighed cloud).
+  void Roughen(int d, double h) {
+    if (!(h > 0)) return;
+    const double half_width = std::sqrt(3.0) * h;  // uniform on [-a, a]: sd a / sqrt(3)
     for (State& s : particles_)
       for (int c = 0; c < d; ++c) s[c] += half_width * sd_[c] * UniformReal(rng_, -1, 1);
   }
@@ -349,9 +350,26 @@ class ParticleFilter : public Estimator {
 
 }  // namespace
 
+namespace {
+
+// What the range of roughen cannot say: -1 or at least 0.
+void CheckRoughen(const std::string& owner, double roughen) {
+  if (roughen < 0 && roughen != kRoughenOfView)
+    throw ParamError(owner + ".roughen = " + FormatDouble(roughen) +
+                     ": must be >= 0, or -1 for the problem's");
+}
+
+}  // namespace
+
+ParamMap ResolveParticleFilter(const std::string& owner, const ParamMap& values) {
+  CheckRoughen(owner, ParseParams<ParticleFilterParams>(owner, values).roughen);
+  return ResolveParams<ParticleFilterParams>(owner, values);
+}
+
 std::unique_ptr<Estimator> MakeParticleFilter(const ParamMap& params, std::uint64_t seed) {
-  return std::make_unique<ParticleFilter>(ParseParams<ParticleFilterParams>("particle-filter", params),
-                                          seed);
+  const auto p = ParseParams<ParticleFilterParams>("particle-filter", params);
+  CheckRoughen("particle-filter", p.roughen);
+  return std::make_unique<ParticleFilter>(p, seed);
 }
 
 }  // namespace icp

@@ -17,7 +17,8 @@
 //      weights) is below resample_threshold * particles, or the threshold is
 //      1, the cloud is resampled to equal weights, then a share `inject` of
 //      it is replaced by draws of sample_global (none when unset), then,
-//      with roughen > 0, every particle jittered (ParticleFilterParams).
+//      every particle jittered when roughen (ParticleFilterParams; by
+//      default the view's) is positive.
 //
 // Periodic components (StateSpace::periods, a heading) are never wrapped by
 // the motion; after each weighing every particle's value is moved by a
@@ -72,6 +73,9 @@
 
 namespace icp {
 
+// ParticleFilterParams::roughen's value for "the probabilistic view's".
+inline constexpr double kRoughenOfView = -1;
+
 struct ParticleFilterParams {
   // Number of particles; time per step is linear in it. The thesis' filter
   // used 600 on the marina; a few hundred track the car with GPS.
@@ -95,7 +99,8 @@ struct ParticleFilterParams {
   // components are left alone); 0 for none. It keeps a cloud diverse where
   // a narrow motion model and a box likelihood would leave few distinct
   // particles (docs/reproduction/thesis003.md, "Particle-filter coverage").
-  double roughen = 0;
+  // kRoughenOfView, the default: the model's own, ProbabilisticView::roughen.
+  double roughen = kRoughenOfView;
   // The box that stands for the set: "95" (the 95 % credible box) or
   // "hull" (every particle of positive weight).
   std::string region = "95";
@@ -115,6 +120,8 @@ std::vector<std::size_t> MultinomialResample(const std::vector<double>& weights,
                                              RandomEngine& rng);
 
 std::unique_ptr<Estimator> MakeParticleFilter(const ParamMap& params, std::uint64_t seed);
+// The registry's resolver: ResolveParams, and roughen -1 or >= 0.
+ParamMap ResolveParticleFilter(const std::string& owner, const ParamMap& values);
 
 }  // namespace icp
 

@@ -263,9 +263,10 @@ TEST(ParticleFilterTest, ConcentratedCloudMeanIsTheCircularMeanAcrossTheCut) {
 
 // After a resampling that leaves few distinct particles, roughen jitters
 // each by about roughen times the weighed cloud's spread: the copies part,
-// and stay near where they were.
+// and stay near where they were. By default the view's roughen; the
+// parameter overrides it (0 too).
 TEST(ParticleFilterTest, RoughenPartsTheCopiesOfAResampling) {
-  auto distinct_after_resampling = [](double roughen, double* spread) {
+  auto distinct_after_resampling = [](std::optional<double> roughen, double view_roughen, double* spread) {
     StateSpace space;
     space.names = {"x"};
     Views first;
@@ -276,11 +277,13 @@ TEST(ParticleFilterTest, RoughenPartsTheCopiesOfAResampling) {
     view.log_likelihood = [](const std::vector<double>& s) {
       return s[0] >= 0.5 && s[0] <= 0.52 ? 0.0 : -std::numeric_limits<double>::infinity();
     };
+    view.roughen = view_roughen;
     first.probabilistic = view;
     Views second = first;
     second.probabilistic->log_likelihood = [](const std::vector<double>&) { return 0.0; };
-    std::unique_ptr<Estimator> filter = MakeParticleFilter(
-        {{"particles", "500"}, {"inject", "0"}, {"resample_threshold", "1"}, {"roughen", std::to_string(roughen)}}, 5);
+    ParamMap params = {{"particles", "500"}, {"inject", "0"}, {"resample_threshold", "1"}};
+    if (roughen) params["roughen"] = std::to_string(*roughen);
+    std::unique_ptr<Estimator> filter = MakeParticleFilter(params, 5);
     filter->Step(first, StopCondition());
     const StepResult r = filter->Step(second, StopCondition());
     const cv::Mat& cloud = dynamic_cast<const ParticleEstimate&>(*r.estimate).particles();
@@ -289,12 +292,18 @@ TEST(ParticleFilterTest, RoughenPartsTheCopiesOfAResampling) {
     std::sort(values.begin(), values.end());
     return std::unique(values.begin(), values.end()) - values.begin();
   };
-  double spread_without = 0, spread_with = 0;
-  EXPECT_LE(distinct_after_resampling(0, &spread_without), 20);  // about 10 survivors, copied
+  double spread_without = 0, spread_with = 0, spread_of_view = 0, spread_overridden = 0;
+  EXPECT_LE(distinct_after_resampling(0.0, 0, &spread_without), 20);  // about 10 survivors, copied
   EXPECT_LE(spread_without, 0.02);
-  EXPECT_EQ(distinct_after_resampling(0.5, &spread_with), 500);
+  EXPECT_EQ(distinct_after_resampling(0.5, 0, &spread_with), 500);
   EXPECT_GT(spread_with, spread_without);
   EXPECT_LT(spread_with, 0.06);  // the survivors' 0.02 widened by about 0.5 of their sd a side
+  EXPECT_EQ(distinct_after_resampling(std::nullopt, 0.5, &spread_of_view), 500);
+  EXPECT_EQ(spread_of_view, spread_with);  // the same draws
+  EXPECT_LE(distinct_after_resampling(0.0, 0.5, &spread_overridden), 20);
+  EXPECT_THROW(MakeParticleFilter({{"roughen", "-0.5"}}, 1), ParamError);
+  EXPECT_THROW(ResolveParticleFilter("particle-filter", {{"roughen", "-0.5"}}), ParamError);
+  EXPECT_EQ(ResolveParticleFilter("particle-filter", {}).at("roughen"), "-1");
 }
 
 TEST(ParticleFilterTest, EveryParticleImpossibleReinitialisesWithoutNaN) {

@@ -42,8 +42,13 @@ void Describe(CarTrackParams& p, ParamSet& set) {
           "th[0] is the true heading ± 0.1 rad (else [-pi, pi])");
   set.Add("log", &p.log, "CSV log replacing the simulator (empty: simulate)");
   set.Add("filter_noise", &p.filter_noise,
-          "the particle filter's noise: bounds (uniform in each interval) or simulator (in its central 0.9)",
-          {"bounds", "simulator"});
+          "the particle filter's noise: bounds (uniform in each interval), simulator (in its central 0.9, "
+          "with regularisation) or auto (simulator without a log, else bounds)",
+          {"auto", "bounds", "simulator"});
+}
+
+bool UsesSimulatorNoise(const CarTrackParams& p) {
+  return p.filter_noise == "simulator" || (p.filter_noise == "auto" && p.log.empty());
 }
 
 void Validate(const CarTrackParams& p, const std::string& owner) {
@@ -56,7 +61,7 @@ void Validate(const CarTrackParams& p, const std::string& owner) {
                      ": must be below wheel_radius (" + FormatDouble(p.wheel_radius) + ")");
   if (p.filter_noise == "simulator" && !p.log.empty())
     throw ParamError(owner + ".filter_noise = simulator: a recorded drive's noise is not the simulator's; "
-                     "use bounds with log");
+                     "use bounds or auto with log");
 }
 
 namespace {

@@ -346,7 +346,8 @@ namespace {
 TEST(CarTrackTest, ProbabilisticViewFollowsTheMeasurements) {
   const CarTrackParams defaults;
   const double e = defaults.gps_error;
-  auto problem = Make({{"steps", "200"}, {"outage_start", "100"}, {"outage_length", "20"}}, 3);
+  auto problem = Make({{"steps", "200"}, {"outage_start", "100"}, {"outage_length", "20"},
+                       {"filter_noise", "bounds"}}, 3);
   RandomEngine rng(1);
   Step step;
   std::vector<double> previous;
@@ -354,6 +355,7 @@ TEST(CarTrackTest, ProbabilisticViewFollowsTheMeasurements) {
     SCOPED_TRACE("step " + std::to_string(step.views.step));
     ASSERT_TRUE(step.views.Offers(View::kProbabilistic));
     const ProbabilisticView& view = *step.views.probabilistic;
+    EXPECT_EQ(view.roughen, 0.0);
     const std::vector<double>& truth = step.truth;
     const bool fix = step.views.step < 100 || step.views.step >= 120;
     EXPECT_EQ(view.log_likelihood(truth), 0.0);
@@ -387,20 +389,23 @@ TEST(CarTrackTest, ProbabilisticViewFollowsTheMeasurements) {
   }
 }
 
-// filter_noise=simulator: the view keeps the central 0.9 of each interval,
-// the simulator's noise, so the truth still scores 0 and moves within it;
-// a state just inside the GPS box but outside its central 0.9 is impossible.
-// A recorded drive's noise is not the simulator's: refused with a log.
+// filter_noise=simulator (the default on a simulated drive): the view keeps
+// the central 0.9 of each interval, the simulator's noise, so the truth
+// still scores 0 and moves within it; a state just inside the GPS box but
+// outside its central 0.9 is impossible; the view asks for the
+// regularisation. A recorded drive's noise is not the simulator's: refused
+// with a log, where auto means bounds.
 TEST(CarTrackTest, SimulatorNoiseKeepsTheCentralShareOfEachInterval) {
   const CarTrackParams defaults;
   const double e = defaults.gps_error;
-  auto problem = Make({{"steps", "100"}, {"filter_noise", "simulator"}}, 3);
+  auto problem = Make({{"steps", "100"}}, 3);
   RandomEngine rng(1);
   Step step;
   std::vector<double> previous;
   while (problem->Next(&step)) {
     SCOPED_TRACE("step " + std::to_string(step.views.step));
     const ProbabilisticView& view = *step.views.probabilistic;
+    EXPECT_EQ(view.roughen, kSimulatorNoiseRoughen);
     const std::vector<double>& truth = step.truth;
     EXPECT_EQ(view.log_likelihood(truth), 0.0);
     const double centre_x = (std::get<double>(step.annotations.at(0).value) +
@@ -420,7 +425,14 @@ TEST(CarTrackTest, SimulatorNoiseKeepsTheCentralShareOfEachInterval) {
   }
   const std::string log = std::string(ICPBENCH_CAR_TRACK_DATA) + "/example_log.csv";
   EXPECT_THROW(Make({{"log", log}, {"filter_noise", "simulator"}}, 1), ParamError);
-  EXPECT_NO_THROW(Make({{"log", log}}, 1));
+  auto recorded = Make({{"log", log}}, 1);
+  ASSERT_TRUE(recorded->Next(&step));
+  ASSERT_TRUE(recorded->Next(&step));
+  EXPECT_EQ(step.views.probabilistic->roughen, 0.0);
+  ASSERT_EQ(step.annotations.size(), 4u);  // gps_x_lo, gps_x_hi, gps_y_lo, gps_y_hi
+  const std::vector<double> corner = {std::get<double>(step.annotations[1].value),
+                                      std::get<double>(step.annotations[2].value), 0.0};
+  EXPECT_EQ(step.views.probabilistic->log_likelihood(corner), 0.0);  // the whole box
 }
 
 TEST(CarTrackTest, ProbabilisticPriorWithoutAFixAtTheStartHoldsTheStart) {

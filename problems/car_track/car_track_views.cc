@@ -29,10 +29,12 @@ Interval Central(const Interval& x, double share) {
 
 // The probabilistic view of a step with measurement m (header comment):
 // prior, the box of state 0; first, whether this is step 0; share, the
-// central share of each reading's interval the noise model keeps.
+// central share of each reading's interval the noise model keeps; roughen,
+// the view's regularisation.
 ProbabilisticView CarProbabilisticView(const CarTrackMeasurement& m, const Box& prior, bool first,
-                                       double share) {
+                                       double share, double roughen) {
   ProbabilisticView view;
+  view.roughen = roughen;
   view.sample_prior = [prior](RandomEngine& rng) {
     if (!prior[0].IsBounded() || !prior[1].IsBounded())
       throw std::invalid_argument(
@@ -89,8 +91,10 @@ bool CarTrackProblem::Next(Step* step) {
   step->views.step = k;
   step->views.space = CarStateSpace();
   step->views.csp = BuildCarWindow(oldest, states);
-  step->views.probabilistic = CarProbabilisticView(measurements_[k], prior_, k == 0,
-                           params_.filter_noise == "simulator" ? kSimulatorNoiseShare : 1.0);
+  const bool simulator_noise = UsesSimulatorNoise(params_);
+  step->views.probabilistic =
+      CarProbabilisticView(measurements_[k], prior_, k == 0, simulator_noise ? kSimulatorNoiseShare : 1.0,
+                           simulator_noise ? kSimulatorNoiseRoughen : 0.0);
   if (const CarTrackMeasurement& m = measurements_[k]; m.x.IsBounded() && m.y.IsBounded())
     step->annotations = {{"gps_x_lo", m.x.lo()}, {"gps_x_hi", m.x.hi()},
                          {"gps_y_lo", m.y.lo()}, {"gps_y_hi", m.y.hi()}};
