@@ -104,10 +104,22 @@ TEST(Thesis003ClaimsTest, TheFiltersCoverageIsPooledOverItsRunsWeightedBySteps) 
   ComparisonRow r = ClaimRow(EvaluateClaims(Thesis003(), runs), "ch6-filter-coverage");
   EXPECT_EQ(r.verdict, Verdict::kMatch) << r.measured;
   EXPECT_NE(r.measured.find("lowest 0.95"), std::string::npos) << r.measured;
+  EXPECT_EQ(ClaimRow(EvaluateClaims(Thesis003(), runs), "ch6-filter-coverage-50").verdict, Verdict::kMatch);
   runs = {filter(1, 1.0, 1), filter(3, 1.0, 2)};
   r = ClaimRow(EvaluateClaims(Thesis003(), runs), "ch6-filter-coverage");
   EXPECT_EQ(r.verdict, Verdict::kDiffers);
   EXPECT_NE(r.reason.find("95 %: 1;"), std::string::npos) << r.reason;
+  // The 50 % box judged on its own level: 0.7 is 20 points over.
+  for (RunRecord& run : runs) run.properties[0].value = 0.7;
+  EXPECT_EQ(ClaimRow(EvaluateClaims(Thesis003(), runs), "ch6-filter-coverage-50").verdict, Verdict::kDiffers);
+  // The car's claims read the car-filter experiment's runs only.
+  EXPECT_EQ(ClaimRow(EvaluateClaims(Thesis003(), runs), "ch6-filter-coverage-car").verdict, Verdict::kNoData);
+  RunRecord car = MakeRun("particle-filter", {}, {}, 1, std::vector<double>(4, 1e-3));
+  car.spec.problem = "car-track";
+  car.properties = {{"coverage_50", 0.55}, {"coverage_90", 0.9}, {"coverage_95", 0.93}};
+  runs = {InExperiment(std::move(car), "car-filter")};
+  EXPECT_EQ(ClaimRow(EvaluateClaims(Thesis003(), runs), "ch6-filter-coverage-car").verdict, Verdict::kMatch);
+  EXPECT_EQ(ClaimRow(EvaluateClaims(Thesis003(), runs), "ch6-filter-coverage-car-50").verdict, Verdict::kMatch);
 }
 
 // The figure runs of the default spec, recomputed from their problems: each

@@ -221,6 +221,9 @@ Unit TimeUnit(const std::vector<double>& seconds);
 // share one) and a note "(a) text" comes first under the table. TexTable does
 // this with kMaxTexCellChars, so one long cell cannot shrink a whole table.
 inline constexpr std::size_t kMaxTexCellChars = 36;
+// TexTable's tabular is shrunk to this share of the text height when taller
+// (with its caption it must fit a float page), as "0.85" for LaTeX.
+inline constexpr const char* kMaxTexTableHeight = "0.85";
 TextTable WithLongCellsAsNotes(TextTable table, std::size_t max_chars);
 
 // LaTeX text for a table cell: _ & % # { } $ ~ ^ \ escaped, the few

@@ -168,8 +168,11 @@ std::string TexTable(const TextTable& table) {
   if (!t.rows.empty() || !t.omit_if_empty) {
     out << "\\begin{table}[htbp]\n\\centering\n\\small\n\\caption{" << TexEscape(t.title)
         << "}\n"
-        // Shrunk to the line width when wider, never enlarged.
-        << "\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}{%\n"
+        // Set in a box (scratch register 0, local to the float), then shrunk
+        // to the line width when wider and to kMaxTexTableHeight of the text
+        // height when taller (a float taller than the page leaves a blank
+        // page), never enlarged.
+        << "\\sbox0{%\n"
         << "\\begin{tabular}{";
     for (std::size_t i = 0; i < t.numeric.size(); ++i) {
       if (IsWrapped(t, i))
@@ -189,7 +192,11 @@ std::string TexTable(const TextTable& table) {
       }
       out << " \\\\\n";
     }
-    out << "\\bottomrule\n\\end{tabular}}\n\\end{table}\n\n";
+    out << "\\bottomrule\n\\end{tabular}}%\n"
+        << "\\ifdim\\wd0>\\linewidth\\sbox0{\\resizebox{\\linewidth}{!}{\\usebox0}}\\fi\n"
+        << "\\ifdim\\dimexpr\\ht0+\\dp0\\relax>" << kMaxTexTableHeight
+        << "\\textheight\\sbox0{\\resizebox*{!}{" << kMaxTexTableHeight << "\\textheight}{\\usebox0}}\\fi\n"
+        << "\\usebox0\n\\end{table}\n\n";
   }
   for (const std::string& n : t.notes) out << TexEscape(n) << "\n\n";
   if (!t.items.empty()) {
