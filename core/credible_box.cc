@@ -113,14 +113,7 @@ class Tails {
       if (v > high_value_[k - 1])
         ShiftInto(high_value_.data(), high_weight_.data(), k, v, w, std::greater<double>());
     }
-    if (!finite) return false;
-    low_.clear();
-    high_.clear();
-    for (std::size_t j = 0; j < k; ++j) {
-      low_.emplace_back(low_value_[j], low_weight_[j]);
-      high_.emplace_back(high_value_[j], high_weight_[j]);
-    }
-    return true;
+    return finite;
   }
 
   // The two quantiles for weights summing to total.
@@ -128,10 +121,10 @@ class Tails {
     // Lower: the least value whose weight at or below exceeds tail * total.
     std::optional<double> lo;
     double cumulative = 0;
-    for (const auto& [value, weight] : low_) {
-      cumulative += weight;
+    for (std::size_t j = 0; j < low_value_.size(); ++j) {
+      cumulative += low_weight_[j];
       if (cumulative > tail_ * total) {
-        lo = value;
+        lo = low_value_[j];
         break;
       }
     }
@@ -141,14 +134,15 @@ class Tails {
     std::optional<double> hi;
     const double target = (1 - tail_) * total;
     double above = 0;
-    for (std::size_t j = 0; j < high_.size();) {
+    const std::size_t kept = high_value_.size();
+    for (std::size_t j = 0; j < kept;) {
       std::size_t k = j;
       double group = 0;
-      while (k < high_.size() && high_[k].first == high_[j].first) group += high_[k++].second;
-      if (k == high_.size() && high_.size() < count_) break;  // the ties may go on
+      while (k < kept && high_value_[k] == high_value_[j]) group += high_weight_[k++];
+      if (k == kept && kept < count_) break;  // the ties may go on
       if (!(total - above > target)) break;  // target >= total: left to SelectQuantile
       if (!(total - above - group > target)) {
-        hi = high_[j].first;
+        hi = high_value_[j];
         break;
       }
       above += group;
@@ -181,8 +175,9 @@ class Tails {
 
   double tail_;
   std::size_t count_ = 0;
+  // The kept least values, ascending, and greatest, descending, with their
+  // weights (Keep fills them).
   std::vector<double> low_value_, low_weight_, high_value_, high_weight_;
-  std::vector<std::pair<double, double>> low_, high_;
 };
 
 }  // namespace

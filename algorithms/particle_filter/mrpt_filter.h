@@ -30,6 +30,7 @@
 #include <mrpt/bayes/CParticleFilterData.h>
 #include <mrpt/random/RandomGenerators.h>
 
+#include "algorithms/particle_filter/particle_filter.h"
 #include "core/random.h"
 #include "core/view.h"
 
@@ -71,9 +72,7 @@ class MrptFilter : public MrptParticles,
     CParticleFilterDataImpl::performSubstitution(indx);
     for (auto& p : m_particles) p.log_w = 0;
     if (!(view_->roughen > 0)) return;
-    const double half_width = std::sqrt(3.0) * view_->roughen;  // uniform on [-a, a]: sd a / sqrt(3)
-    for (auto& p : m_particles)
-      for (std::size_t c = 0; c < sd_.size(); ++c) p.d[c] += half_width * sd_[c] * UniformReal(rng_, -1, 1);
+    for (auto& p : m_particles) Jitter(p.d, sd_, view_->roughen, rng_);
   }
 
  protected:

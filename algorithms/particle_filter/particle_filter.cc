@@ -107,6 +107,11 @@ std::vector<std::size_t> MultinomialResample(const std::vector<double>& weights,
   return out;
 }
 
+void Jitter(std::vector<double>& state, const std::vector<double>& sd, double h, RandomEngine& rng) {
+  const double half_width = std::sqrt(3.0) * h;  // uniform on [-a, a]: sd a / sqrt(3)
+  for (std::size_t c = 0; c < sd.size(); ++c) state[c] += half_width * sd[c] * UniformReal(rng, -1, 1);
+}
+
 namespace {
 
 using State = std::vector<double>;
@@ -167,7 +172,7 @@ class ParticleFilter : public Estimator {
       ++resamplings_;
       injected = Resample(w, view);
       injected_ += injected;
-      Roughen(views.space.size(), p_.roughen == kRoughenOfView ? view.roughen : p_.roughen);
+      Roughen(p_.roughen == kRoughenOfView ? view.roughen : p_.roughen);
     }
     result.properties.push_back({"resampled", std::int64_t{resample}});
     result.properties.push_back({"reinitialised", std::int64_t{reinitialised}});
@@ -327,13 +332,11 @@ class ParticleFilter : public Estimator {
     return static_cast<std::int64_t>(k);
   }
 
-  // Each particle's first d components moved by a uniform draw of standard
-  // deviation h times the cloud's (sd_, of the weighed cloud).
-  void Roughen(int d, double h) {
+  // Every particle jittered by h (Jitter) with the weighed cloud's standard
+  // deviations sd_, its state-space components only.
+  void Roughen(double h) {
     if (!(h > 0)) return;
-    const double half_width = std::sqrt(3.0) * h;  // uniform on [-a, a]: sd a / sqrt(3)
-    for (State& s : particles_)
-      for (int c = 0; c < d; ++c) s[c] += half_width * sd_[c] * UniformReal(rng_, -1, 1);
+    for (State& s : particles_) Jitter(s, sd_, h, rng_);
   }
 
   ParticleFilterParams p_;
@@ -347,10 +350,6 @@ class ParticleFilter : public Estimator {
   std::int64_t reinitialisations_ = 0;
   std::int64_t injected_ = 0;
 };
-
-}  // namespace
-
-namespace {
 
 // What the range of roughen cannot say: -1 or at least 0.
 void CheckRoughen(const std::string& owner, double roughen) {

@@ -119,6 +119,11 @@ std::vector<std::size_t> SystematicResample(const std::vector<double>& weights, 
 std::vector<std::size_t> MultinomialResample(const std::vector<double>& weights, std::size_t n,
                                              RandomEngine& rng);
 
+// The regularisation's kernel (ParticleFilterParams::roughen): the first
+// sd.size() components of state each moved by a uniform draw of standard
+// deviation h * sd[c]. Shared with the MRPT wrapper, which jitters alike.
+void Jitter(std::vector<double>& state, const std::vector<double>& sd, double h, RandomEngine& rng);
+
 std::unique_ptr<Estimator> MakeParticleFilter(const ParamMap& params, std::uint64_t seed);
 // The registry's resolver: ResolveParams, and roughen -1 or >= 0.
 ParamMap ResolveParticleFilter(const std::string& owner, const ParamMap& values);

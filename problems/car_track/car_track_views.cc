@@ -28,13 +28,15 @@ Interval Central(const Interval& x, double share) {
 }
 
 // The probabilistic view of a step with measurement m (header comment):
-// prior, the box of state 0; first, whether this is step 0; share, the
-// central share of each reading's interval the noise model keeps; roughen,
-// the view's regularisation.
+// prior, the box of state 0; first, whether this is step 0;
+// simulator_noise, whether the model is the simulator's noise (each
+// interval's central kSimulatorNoiseShare, with kSimulatorNoiseRoughen) or
+// the bounds (the whole intervals, no jitter).
 ProbabilisticView CarProbabilisticView(const CarTrackMeasurement& m, const Box& prior, bool first,
-                                       double share, double roughen) {
+                                       bool simulator_noise) {
+  const double share = simulator_noise ? kSimulatorNoiseShare : 1.0;
   ProbabilisticView view;
-  view.roughen = roughen;
+  view.roughen = simulator_noise ? kSimulatorNoiseRoughen : 0.0;
   view.sample_prior = [prior](RandomEngine& rng) {
     if (!prior[0].IsBounded() || !prior[1].IsBounded())
       throw std::invalid_argument(
@@ -91,10 +93,7 @@ bool CarTrackProblem::Next(Step* step) {
   step->views.step = k;
   step->views.space = CarStateSpace();
   step->views.csp = BuildCarWindow(oldest, states);
-  const bool simulator_noise = UsesSimulatorNoise(params_);
-  step->views.probabilistic =
-      CarProbabilisticView(measurements_[k], prior_, k == 0, simulator_noise ? kSimulatorNoiseShare : 1.0,
-                           simulator_noise ? kSimulatorNoiseRoughen : 0.0);
+  step->views.probabilistic = CarProbabilisticView(measurements_[k], prior_, k == 0, UsesSimulatorNoise(params_));
   if (const CarTrackMeasurement& m = measurements_[k]; m.x.IsBounded() && m.y.IsBounded())
     step->annotations = {{"gps_x_lo", m.x.lo()}, {"gps_x_hi", m.x.hi()},
                          {"gps_y_lo", m.y.lo()}, {"gps_y_hi", m.y.hi()}};
