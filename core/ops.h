@@ -75,12 +75,32 @@ inline void ProjectOp(Op op, const Interval& z, Interval& a, Interval& b, int n)
   }
 }
 
+// Whether z = op(a, b) may jump inside the operands' box: a pole of tan,
+// of a / b or of a^n (n < 0) inside it, or atan2's branch cut (x <= 0,
+// y = 0; atan2(y, x) is a = y, b = x) crossed. There no derivative bounds
+// the secants: tan goes from +inf to -inf across a pole, atan2 from pi to
+// -pi across the cut.
+inline bool MayJump(Op op, const Interval& a, const Interval& b, const Interval& z, int n) {
+  switch (op) {
+    case Op::kTan: return !z.IsBounded();
+    case Op::kDiv: return b.ContainsZero();
+    case Op::kPow: return n < 0 && a.ContainsZero();
+    case Op::kAtan2: return a.ContainsZero() && b.lo() <= 0;
+    default: return false;
+  }
+}
+
 // Forward-mode interval differentiation: the derivative of z = op(a, b)
 // given the operands' derivatives da, db. At the kinks of abs, min and max
 // the result is the hull of the one-sided derivatives, which still bounds
-// every slope (what the interval Newton step of BC3 needs).
+// every slope (what the interval Newton step of BC3 needs). Where z may
+// jump (MayJump) and depends on the variable, any slope is possible: the
+// result is the whole line, so that a mean-value step removes nothing.
+// (A unary op gets db = da.)
 inline Interval RawDerivOp(Op op, const Interval& a, const Interval& b, const Interval& z,
                         const Interval& da, const Interval& db, int n) {
+  const Interval kZero(0.0);
+  if (MayJump(op, a, b, z, n) && !(da == kZero && db == kZero)) return Interval();
   switch (op) {
     case Op::kAdd: return da + db;
     case Op::kSub: return da - db;

@@ -91,6 +91,40 @@ TEST(BC3Test, InequalitiesKeepTheirFeasibleSide) {
   EXPECT_LT(box[0].hi(), 2 + 1e-5);
 }
 
+// Newton's mean-value step needs f continuous on the piece: across a pole
+// of tan, of 1/x or of x^-1, or across atan2's branch cut (x < 0, y = 0),
+// the derivative's enclosure does not bound the secants, and a step that
+// trusted it removed solutions (found by a random-CSP probe).
+TEST(BC3Test, KeepsTheSolutionsAcrossAPoleOrABranchCut) {
+  const double pi = std::acos(-1.0);
+  for (const Interval& domain : {Interval(-1, 3), Interval(-0.5, 8), Interval(-4, 0), Interval(-10, 10)}) {
+    ConstraintSystem csp;
+    Expr x = csp.AddVariable("x", domain);
+    csp.AddConstraint(Tan(x), Relation::kEq, csp.Constant(1));
+    const Box box = RunBC3(csp);
+    for (int k = -4; k <= 3; ++k) {
+      const double solution = pi / 4 + k * pi;
+      if (domain.Contains(solution)) EXPECT_TRUE(box[0].Contains(solution)) << domain << " k " << k;
+    }
+  }
+  for (int form = 0; form < 2; ++form) {
+    for (const Interval& domain : {Interval(-4, 2), Interval(-1, 3), Interval(-10, 1.5)}) {
+      ConstraintSystem csp;
+      Expr x = csp.AddVariable("x", domain);
+      csp.AddConstraint(form == 0 ? Pow(x, -1) : csp.Constant(1) / x, Interval(0.5, 1));
+      const Box box = RunBC3(csp);
+      EXPECT_TRUE(box[0].Contains(1)) << domain << " form " << form;
+      EXPECT_TRUE(box[0].Contains(std::min(2.0, domain.hi()))) << domain << " form " << form;
+    }
+  }
+  ConstraintSystem csp;
+  Expr x = csp.AddVariable("x", {-2, -0.1});
+  Expr y = csp.AddVariable("y", {-1, 1});
+  csp.AddConstraint(Atan2(y, x), Relation::kEq, csp.Constant(-3));
+  const Box box = RunBC3(csp);
+  EXPECT_TRUE(box.Contains({-1, std::tan(3.0)})) << box[0] << " " << box[1];
+}
+
 TEST(BC3Test, UnboundedDomainsStaySoundWithinTheBisectionBudget) {
   ConstraintSystem csp;
   Expr x = csp.AddVariable("x", Interval());
