@@ -101,6 +101,10 @@ sqlite3* OpenExistingReadOnly(const std::string& path) {
 ResultsStore::ResultsStore(const std::string& path) : path_(path) {
   db_ = Open(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
   try {
+    Exec(db_, path_, "PRAGMA foreign_keys=ON");
+    // The schema first: a database that is not a store is refused before
+    // anything in it changes (switching to WAL rewrites its header).
+    version_ = CheckOrCreateSchema(db_, path_, /*may_create=*/true);
     // Each run commits on its own; WAL lets reports read while a sweep writes.
     std::string mode;
     {
@@ -111,8 +115,9 @@ ResultsStore::ResultsStore(const std::string& path) : path_(path) {
       throw StoreError("results store '" + path_ + "': cannot use WAL journal mode (got '" + mode +
                        "')");
     }
-    Exec(db_, path_, "PRAGMA foreign_keys=ON");
-    version_ = CheckOrCreateSchema(db_, path_, /*may_create=*/true);
+    // The WAL's files open at the first write: a store that cannot be
+    // written (no descriptor left, say) fails here, before any run starts.
+    Exec(db_, path_, "BEGIN IMMEDIATE; COMMIT");
   } catch (...) {
     sqlite3_close_v2(db_);
     db_ = nullptr;

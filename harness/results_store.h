@@ -174,7 +174,10 @@ bool PreferredOver(RunStatus a, RunStatus b);
 // out_dir and renamed over out_dir/results.sqlite at the end, so a missing or
 // bad input leaves out_dir as it was. Per key the preferred copy is kept
 // (PreferredOver; among equals the first input's), the others go to table
-// attempts, as do the inputs' own attempts. Throws StoreError.
+// attempts, as do the inputs' own attempts. Holds out_dir's lock
+// (directory_lock.h) throughout, as a `run` does: throws DirectoryLockedError
+// while another process holds it, and removes what a killed merge left.
+// Throws StoreError.
 MergeSummary MergeStores(const std::string& out_dir, const std::vector<std::string>& in_dirs);
 
 }  // namespace icp

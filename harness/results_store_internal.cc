@@ -17,7 +17,7 @@ namespace icp::detail {
 
 [[noreturn]] void Fail(const std::string& path, const std::string& what, sqlite3* db) {
   std::string message = "results store '" + path + "': " + what;
-  if (db != nullptr) message += ": " + std::string(sqlite3_errmsg(db));
+  if (db != nullptr) message += (what.empty() ? "" : ": ") + std::string(sqlite3_errmsg(db));
   // The environment's failures (exit 3), with what to do about them.
   switch (db != nullptr ? sqlite3_errcode(db) & 0xff : SQLITE_OK) {
     case SQLITE_FULL: throw EnvironmentError(message + " (free disk space and rerun)");
@@ -32,12 +32,8 @@ namespace icp::detail {
 }
 
 void Exec(sqlite3* db, const std::string& path, const char* sql) {
-  char* error = nullptr;
-  if (sqlite3_exec(db, sql, nullptr, nullptr, &error) != SQLITE_OK) {
-    std::string message = error != nullptr ? error : sqlite3_errmsg(db);
-    sqlite3_free(error);
-    throw StoreError("results store '" + path + "': " + message);
-  }
+  // A full disk is usually met here, at COMMIT: Fail says it is the environment's.
+  if (sqlite3_exec(db, sql, nullptr, nullptr, nullptr) != SQLITE_OK) Fail(path, "", db);
 }
 
 RunStatus ParseStoredStatus(const std::string& text, const std::string& path,

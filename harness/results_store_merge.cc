@@ -6,14 +6,18 @@
 #include <cmath>
 #include <cstddef>
 #include <filesystem>
+#include <iostream>
+#include <optional>
 #include <memory>
 #include <mutex>
 #include <set>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <unordered_map>
 #include <vector>
 
+#include "harness/directory_lock.h"
 #include "harness/results_store_internal.h"
 
 namespace icp {
@@ -25,6 +29,19 @@ using detail::Exec;
 using detail::InTransaction;
 using detail::StoredSummary;
 using detail::WriteRun;
+
+// OUT/results.sqlite.merge-PID.tmp (and its -wal, -shm, -journal): the
+// store a merge writes before its rename.
+constexpr std::string_view kMergeFilePrefix = ".merge-";
+
+void RemoveStaleMergeFiles(const std::string& out_dir) {
+  const std::string prefix = std::filesystem::path(StorePath(out_dir)).filename().string() +
+                             std::string(kMergeFilePrefix);
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(out_dir, ec)) {
+    if (entry.path().filename().string().starts_with(prefix)) std::filesystem::remove(entry.path(), ec);
+  }
+}
 
 // The summary of a run, as an attempt.
 Attempt AttemptOf(const RunRecord& run) {
@@ -120,6 +137,16 @@ MergeSummary MergeStores(const std::string& out_dir, const std::vector<std::stri
   };
   std::vector<Input> inputs;
   std::error_code ec;
+  // A run storing into OUT meanwhile would store into the file the rename
+  // replaces, and lose it: OUT's lock is held from before OUT is read until
+  // after the rename (a stale lock's takeover is said on stderr). Under it,
+  // the temporary files of a merge that was killed are removed.
+  std::optional<DirectoryLock> lock;
+  auto take_lock = [&] {
+    lock.emplace(out_dir, std::cerr);
+    RemoveStaleMergeFiles(out_dir);
+  };
+  if (fs::is_directory(out_dir, ec)) take_lock();
   const bool out_exists = fs::exists(out_path, ec);
   std::vector<std::string> sources;
   if (out_exists) sources.push_back(out_path);
@@ -188,8 +215,9 @@ MergeSummary MergeStores(const std::string& out_dir, const std::vector<std::stri
 
   // Write a temporary store beside OUT and rename it over OUT at the end.
   fs::create_directories(out_dir);
+  if (!lock) take_lock();
   const std::string tmp_path =
-      out_path + ".merge-" + std::to_string(static_cast<long long>(getpid())) + ".tmp";
+      out_path + std::string(kMergeFilePrefix) + std::to_string(static_cast<long long>(getpid())) + ".tmp";
   auto remove_tmp = [&] {
     for (const char* suffix : {"", "-wal", "-shm", "-journal"}) fs::remove(tmp_path + suffix, ec);
   };

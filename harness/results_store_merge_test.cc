@@ -2,13 +2,16 @@
 // MergeStores into a new file, with which copy of a run is kept.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "harness/directory_lock.h"
 #include "harness/results_store.h"
 #include "harness/results_store_testing.h"
 
@@ -128,11 +131,12 @@ TEST(MergeStoresTest, PrefersOkAndSaysWhatItDidAboutConflicts) {
   EXPECT_EQ(status.size(), 5u);
   EXPECT_EQ(status[ok3.spec.Key()], RunStatus::kOk);
   EXPECT_EQ(status[ok7.spec.Key()], RunStatus::kOk);
-  // One complete file: no WAL, no temporary left in OUT.
+  // One complete file: no WAL, no temporary left in OUT (and the emptied lock).
   std::vector<std::string> names;
   for (const auto& e : std::filesystem::directory_iterator(out))
     names.push_back(e.path().filename().string());
-  EXPECT_EQ(names, (std::vector<std::string>{"results.sqlite"}));
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{".lock", "results.sqlite"}));
 
   // Merging again into the existing OUT keeps it as the first input.
   const MergeSummary again = MergeStores(out, {b});
@@ -141,6 +145,40 @@ TEST(MergeStoresTest, PrefersOkAndSaysWhatItDidAboutConflicts) {
   EXPECT_EQ(again.duplicates, 2);  // b's timeout 7 and later 1 differ from OUT's copies
   std::unique_ptr<ResultsStore> merged = ResultsStore::OpenReadOnly(StorePath(out));
   EXPECT_EQ(merged->Attempts().size(), 3u);  // and are in its attempts already: not added
+}
+
+// A run writing OUT holds its lock: a merge into OUT then refuses, leaving
+// OUT as it was (it used to rename a new file over the one the run went on
+// writing, and the run's later runs were lost).
+TEST(MergeStoresTest, RefusesAnOutThatARunHolds) {
+  const std::string in = FreshDir("merge_locked_in");
+  const std::string out = FreshDir("merge_locked_out");
+  ResultsStore(StorePath(in)).Insert(MakeRun(1, 4));
+  ResultsStore(StorePath(out)).Insert(MakeRun(2, 4));
+  const std::string before = FileBytes(StorePath(out));
+  std::ostringstream messages;
+  {
+    DirectoryLock held(out, messages);  // as `run` holds it
+    EXPECT_THROW(MergeStores(out, {in}), DirectoryLockedError);
+    EXPECT_EQ(FileBytes(StorePath(out)), before);
+  }
+  EXPECT_EQ(MergeStores(out, {in}).runs, 2);  // released: it merges
+}
+
+// What a killed merge left in OUT (its temporary store and side files) is
+// removed by the next merge, which holds OUT's lock.
+TEST(MergeStoresTest, RemovesWhatAKilledMergeLeft) {
+  const std::string in = FreshDir("merge_stale_in");
+  const std::string out = FreshDir("merge_stale_out");
+  ResultsStore(StorePath(in)).Insert(MakeRun(1, 4));
+  for (const char* suffix : {"", "-wal", "-shm"})
+    std::ofstream(StorePath(out) + ".merge-999999.tmp" + suffix) << "left by a killed merge";
+  EXPECT_EQ(MergeStores(out, {in}).runs, 1);
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(out))
+    names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{".lock", "results.sqlite"}));
 }
 
 TEST(MergeStoresTest, AMissingOrBadInputLeavesOutAsItWas) {

@@ -14,6 +14,7 @@
 
 #include "harness/environment_error.h"
 #include "harness/results_store.h"
+#include "harness/results_store_internal.h"
 #include "harness/results_store_testing.h"
 
 namespace icp {
@@ -156,6 +157,11 @@ TEST(ResultsStoreTest, BadPathsSayWhatAndWhere) {
     ASSERT_EQ(sqlite3_exec(db, "CREATE TABLE t(a)", nullptr, nullptr, nullptr), SQLITE_OK);
     sqlite3_close(db);
   }
+  auto bytes = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string before = bytes(foreign);
   try {
     ResultsStore store(foreign);
     FAIL() << "expected StoreError";
@@ -163,6 +169,28 @@ TEST(ResultsStoreTest, BadPathsSayWhatAndWhere) {
     EXPECT_NE(std::string(e.what()).find("not an icpbench results store"), std::string::npos)
         << e.what();
   }
+  // Refused as it was: not switched to WAL, not a byte changed.
+  EXPECT_EQ(RawQuery(foreign, "PRAGMA journal_mode"), "delete");
+  EXPECT_EQ(bytes(foreign), before);
+}
+
+// A full disk is the environment's failure (exit 3, with what to do), also
+// where it is met at a plain statement such as COMMIT. (max_page_count makes
+// SQLite report a full database.)
+TEST(ResultsStoreSchemaTest, AFullDiskIsTheEnvironment) {
+  const std::string path = FreshPath("full");
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
+  detail::Exec(db, path, "CREATE TABLE t(a)");
+  detail::Exec(db, path, "PRAGMA max_page_count = 2");
+  try {
+    detail::Exec(db, path, "BEGIN; INSERT INTO t VALUES (randomblob(100000)); COMMIT;");
+    ADD_FAILURE() << "expected EnvironmentError";
+  } catch (const EnvironmentError& e) {
+    EXPECT_NE(std::string(e.what()).find("free disk space"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  }
+  sqlite3_close(db);
 }
 
 }  // namespace

@@ -90,7 +90,9 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
       guarantee.Judge(&r);
       sink(r);  // first: a step the sink could not take is not counted
       metrics.Add(r);
-      if (result.summary.status == ContractStatus::kStopped && stop.ShouldStop()) {
+      // The limit is checked between steps too: an algorithm whose steps are
+      // each short never sees it inside one.
+      if (stop.ShouldStop()) {
         record.status = RunStatus::kTimeout;
         record.reason = "time limit of " + FormatDouble(spec.timeout_s) + " s reached at step " +
                         std::to_string(step_index);

@@ -18,6 +18,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "harness/directory_lock.h"
+
 #include "algorithms/estimator.h"
 #include "harness/run_record.h"
 #include "harness/shard.h"
@@ -50,12 +52,6 @@ struct SweepSummary {
   int interrupted_by = 0;
   int stopped = 0;
   int Finished() const { return ok + failed + timed_out + skipped; }
-};
-
-// Another `run` holds the output directory's lock (bad input: exit 2).
-class DirectoryLockedError : public std::invalid_argument {
- public:
-  using std::invalid_argument::invalid_argument;
 };
 
 // Runs the sweep; progress goes to `progress` (a bar on a terminal, plain

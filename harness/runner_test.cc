@@ -92,6 +92,18 @@ TEST(RunnerTest, TheProblemsAnnotationsJoinTheStepProperties) {
   }
 }
 
+// timeout_s stops a run whose steps are each far shorter than the limit
+// (HC4, 50 ms a step, 0.3 s allowed): between steps, keeping the steps done.
+TEST(RunnerTest, TheTimeLimitStopsARunBetweenShortSteps) {
+  RunSpec spec{"fault", {{"mode", "slow"}, {"slow_ms", "50"}}, "car-track", {{"steps", "40"}}, 1, 0.3};
+  const RunRecord r = ExecuteRun(spec);
+  EXPECT_EQ(r.status, RunStatus::kTimeout) << r.reason;
+  EXPECT_NE(r.reason.find("time limit of 0.3 s reached"), std::string::npos) << r.reason;
+  EXPECT_GE(r.steps.size(), 5u);
+  EXPECT_LT(r.steps.size(), 40u);
+  EXPECT_EQ(static_cast<std::size_t>(r.metrics.steps), r.steps.size());
+}
+
 TEST(RunnerTest, FaultsAreRecordedAndTheSweepGoesOn) {
   const std::string dir = FreshDir("faults");
   SweepSummary s = Sweep(R"(

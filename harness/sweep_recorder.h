@@ -13,29 +13,13 @@
 #include <optional>
 #include <string>
 
+#include "harness/directory_lock.h"
 #include "harness/progress.h"
 #include "harness/results_store.h"
 #include "harness/runner.h"
 #include "harness/spec.h"
 
 namespace icp {
-
-// An exclusive flock on DIR/.lock holding the holder's PID; the kernel
-// drops it when the holder dies, so a PID left in an unlocked file is stale
-// (taking it over is said on `messages`). The file is emptied, not removed,
-// on release (removing it would let a waiting process lock a deleted file).
-class DirectoryLock {
- public:
-  DirectoryLock(const std::string& dir, std::ostream& messages);  // throws DirectoryLockedError
-  ~DirectoryLock();
-  DirectoryLock(const DirectoryLock&) = delete;
-  DirectoryLock& operator=(const DirectoryLock&) = delete;
-  int fd() const { return fd_; }
-
- private:
-  std::string ReadPid() const;
-  int fd_ = -1;
-};
 
 // SIGINT/SIGTERM are caught while one lives (Caught() says which came, 0
 // while none); the previous handlers come back after it.
