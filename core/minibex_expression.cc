@@ -57,19 +57,22 @@ Value Parser::ParseUnary() {
 }
 
 // '^' binds tighter than unary minus (-x^2 is -(x^2)) and takes an integer
-// constant exponent, which may itself be signed (x^-1): the exponent is a
-// unary, so x^-2^3 is x^(-(2^3)).
+// constant exponent. It is left-associative, as in IBEX's parser.yc (%left
+// '^'): x^2^3 is (x^2)^3, as IBEX reads a benchmark file. A signed exponent
+// (x^-1) is a unary minus, which binds looser than '^' and so takes the
+// rest of the chain: x^-2^3 is x^(-(2^3)), again as in IBEX.
 Value Parser::ParsePower() {
   Value base = ParsePrimary();
-  if (!IsPunct("^")) return base;
-  DepthGuard guard(this);
-  Next();
-  const Token& start = Peek();
-  const Value e = ParseUnary();
-  if (!e.is_constant()) Fail(start, "the exponent must be an integer constant");
-  const int n = static_cast<int>(ToInteger(e.constant, start, {"the exponent"}, kMaxExponent));
-  if (base.is_constant()) return Const(Pow(base.constant, n));
-  return Node(Pow(*base.expr, n));
+  while (IsPunct("^")) {
+    DepthGuard guard(this);
+    Next();
+    const Token& start = Peek();
+    const Value e = IsPunct("-") || IsPunct("+") ? ParseUnary() : ParsePrimary();
+    if (!e.is_constant()) Fail(start, "the exponent must be an integer constant");
+    const int n = static_cast<int>(ToInteger(e.constant, start, {"the exponent"}, kMaxExponent));
+    base = base.is_constant() ? Const(Pow(base.constant, n)) : Node(Pow(*base.expr, n));
+  }
+  return base;
 }
 
 Value Parser::ParsePrimary() {

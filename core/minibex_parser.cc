@@ -14,7 +14,7 @@
 //   expr       := term {('+' | '-') term}
 //   term       := unary {('*' | '/') unary}
 //   unary      := ('-' | '+') unary | power
-//   power      := primary ['^' unary]                     (right-associative)
+//   power      := primary {'^' (primary | ('-' | '+') unary)}  (left-assoc.)
 //   primary    := NUMBER | '(' expr ')' | '[' bound ',' bound ']' | pi
 //               | FUNC '(' expr [',' expr] ')' | NAME | NAME '(' expr ')'
 //               | NAME '[' expr ']'

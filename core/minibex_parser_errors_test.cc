@@ -137,9 +137,14 @@ TEST(MinibexParserTest, DeepNestingIsAnErrorNotACrash) {
   EXPECT_THROW(ParseMinibex(nested(100000)), MinibexError);
   const std::string minus = "Variables x; Constraints " + std::string(100000, '-') + "x = 0; end";
   EXPECT_THROW(ParseMinibex(minus), MinibexError);
+  // '^' is left-associative: a long chain is a loop, not a recursion.
   std::string powers = "Variables x; Constraints x";
   for (int i = 0; i < 100000; ++i) powers += "^1";
-  EXPECT_THROW(ParseMinibex(powers + " = 0; end"), MinibexError);
+  EXPECT_NO_THROW(ParseMinibex(powers + " = 0; end"));
+  // Signed exponents nest (x^-1^-1 is x^(-(1^(-1)))): a long chain is deep.
+  std::string signed_powers = "Variables x; Constraints x";
+  for (int i = 0; i < 100000; ++i) signed_powers += "^-1";
+  EXPECT_THROW(ParseMinibex(signed_powers + " = 0; end"), MinibexError);
   std::string deep_loops = "Variables x; Constraints ";
   for (int i = 0; i < 5000; ++i) deep_loops += "for i" + std::to_string(i) + "=1:1; ";
   EXPECT_THROW(ParseMinibex(deep_loops + "x = 0;"), MinibexError);

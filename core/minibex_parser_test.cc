@@ -240,22 +240,26 @@ TEST(MinibexParserTest, PowersAndUnaryMinus) {
       x^-1 = 0;
       x^(-2) = 0;
       -x^2 = 0;
-      x^2^3 = 0;      // right-associative: x^8
+      x^2^3 = 0;      // left-associative, as IBEX's parser: (x^2)^3
       x^(k+1) = 0;
       x^0 = 0;
       2^-1 * x = 0;
       - - x = 0;
+      x^-1^2 = 0;     // a signed exponent takes the chain: x^(-(1^2))
+      2^3^2 * x = 0;  // (2^3)^2 = 64, IBEX's reading (not 2^9)
     end)");
-  ASSERT_EQ(csp.constraints().size(), 8u);
+  ASSERT_EQ(csp.constraints().size(), 10u);
   const Box two = PointBox({2});
   EXPECT_EQ(Eval(csp, 0, two), Interval(0.5));
   EXPECT_EQ(Eval(csp, 1, two), Interval(0.25));
   EXPECT_EQ(Eval(csp, 2, two), Interval(-4.0));
-  EXPECT_EQ(Eval(csp, 3, two), Interval(256.0));
+  EXPECT_EQ(Eval(csp, 3, two), Interval(64.0));
   EXPECT_EQ(Eval(csp, 4, two), Interval(8.0));
   EXPECT_EQ(Eval(csp, 5, two), Interval(1.0));
   EXPECT_EQ(Eval(csp, 6, two), Interval(1.0));
   EXPECT_EQ(Eval(csp, 7, two), Interval(2.0));
+  EXPECT_EQ(Eval(csp, 8, two), Interval(0.5));
+  EXPECT_EQ(Eval(csp, 9, two), Interval(128.0));
   // -x^2 on [1, 3] is [-9, -1], not (-x)^2 = [1, 9].
   EXPECT_EQ(Eval(csp, 2, csp.domains()), Interval(-9, -1));
 }

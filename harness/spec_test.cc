@@ -125,6 +125,11 @@ TEST(SpecTest, ErrorsNameTheFileLineAndKey) {
   EXPECT_NE(ErrorOf("algorithms: []\nproblems: [chain]\n").find("non-empty list"), std::string::npos);
   EXPECT_NE(ErrorOf("problems: [chain]\n").find("key 'algorithms'"), std::string::npos);
   EXPECT_NE(ErrorOf("").find("empty spec"), std::string::npos);
+  // A problem's file that cannot be read: the spec's line and key, then the file's.
+  e = ErrorOf("algorithms: [hc4]\nproblems:\n  - {name: minibex-file, params: {file: /nonexistent.bch}}\n");
+  EXPECT_NE(e.find("spec.yaml:3:"), std::string::npos) << e;
+  EXPECT_NE(e.find("key 'problems[0]"), std::string::npos) << e;
+  EXPECT_NE(e.find("cannot open '/nonexistent.bch'"), std::string::npos) << e;
   EXPECT_NE(ErrorOf("experiments:\n  - algorithms: [hc4]\n    problem: [chain]\n").find(
                 "key 'experiments[0].problem': unknown key"),
             std::string::npos);

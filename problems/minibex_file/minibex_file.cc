@@ -36,7 +36,13 @@ MinibexFileParams Parse(const std::string& owner, const ParamMap& params) {
 }  // namespace
 
 ParamMap ResolveMinibexFile(const std::string& owner, const ParamMap& values) {
-  ParseMinibexFile(Parse(owner, values).file);
+  // A file that cannot be read or parsed is a bad parameter value: a spec
+  // then names its own line and key beside the file's.
+  try {
+    ParseMinibexFile(Parse(owner, values).file);
+  } catch (const MinibexError& e) {
+    throw ParamError(owner + ".file: " + e.what());
+  }
   return ResolveParams<MinibexFileParams>(owner, values);
 }
 
