@@ -173,6 +173,19 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    // A first word that is no command: CLI11 would only say that one is required.
+    if (argc > 1 && argv[1][0] != '-') {
+      std::string commands;
+      bool known = false;
+      for (const CLI::App* sub : std::as_const(app).get_subcommands([](const CLI::App*) { return true; })) {
+        known = known || sub->get_name() == argv[1];
+        commands += (commands.empty() ? "" : ", ") + sub->get_name();
+      }
+      if (!known) {
+        std::cerr << "icpbench: unknown command '" << argv[1] << "' (commands: " << commands << ")\n";
+        return kUsageError;
+      }
+    }
     app.exit(e);
     return kUsageError;
   }

@@ -88,9 +88,15 @@ SolveResult Solve(const SolveOptions& options) {
       result.hulls_by_q = std::move(step_result.hulls_by_q);
     }
   } else {
-    throw std::invalid_argument("solve: '" + info.name + "' needs the " +
-                                std::string(ToString(info.needs)) +
-                                " view, which a Minibex file does not offer (run it through `icpbench run`)");
+    // A CSP-view algorithm without a contractor estimates over a problem's
+    // steps (windows), which one Minibex CSP is not.
+    const std::string why =
+        info.needs == View::kCsp
+            ? " has no contractor for one CSP: it estimates over a problem's steps"
+            : " needs the " + std::string(ToString(info.needs)) + " view, which a Minibex file does not offer";
+    throw std::invalid_argument("solve: '" + info.name + "'" + why +
+                                (info.test_only ? " (a harness test plugin, not an algorithm)" : "") +
+                                " (run it through `icpbench run`)");
   }
   std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
   result.time_s = times[times.size() / 2];

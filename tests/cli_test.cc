@@ -280,7 +280,16 @@ TEST(CliTest, BadInputExitsWithTwoAndAClearMessage) {
   EXPECT_EQ(Icpbench("solve " + sum + " --repeat 0").exit_code, 2);
   EXPECT_EQ(Icpbench("solve " + sum + " --format xml").exit_code, 2);
   EXPECT_EQ(Icpbench("list everything").exit_code, 2);
-  EXPECT_EQ(Icpbench("frobnicate").exit_code, 2);
+  r = Icpbench("frobnicate");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("unknown command 'frobnicate' (commands: solve, list, run"), std::string::npos)
+      << r.out;
+
+  // A test plugin is said to be one, not a view the file lacks.
+  r = Icpbench("solve " + sum + " --algorithm fault");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("no contractor for one CSP"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("a harness test plugin"), std::string::npos) << r.out;
 }
 
 // Runs icpbench with only the given Slurm array variables set (any the test
