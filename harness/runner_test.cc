@@ -132,6 +132,31 @@ problems: [chain]
   EXPECT_FALSE(by_mode["hc4"].provenance.date.empty());
 }
 
+// A worker that crashes, or hangs and is killed, after some good steps:
+// its run is recorded as failed or timed out with those steps and their
+// metrics (they reached the step file one by one), not with none.
+TEST(RunnerTest, ARunThatDiesKeepsTheStepsItFinished) {
+  const std::string dir = FreshDir("dies_mid_run");
+  Sweep(R"(
+timeout_s: 1
+algorithms:
+  - {name: fault, params: {mode: [segfault, hang], after_calls: 3}}
+problems: [{name: car-track, params: {steps: 10}}]
+)", dir);
+  ResultsStore store(StorePath(dir));
+  std::map<std::string, RunRecord> by_mode;
+  for (RunRecord& r : store.LoadRuns(true)) by_mode[r.spec.algorithm_params.at("mode")] = r;
+  ASSERT_EQ(by_mode.size(), 2u);
+  EXPECT_EQ(by_mode["segfault"].status, RunStatus::kFailed);
+  EXPECT_EQ(by_mode["hang"].status, RunStatus::kTimeout);
+  for (const auto& [mode, r] : by_mode) {
+    EXPECT_EQ(r.metrics.steps, 3) << mode << ": " << r.reason;
+    EXPECT_EQ(r.steps.size(), 3u) << mode;
+    EXPECT_NE(r.reason.find("the 3 steps finished before are kept"), std::string::npos) << r.reason;
+    EXPECT_GT(r.metrics.mean_area, 0) << mode;
+  }
+}
+
 #if !defined(ICPBENCH_SANITIZED)
 // A worker that allocates without bound stops at its memory limit
 // (memory_limit_mb) with bad_alloc: its run fails as "out of memory", the

@@ -7,6 +7,7 @@
 #ifndef ICPBENCH_HARNESS_WORKER_OUTPUT_H_
 #define ICPBENCH_HARNESS_WORKER_OUTPUT_H_
 
+#include <cstdint>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
@@ -45,6 +46,12 @@ class StepFileWriter {
   std::string path_;
   std::FILE* file_;
 };
+
+// The steps a worker that died mid-run (killed at its time limit, crashed)
+// had written: cuts the step file after its last complete step (the one
+// being written is dropped) and returns their metrics (steps: how many;
+// 0 when the file holds none or cannot be read).
+RunMetrics RecoverStepFile(const std::string& path, std::uint64_t seed);
 
 // Reads a step file back one step at a time, for ResultsStore::Insert;
 // expects exactly `count` steps. Throws WorkerOutputError.

@@ -275,6 +275,15 @@ FinishedRun WorkerPool::Finish(Worker& w, int wait_status) {
     }
   }
   if (r.status != RunStatus::kOk && r.wall_time_s == 0) r.wall_time_s = Seconds(Clock::now() - w.started);
+  // A worker that died mid-run (no summary came) wrote its steps as it went:
+  // those finished are kept, with their metrics.
+  if (f.step_file.empty() && r.metrics.steps == 0 && w.run.spec.record_steps) {
+    r.metrics = RecoverStepFile(w.step_file, w.run.spec.seed);
+    if (r.metrics.steps > 0) {
+      f.step_file = w.step_file;
+      r.reason += "; the " + std::to_string(r.metrics.steps) + " steps finished before are kept";
+    }
+  }
   return f;
 }
 
