@@ -65,16 +65,17 @@ py::tuple SolveJson(const std::string& file, const std::string& algorithm, const
   SolveOptions options;
   options.file = file;
   std::string key = FileKey(file);
-  Prepared* prepared = nullptr;
+  // Taken out of the cache while in use (the GIL, held here, orders the
+  // cache's changes): a contractor serves one contraction at a time, so a
+  // thread solving the same file meanwhile builds its own.
+  Prepared prepared;
   if (!key.empty()) {
     key += "|" + algorithm;
     for (const auto& [name, value] : ToParamMap(params)) key += "|" + name + "=" + value;
-    auto& cache = PreparedCache();
-    if (cache.size() >= 16 && !cache.contains(key)) cache.clear();
-    prepared = &cache[key];
-    if (!prepared->system) prepared->system = std::make_shared<const ConstraintSystem>(ParseMinibexFile(file));
-    options.parsed = prepared->system;
-    options.contractor = prepared->contractor;
+    if (auto entry = PreparedCache().extract(key)) prepared = std::move(entry.mapped());
+    if (!prepared.system) prepared.system = std::make_shared<const ConstraintSystem>(ParseMinibexFile(file));
+    options.parsed = prepared.system;
+    options.contractor = prepared.contractor;
   }
   options.algorithm = algorithm;
   for (const auto& [key, value] : ToParamMap(params)) options.params.push_back(key + "=" + value);
@@ -86,7 +87,12 @@ py::tuple SolveJson(const std::string& file, const std::string& algorithm, const
     py::gil_scoped_release release;
     result = Solve(options);
   }
-  if (prepared) prepared->contractor = result.contractor;
+  if (!key.empty()) {
+    prepared.contractor = result.contractor;
+    auto& cache = PreparedCache();
+    if (cache.size() >= 16) cache.clear();
+    cache[key] = std::move(prepared);
+  }
   return py::make_tuple(SolveResultToJson(result), result.csp.names());
 }
 

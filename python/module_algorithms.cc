@@ -9,14 +9,17 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <deque>
 #include <limits>
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "algorithms/registry.h"
+#include "core/params.h"
 #include "harness/fork_hooks.h"
 #include "python/module_internal.h"
 #include "python/module_views.h"
@@ -122,11 +125,30 @@ class PythonEstimator : public Estimator {
       empty.SetEmpty();
       return empty;
     }
-    if (py::hasattr(out, "lo") && py::hasattr(out, "hi"))
-      return BoxFromBounds(out.attr("lo"), out.attr("hi"), n);
-    auto pair = out.cast<py::tuple>();
-    if (pair.size() != 2) throw py::value_error("step() must return (lo, hi), an object with .lo and .hi, or None");
-    return BoxFromBounds(pair[0], pair[1], n);
+    constexpr const char* kShape = "step() must return (lo, hi), an object with .lo and .hi, or None";
+    py::object lo, hi;
+    if (py::hasattr(out, "lo") && py::hasattr(out, "hi")) {
+      lo = out.attr("lo");
+      hi = out.attr("hi");
+    } else {
+      if (!py::isinstance<py::tuple>(out) || py::len(out) != 2) throw py::value_error(kShape);
+      lo = out[py::int_(0)];
+      hi = out[py::int_(1)];
+    }
+    std::vector<double> l, h;
+    try {
+      l = lo.cast<std::vector<double>>();
+      h = hi.cast<std::vector<double>>();
+    } catch (const py::cast_error&) {
+      throw py::value_error(std::string(kShape) + ", the bounds sequences of numbers");
+    }
+    // Only None is empty: a NaN or crossed bound is a broken result.
+    for (std::size_t i = 0; i < std::min(l.size(), h.size()); ++i)
+      if (!(l[i] <= h[i]))
+        throw py::value_error("step() returned lo " + FormatDouble(l[i]) + " and hi " + FormatDouble(h[i]) +
+                              " at component " + std::to_string(i) +
+                              " (NaN or lo > hi); return None for an empty estimate");
+    return BoxFromBounds(lo, hi, n);
   }
   static Property ToProperty(const std::string& name, const py::handle& value) {
     if (py::isinstance<py::bool_>(value) || py::isinstance<py::int_>(value))

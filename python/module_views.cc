@@ -244,7 +244,11 @@ void BindViews(py::module_& m) {
         return Samples(v, n, seed, true);
       }, py::arg("n"), py::arg("seed"))
       .def("log_likelihood", [](const PyView& v, const std::vector<double>& state) {
-        return ModelOf(v).log_likelihood(state);
+        const ProbabilisticView& model = ModelOf(v);
+        if (state.size() != v.views->space.size())
+          throw py::value_error("a state needs " + std::to_string(v.views->space.size()) +
+                                " components, got " + std::to_string(state.size()));
+        return model.log_likelihood(state);
       }, py::arg("state"))
       .def("__repr__", [](const PyView& v) {
         return "<icpbench.View of step " + std::to_string(Of(v).step) + ">";

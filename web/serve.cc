@@ -6,9 +6,11 @@
 
 #include <pthread.h>
 #include <signal.h>
+#include <sys/socket.h>
 
 #include <filesystem>
 #include <set>
+#include <stdexcept>
 #include <thread>
 
 #include "harness/environment_error.h"
@@ -69,6 +71,15 @@ void Serve(const ServeOptions& options, const std::function<void(const std::stri
     if (res.body.empty()) SendError(res, res.status, "no such page: " + req.path);
   });
 
+  // cpp-httplib's default sets SO_REUSEPORT, with which a second server
+  // binds a port in use and the kernel splits the requests between the two
+  // stores: SO_REUSEADDR alone only allows rebinding after a restart.
+  server.set_socket_options([](socket_t sock) {
+    int yes = 1;
+    setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, reinterpret_cast<void*>(&yes), sizeof yes);
+  });
+  // An empty host would print an unusable URL (http://:PORT/) and bind ::1.
+  if (options.host.empty()) throw std::invalid_argument("serve: --host must not be empty");
   int port = options.port;
   if (port == 0) {
     port = server.bind_to_any_port(options.host);

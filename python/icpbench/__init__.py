@@ -63,6 +63,8 @@ def solve(minibex, algorithm="hc4", repeat=1, timeout=math.inf, **params):
             f.write(minibex)
         try:
             text, names = _icpbench.solve_json(f.name, algorithm, params, repeat, timeout)
+        except ValueError as e:  # the text's errors, not the temporary file's name
+            raise ValueError(str(e).replace(f.name, "<minibex text>")) from None
         finally:
             os.unlink(f.name)
     else:

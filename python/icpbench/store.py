@@ -27,9 +27,9 @@ class Store:
             raise ValueError(f"{path}: no results store here (run `icpbench run SPEC --out "
                              f"{os.fspath(directory)}` first)")
         self.path = path
-        mode = "mode=ro" if os.path.exists(path + "-wal") else "immutable=1"
+        self._db = None
+        self._connect()
         try:
-            self._db = sqlite3.connect(f"file:{quote(os.path.abspath(path))}?{mode}", uri=True)
             version = self._db.execute(
                 "SELECT value FROM meta WHERE key='schema_version'").fetchone()
         except sqlite3.DatabaseError as e:
@@ -38,6 +38,28 @@ class Store:
         if self.schema_version not in _KNOWN_SCHEMA_VERSIONS:
             raise ValueError(f"{path}: schema version {self.schema_version} is not one this "
                              f"icpbench reads ({sorted(_KNOWN_SCHEMA_VERSIONS)})")
+
+    def _state(self):
+        """What says the file changed: its size and time, and whether a WAL exists."""
+        stat = os.stat(self.path)
+        return stat.st_size, stat.st_mtime_ns, os.path.exists(self.path + "-wal")
+
+    def _connect(self):
+        if self._db is not None:
+            self._db.close()
+        self._opened_state = self._state()
+        mode = "mode=ro" if self._opened_state[2] else "immutable=1"
+        self._db = sqlite3.connect(f"file:{quote(os.path.abspath(self.path))}?{mode}", uri=True)
+        # Read-only also for ATTACH, which would create the file it names.
+        self._db.set_authorizer(
+            lambda action, *_: sqlite3.SQLITE_DENY if action == sqlite3.SQLITE_ATTACH else sqlite3.SQLITE_OK)
+
+    def _fresh(self):
+        """The connection, opened again if a sweep wrote the store meanwhile:
+        an immutable one would not see it."""
+        if self._opened_state[2] is False and self._state() != self._opened_state:
+            self._connect()
+        return self._db
 
     def __enter__(self):
         return self
@@ -49,8 +71,14 @@ class Store:
         self._db.close()
 
     def query(self, sql, params=()):
-        """Any SELECT on the store, as a DataFrame (or records)."""
-        cursor = self._db.execute(sql, params)
+        """Any SELECT on the store, as a DataFrame (or records). Raises ValueError
+        on a bad query (and on any that would write)."""
+        try:
+            cursor = self._fresh().execute(sql, params)
+        except (sqlite3.Error, sqlite3.Warning) as e:
+            raise ValueError(f"{self.path}: query {sql!r}: {e}") from None
+        if cursor.description is None:
+            raise ValueError(f"{self.path}: query {sql!r} returns no columns (not a SELECT)")
         columns = [d[0] for d in cursor.description]
         rows = cursor.fetchall()
         if _pd is not None:

@@ -2,6 +2,7 @@
 bit for bit, the same boxes stepping by hand as `icpbench run`, sweeps that
 resume, and the command line's messages on bad input."""
 
+import concurrent.futures
 import glob
 import math
 import os
@@ -162,3 +163,47 @@ def test_errors_are_classed_as_the_command_lines_exit_codes(cli, source_dir, out
         icpbench.run(spec, out=out)
     assert type(error.value) is expected
     assert str(error.value).split(" (")[0] in theirs.stderr
+
+
+def test_solving_text_from_threads_is_safe_and_agrees(source_dir):
+    # Each thread gets its own contractor: a cached one is taken out while in use.
+    text = open(os.path.join(source_dir, "examples", "car_window.bch")).read()
+    path = os.path.join(source_dir, "examples", "car_window.bch")
+    alone = icpbench.solve(path)["box"]
+
+    def solve_many(k):
+        return [icpbench.solve(text if i % 2 else path)["box"] for i in range(40)]
+
+    with concurrent.futures.ThreadPoolExecutor(4) as pool:
+        for boxes in pool.map(solve_many, range(4)):
+            assert all(box == alone for box in boxes)
+
+
+def test_errors_in_text_name_the_text_not_a_temporary_file():
+    with pytest.raises(ValueError, match=r"^<minibex text>:1:"):
+        icpbench.solve("Variables x in [0, 1]; Constraints x + = 1; end")
+
+
+def test_a_state_of_the_wrong_length_is_refused():
+    step = next(iter(icpbench.problem("car-track", seed=1, w=3, steps=1)))
+    for state in ([], [0.0], [1e9] * 10):
+        with pytest.raises(ValueError, match="a state needs 3 components"):
+            step.view.log_likelihood(state)
+
+
+def test_an_open_store_sees_a_later_sweep_and_refuses_bad_queries(tmp_path):
+    icpbench.run(_car_spec(3), out=tmp_path)
+    with icpbench.open(tmp_path) as store:
+        assert len(store.runs()) == 1
+        spec = _car_spec(3)
+        spec["experiments"][0]["algorithms"].append("bc4")
+        icpbench.run(spec, out=tmp_path)
+        assert len(store.runs()) == 2
+        with pytest.raises(ValueError, match="no such table"):
+            store.query("SELECT * FROM no_such_table")
+        with pytest.raises(ValueError, match="not a SELECT"):
+            store.query("")
+        attached = tmp_path / "attached.sqlite"
+        with pytest.raises(ValueError, match="not authorized"):
+            store.query(f"ATTACH DATABASE '{attached}' AS other")
+        assert not attached.exists()

@@ -164,3 +164,32 @@ def test_the_landmark_observation_view_from_python():
         first.contract_sighting(0, 999, lo, hi)
     with pytest.raises(IndexError):
         first.contract_sighting(len(returns["type"]), 0, lo, hi)
+
+
+class BrokenBounds:
+    """Returns a NaN bound, or a lower bound above the upper one: not an empty estimate."""
+
+    def __init__(self, kind, seed):
+        self.kind = kind
+
+    def step(self, view):
+        lo, hi = view.newest_state(*view.csp_domains)
+        lo, hi = list(lo), list(hi)
+        if self.kind == "nan":
+            lo[1] = math.nan
+        else:
+            lo[0], hi[0] = hi[0], lo[0]
+        return lo, hi
+
+
+icpbench.register_algorithm("broken-bounds-python", BrokenBounds,
+                            params={"kind": ("nan", "nan or crossed", ["nan", "crossed"])})
+
+
+def test_nan_or_crossed_bounds_fail_the_run_instead_of_reading_as_empty(tmp_path):
+    summary = icpbench.run(_spec({"name": "broken-bounds-python", "params": {"kind": ["nan", "crossed"]}}),
+                           out=tmp_path)
+    assert (summary["ok"], summary["failed"]) == (0, 2)
+    with icpbench.open(tmp_path) as store:
+        for reason in store.runs()["reason"]:
+            assert "NaN or lo > hi" in reason and "return None for an empty estimate" in reason, reason
