@@ -258,6 +258,9 @@ ConstraintSystem ParseMinibexFile(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw MinibexError(path, 0, 0, "cannot read '" + path + "': it is a directory");
+  // A pipe or a device could block the reader, or never end.
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw MinibexError(path, 0, 0, "cannot read '" + path + "': not a regular file (a pipe or a device)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw MinibexError(path, 0, 0, "cannot open '" + path + "'");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

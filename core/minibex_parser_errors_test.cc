@@ -3,6 +3,7 @@
 #include "core/minibex_parser.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <exception>
@@ -169,6 +170,16 @@ TEST(MinibexParserTest, ParseMinibexFile) {
     EXPECT_NE(std::string(e.what()).find(missing), std::string::npos) << e.what();
   }
   EXPECT_THROW(ParseMinibexFile(dir.string()), MinibexError);
+  // A pipe is refused by its kind: opening it would wait for a writer.
+  const std::string fifo = (dir / ("icpbench_fifo_" + std::to_string(::getpid()) + ".bch")).string();
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  try {
+    ParseMinibexFile(fifo);
+    ADD_FAILURE() << "a pipe accepted";
+  } catch (const MinibexError& e) {
+    EXPECT_NE(std::string(e.what()).find("not a regular file"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(fifo);
 
   const std::string path =
       (dir / ("icpbench_parser_test_" + std::to_string(::getpid()) + ".mbx")).string();

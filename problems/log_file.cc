@@ -2,6 +2,7 @@
 // their readers share.
 #include "problems/log_file.h"
 
+#include <filesystem>
 #include <istream>
 #include <ostream>
 #include <sstream>
@@ -12,6 +13,13 @@
 namespace icp {
 
 std::ifstream OpenLogFile(const std::string& path, const std::string& what) {
+  // A directory opens and reads as nothing; a pipe or a device (/dev/zero)
+  // could block the reader, or never end: both are refused by their kind.
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (std::filesystem::is_directory(status)) throw std::invalid_argument(path + ": is a directory, not a " + what);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    throw std::invalid_argument(path + ": is not a regular file (a pipe or a device), not a " + what);
   std::ifstream in(path);
   if (!in) throw std::invalid_argument(path + ": cannot open the " + what);
   return in;

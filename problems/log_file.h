@@ -16,8 +16,9 @@
 namespace icp {
 
 // Opens path for reading; throws std::invalid_argument "<path>: cannot open
-// the <what>" when it cannot. Which kinds of file a problem refuses before
-// (directories, devices) is its own choice, made before the call.
+// the <what>" when it cannot, and "<path>: is a directory, not a <what>" or
+// "...: is not a regular file (a pipe or a device), not a <what>" for those
+// kinds, which could read as nothing or block the reader.
 std::ifstream OpenLogFile(const std::string& path, const std::string& what);
 
 // Writes comment to out as '#' lines, one for each of its lines (none when

@@ -240,13 +240,6 @@ std::vector<CarTrackRecord> ReadCarTrackLog(std::istream& in, const std::string&
 }
 
 std::vector<CarTrackRecord> ReadCarTrackLog(const std::string& path) {
-  // An ifstream opens a directory and then reads nothing ("no header line").
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw std::invalid_argument(path + ": is a directory, not a log file");
-  // A device or a pipe (/dev/zero, /dev/stdin) could be read without end.
-  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
-    throw std::invalid_argument(path + ": is not a regular file, not a log file");
   std::ifstream in = OpenLogFile(path, "car-track log");
   return ReadCarTrackLog(in, path);
 }

@@ -314,7 +314,7 @@ TEST(CarTrackTest, RegistryRejectsBadParameters) {
   EXPECT_THROW(info.resolve("car-track", {{"log", "/nonexistent/log.csv"}}),
                std::invalid_argument);
   const std::string directory = ErrorOf([&] { info.resolve("car-track", {{"log", "/tmp"}}); });
-  EXPECT_NE(directory.find("/tmp: is a directory, not a log file"), std::string::npos)
+  EXPECT_NE(directory.find("/tmp: is a directory, not a car-track log"), std::string::npos)
       << directory;
   // A device would be read without end (found while fuzzing specs).
   const std::string device = ErrorOf([&] { info.resolve("car-track", {{"log", "/dev/zero"}}); });

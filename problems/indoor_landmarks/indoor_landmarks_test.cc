@@ -52,6 +52,13 @@ TEST(IndoorMapTest, BadRowsAreNamedByLine) {
   EXPECT_THROW(read("kind,x1,y1,x2,y2\nwall,0,0,1\n"), std::invalid_argument);
   EXPECT_THROW(read("kind,x1,y1,x2,y2\ncorner,0,nan\n"), std::invalid_argument);
   EXPECT_THROW(read("kind,x1,y1,x2,y2\nwall,0,0,1,1\n"), std::invalid_argument);  // no landmark
+  // Coordinates past 1e9 m (a wall at 1e17 passed every geometric test unseen).
+  try {
+    read("kind,x1,y1,x2,y2\nwall,-1e17,-1e17,1e17,1e17\ncorner,1,2\n");
+    ADD_FAILURE() << "accepted a wall at 1e17";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("m.csv:2: field 2 is beyond +-1e9 m"), std::string::npos) << e.what();
+  }
   EXPECT_EQ(read("kind,x1,y1,x2,y2\nwall,0,0,1,1\nedge,1,1\nother,2,2\n").landmarks[1].type, 2);
 }
 

@@ -13,6 +13,9 @@
 namespace icp {
 
 namespace {
+
+constexpr double kMaxCoordinate = 1e9;  // m
+
 constexpr const char* kHeader = "kind,x1,y1,x2,y2";
 
 // Cross product of (b - a) and (c - a).
@@ -59,6 +62,10 @@ IndoorMap ReadIndoorMap(std::istream& in, const std::string& source) {
       auto [end, ec] = std::from_chars(f.data(), f.data() + f.size(), v[i - 1]);
       if (ec != std::errc() || end != f.data() + f.size() || !std::isfinite(v[i - 1]))
         throw fail("field " + std::to_string(i + 1) + " is not a finite number");
+      // As the other readers' positions: past this, the geometry's doubles
+      // (line of sight, distance to a wall) lose the corridor's centimetres.
+      if (std::fabs(v[i - 1]) > kMaxCoordinate)
+        throw fail("field " + std::to_string(i + 1) + " is beyond +-1e9 m");
     }
     if (kind == "wall") {
       if (v[0] == v[2] && v[1] == v[3]) throw fail("a wall of zero length");

@@ -81,10 +81,7 @@ std::string MapFramePath(const std::string& image_path) {
 }
 
 ImageFrame ReadMapFrame(const std::string& path) {
-  std::ifstream in(path);
-  if (!in)
-    throw std::invalid_argument(path +
-                                ": cannot open the map frame (origin_x, origin_y, pixel_size)");
+  std::ifstream in = OpenLogFile(path, "map frame (origin_x, origin_y, pixel_size)");
   return ReadMapFrame(in, path);
 }
 

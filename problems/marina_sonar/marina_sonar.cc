@@ -118,9 +118,13 @@ void CheckDrive(const MarinaSonarParams& params, const std::vector<MarinaRecord>
   for (std::size_t k = 0; k < n; ++k) {
     const MarinaRecord& r = records[k];
     if (r.has_truth && !bounds.Contains({r.truth_x, r.truth_y}))
-      throw std::invalid_argument("marina-sonar: step " + std::to_string(k) + ": the truth (" +
-                                  FormatDouble(r.truth_x) + ", " + FormatDouble(r.truth_y) +
-                                  ") lies outside the map");
+      throw std::invalid_argument(
+          "marina-sonar: " + (params.log.empty() ? std::string("the simulated drive") : params.log) +
+          ", step " + std::to_string(k) + ": the truth (" + FormatDouble(r.truth_x) + ", " +
+          FormatDouble(r.truth_y) + ") lies outside the map " +
+          (params.map.empty() ? std::string("of the marina") : params.map) + " (x in [" +
+          FormatDouble(bounds[0].lo()) + ", " + FormatDouble(bounds[0].hi()) + "], y in [" +
+          FormatDouble(bounds[1].lo()) + ", " + FormatDouble(bounds[1].hi()) + "])");
   }
   if (params.start != "unknown" && (records.empty() || !records[0].has_truth))
     throw ParamError("marina-sonar.start = " + params.start + ": the first step has no truth");

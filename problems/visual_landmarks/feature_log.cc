@@ -137,6 +137,10 @@ VisualDrive ReadFeatureLog(std::istream& in, const std::string& source) {
       const int n = row.Identity(1);
       if (static_cast<int>(drive.landmarks.size()) <= n)
         drive.landmarks.resize(n + 1, {kNaN, kNaN, kNaN});
+      // A second reference would silently replace the first (and blame the
+      // estimator for the truth it then misses).
+      if (!std::isnan(drive.landmarks[n][0]))
+        throw row.Error(1, "landmark " + std::to_string(n) + "'s reference position given twice");
       drive.landmarks[n] = {row.Number(2, kPositionLimit), row.Number(3, kPositionLimit),
                             row.Number(4, kPositionLimit)};
     } else {

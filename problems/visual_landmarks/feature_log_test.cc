@@ -129,7 +129,8 @@ TEST(FeatureLogTest, ErrorsNameTheLineAndTheField) {
       {step0 + "track,0,-1,2,3,1\n", "field 3 (landmark)"},
       {step0 + "track,0,1,2,3\n", "a track row has 6 fields"},
       {step0 + "pose,0\n", "unknown row kind 'pose'"},
-      {step0 + "landmark,1,1e10,0,0\n", "field 3 (x)"}};
+      {step0 + "landmark,1,1e10,0,0\n", "field 3 (x)"},
+      {step0 + "landmark,1,1,0,0\nlandmark,1,50,0,0\n", "landmark 1's reference position given twice"}};
   for (const auto& [text, expected] : cases) {
     try {
       read(text);

@@ -40,6 +40,8 @@ LandmarkMap ReadLandmarkMap(std::istream& in, const std::string& source) {
     }
     if (!map.emplace(id, box).second) throw fail("landmark " + std::to_string(id) + " twice");
   });
+  // A repeat run with no landmark would localize by dead reckoning alone.
+  if (map.empty()) throw std::invalid_argument(source + ": no landmark");
   return map;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <set>
 #include <stdexcept>
@@ -57,11 +58,20 @@ void Describe(VisualLandmarksParams& p, ParamSet& set) {
 
 ParamMap ResolveVisualLandmarks(const std::string& owner, const ParamMap& values) {
   const auto p = ParseParams<VisualLandmarksParams>(owner, values);
-  // The file is read when a run starts, not here: a spec may name a map
-  // that an earlier command writes (scripts/main.sh: teach, icpbench map,
-  // then repeat).
   if (!p.map.empty() && p.phase != "repeat")
     throw ParamError(owner + ".map: only a repeat run reads a map");
+  // The files are read here, so that a bad one stops the spec with its line
+  // and key, not every run. A map that does not exist yet is read when a
+  // run starts: an earlier command may write it (scripts/main.sh: teach,
+  // icpbench map, then repeat).
+  try {
+    if (!p.log.empty()) ReadFeatureLog(p.log);
+    std::error_code ec;
+    if (!p.map.empty() && std::filesystem::symlink_status(p.map, ec).type() != std::filesystem::file_type::not_found)
+      ReadLandmarkMap(p.map);
+  } catch (const std::invalid_argument& e) {
+    throw ParamError(owner + ": " + e.what());
+  }
   return ResolveParams<VisualLandmarksParams>(owner, values);
 }
 

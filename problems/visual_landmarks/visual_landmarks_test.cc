@@ -1,6 +1,7 @@
 #include "problems/visual_landmarks/visual_landmarks.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cstdio>
 #include <fstream>
@@ -10,6 +11,7 @@
 
 #include "algorithms/hc4/hc4.h"
 #include "core/tape.h"
+#include "problems/registry.h"
 
 namespace icp {
 namespace {
@@ -156,7 +158,8 @@ TEST(VisualLandmarksTest, MapFileErrorsNameTheLine) {
   for (const std::string& bad : {std::string("x,y\n"), header + "1,2,1,0,0,0,0\n",
                                  header + "-1,0,1,0,1,0,1\n", header + "1,0,1,0,1,0\n",
                                  header + "1,0,1,0,1,0,inf\n",
-                                 header + "1,0,1,0,1,0,1\n1,0,1,0,1,0,1\n", std::string("")}) {
+                                 header + "1,0,1,0,1,0,1\n1,0,1,0,1,0,1\n", std::string(""),
+                                 "# no landmark\n" + header}) {
     try {
       read(bad);
       ADD_FAILURE() << "accepted: " << bad;
@@ -164,6 +167,35 @@ TEST(VisualLandmarksTest, MapFileErrorsNameTheLine) {
       EXPECT_EQ(std::string(e.what()).rfind("m.csv", 0), 0u) << e.what();
     }
   }
+}
+
+// A bad log, or a map that exists and is bad, stops the spec (a
+// ParamError at resolution) instead of failing every run; a map that does
+// not exist yet is read when a run starts (an earlier command may write it).
+TEST(VisualLandmarksTest, FilesAreCheckedWhenTheSpecIsResolved) {
+  const ProblemInfo& info = FindProblem("visual-landmarks");
+  const std::string dir = ::testing::TempDir();
+  const std::string bad_log = dir + "/bad_features.csv";
+  std::ofstream(bad_log) << "nothing,here\n";
+  const std::string bad_map = dir + "/bad_map.csv";
+  std::ofstream(bad_map) << "landmark,x_lo,x_hi,y_lo,y_hi,z_lo,z_hi\n";
+  const std::string fifo = dir + "/fifo_map.csv";
+  std::remove(fifo.c_str());
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  const std::pair<ParamMap, std::string> cases[] = {
+      {{{"log", bad_log}}, bad_log},
+      {{{"phase", "repeat"}, {"map", bad_map}}, bad_map + ": no landmark"},
+      {{{"phase", "repeat"}, {"map", fifo}}, "is not a regular file"}};
+  for (const auto& [params, expected] : cases) {
+    try {
+      info.resolve("visual-landmarks", params);
+      ADD_FAILURE() << "accepted " << expected;
+    } catch (const ParamError& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_NO_THROW(info.resolve("visual-landmarks", {{"phase", "repeat"}, {"map", dir + "/not_yet.csv"}}));
+  std::remove(fifo.c_str());
 }
 
 }  // namespace
