@@ -36,15 +36,6 @@ constexpr char kNamingRule[] =
     "a name is lower-case letters, digits, '-' and '_', starting with a letter or digit, at most "
     "64 characters";
 
-bool IsValidName(const std::string& name) {
-  if (name.empty() || name.size() > kMaxNameLength) return false;
-  const auto allowed = [](char c, bool first) {
-    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || (!first && (c == '-' || c == '_'));
-  };
-  for (std::size_t i = 0; i < name.size(); ++i)
-    if (!allowed(name[i], i == 0)) return false;
-  return true;
-}
 
 // The name as a message shows it: quoted, control characters escaped (a
 // newline would break the message's line).
@@ -87,8 +78,8 @@ class Registrar final : public PluginRegistrar {
   bool Add(const std::string& kind, Info info, void (*add)(Info)) {
     const std::string missing = Missing(info);
     if (!missing.empty()) return Fail(kind + " " + Quoted(info.name) + " has " + missing);
-    if (!IsValidName(info.name))
-      return Fail(kind + " " + Quoted(info.name) + " is not a valid name: " + kNamingRule);
+    if (const std::string rule = NameRuleViolation(info.name); !rule.empty())
+      return Fail(kind + " " + Quoted(info.name) + " is not a valid name: " + rule);
     try {
       add(std::move(info));  // throws std::invalid_argument for a taken name
       return true;
@@ -173,6 +164,15 @@ void LoadPlugin(const std::string& path) {
     fail(ICPBENCH_PLUGIN_ENTRY_POINT " failed (returned " + std::to_string(returned) + ")" +
          (registrar.error().empty() ? "" : ": " + registrar.error()));
   registered.insert(handle);
+}
+
+std::string NameRuleViolation(const std::string& name) {
+  const auto allowed = [](char c, bool first) {
+    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || (!first && (c == '-' || c == '_'));
+  };
+  bool valid = !name.empty() && name.size() <= kMaxNameLength;
+  for (std::size_t i = 0; valid && i < name.size(); ++i) valid = allowed(name[i], i == 0);
+  return valid ? "" : kNamingRule;
 }
 
 }  // namespace icp

@@ -24,6 +24,12 @@ class PluginError : public std::invalid_argument {
 // forked workers of `icpbench run`.
 void LoadPlugin(const std::string& path);
 
+// What is wrong with a name a plugin (or Python's register_algorithm) gives
+// an algorithm, problem or parameter: "" when it follows the naming rule
+// (lower-case letters, digits, '-' and '_', starting with a letter or digit,
+// at most 64 characters), else the rule.
+std::string NameRuleViolation(const std::string& name);
+
 }  // namespace icp
 
 #endif  // ICPBENCH_HARNESS_PLUGIN_LOADER_H_

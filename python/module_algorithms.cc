@@ -21,6 +21,7 @@
 #include "algorithms/registry.h"
 #include "core/params.h"
 #include "harness/fork_hooks.h"
+#include "harness/plugin_loader.h"
 #include "python/module_internal.h"
 #include "python/module_views.h"
 
@@ -205,21 +206,30 @@ void Register(const std::string& name, py::object factory, const std::string& cl
   else if (needs == "landmark-observations") view = View::kLandmarkObservations;
   else throw py::value_error("needs='" + needs +
                              "': must be csp, measurement-set, probabilistic or landmark-observations");
+  // The names a C++ plugin may use (they are spec keys and parts of run keys).
+  if (const std::string rule = NameRuleViolation(name); !rule.empty())
+    throw py::value_error("algorithm '" + name + "' is not a valid name: " + rule);
+  for (const AlgorithmInfo& a : Algorithms())
+    if (a.name == name) throw py::value_error("algorithm '" + name + "' is already registered");
   for (const auto& [other, algorithm] : Registered())
     if (algorithm.class_path == class_path)
       throw py::value_error(class_path + " is already registered as '" + other + "'");
-  for (const ParamInfo& p : declared)
-    if (p.name == "python") throw py::value_error("'python' is a reserved parameter name");
+  for (const ParamInfo& p : declared) {
+    if (p.name == "python" || p.name == "seed")
+      throw py::value_error("'" + p.name + "' is a reserved parameter name");
+    if (const std::string rule = NameRuleViolation(p.name); !rule.empty())
+      throw py::value_error("parameter '" + p.name + "' is not a valid name: " + rule);
+  }
+  // Checked before the registry knows the name: a failure leaves no trace.
   Registered()[name] = {std::move(factory), class_path, declared};
   try {
-    RegisterAlgorithm({name, description.empty() ? class_path + " (Python)" : description,
-                       &MakePythonEstimator, &ListParams, &ResolvePythonParams, view,
-                       {name, 5000, ""}});
     ResolvePythonParams(name, {});  // the declared defaults must pass their own checks
-  } catch (...) {
+  } catch (const std::exception& e) {
     Registered().erase(name);
-    throw;
+    throw py::value_error(name + ": " + e.what());
   }
+  RegisterAlgorithm({name, description.empty() ? class_path + " (Python)" : description,
+                     &MakePythonEstimator, &ListParams, &ResolvePythonParams, view, {name, 5000, ""}});
   InstallForkHooks();
 }
 

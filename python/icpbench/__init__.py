@@ -134,8 +134,13 @@ def _declared(name, declaration):
         text = repr(float(default))
     else:
         text = str(default)
+    if kind == "int" and not -2**31 <= default < 2**31:
+        raise ValueError(f"parameter '{name}': default {default} is outside the int range "
+                         f"[-2147483648, 2147483647] (use a float)")
     if choices is not None and kind != "string":
         raise ValueError(f"parameter '{name}': choices are for str parameters")
+    if choices is not None and default not in choices:
+        raise ValueError(f"parameter '{name}': default {default!r} is not one of its choices {choices}")
     # The choices are checked in Python (the registry's string fields are free text).
     return _icpbench.ParamInfo(name, kind, text, "", doc), kind, choices
 
@@ -158,7 +163,15 @@ def register_algorithm(name, cls, needs="csp", params=None, description=""):
     params = params or {}
     declared = [_declared(k, v) for k, v in params.items()]
     kinds = {info.name: (kind, choices) for info, kind, choices in declared}
-    takes_seed = "seed" in inspect.signature(cls).parameters
+    # What would fail every run in its worker is refused here.
+    if not callable(getattr(cls, "step", None)):
+        raise ValueError(f"{name}: {cls.__qualname__} has no step(view) method")
+    signature = inspect.signature(cls)
+    takes_any = any(p.kind == p.VAR_KEYWORD for p in signature.parameters.values())
+    for key in params:
+        if not takes_any and key not in signature.parameters:
+            raise ValueError(f"{name}: {cls.__qualname__}() takes no parameter '{key}'")
+    takes_seed = "seed" in signature.parameters
 
     def typed(texts):
         values = {}

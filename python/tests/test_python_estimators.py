@@ -193,3 +193,30 @@ def test_nan_or_crossed_bounds_fail_the_run_instead_of_reading_as_empty(tmp_path
     with icpbench.open(tmp_path) as store:
         for reason in store.runs()["reason"]:
             assert "NaN or lo > hi" in reason and "return None for an empty estimate" in reason, reason
+
+
+def test_a_registration_that_would_fail_every_run_is_refused_and_leaves_no_trace():
+    def fresh(step=True, init=lambda self, n=1: None):
+        body = {"__init__": init}
+        if step:
+            body["step"] = lambda self, view: None
+        return type("Fresh", (), body)
+
+    cases = [
+        ("py-big", fresh(), {"params": {"n": 2**40}}, "n"),
+        ("Upper-Case", fresh(), {}, "not a valid name"),
+        ("a,b", fresh(), {}, "not a valid name"),
+        ("py-bad-param", fresh(init=lambda self, **kw: None), {"params": {"bad name": 1}}, "not a valid name"),
+        ("py-seed", fresh(init=lambda self, seed=0: None), {"params": {"seed": 1}}, "reserved"),
+        ("py-no-step", fresh(step=False), {}, "no step"),
+        ("py-no-such", fresh(), {"params": {"m": 1}}, "takes no parameter 'm'"),
+        ("py-choice", fresh(init=lambda self, mode="zz": None),
+         {"params": {"mode": ("zz", "d", ["a", "b"])}}, "not one of its choices"),
+    ]
+    for name, cls, kwargs, message in cases:
+        with pytest.raises(ValueError, match=message):
+            icpbench.register_algorithm(name, cls, **kwargs)
+        assert name not in {a["name"] for a in icpbench.algorithms()}
+    # A failed attempt leaves the name free.
+    icpbench.register_algorithm("py-big", fresh(), params={"n": 2})
+    assert "py-big" in {a["name"] for a in icpbench.algorithms()}
