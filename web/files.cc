@@ -37,6 +37,12 @@ void SendFile(httplib::Response& res, const fs::path& path) {
   res.set_content(ReadFile(path), type == kTypes.end() ? "application/octet-stream" : type->second);
 }
 
+// What `icpbench plot` writes: PNG, PDF and SVG files.
+bool IsFigure(const fs::path& path) {
+  const std::string ext = path.extension().string();
+  return ext == ".png" || ext == ".pdf" || ext == ".svg";
+}
+
 // DIR/figures/NAME if NAME is a relative path of plain segments whose real
 // path is a regular file inside DIR/figures; else a 400 or 404.
 fs::path FigurePath(const std::string& dir, const std::string& name) {
@@ -54,7 +60,7 @@ fs::path FigurePath(const std::string& dir, const std::string& name) {
   const fs::path root = fs::canonical(fs::path(dir) / "figures", ec);
   if (ec) throw HttpError(404, "no figures in " + dir);
   const fs::path file = fs::canonical(root / name, ec);
-  if (ec || !fs::is_regular_file(file, ec)) throw HttpError(404, "no figure '" + name + "'");
+  if (ec || !fs::is_regular_file(file, ec) || !IsFigure(file)) throw HttpError(404, "no figure '" + name + "'");
   const fs::path relative = file.lexically_relative(root);
   if (relative.empty() || *relative.begin() == "..")
     throw HttpError(400, "bad figure path '" + name + "' (outside " + dir + "/figures)");
@@ -69,9 +75,11 @@ void GetFigures(const std::string& dir, const httplib::Request& req, httplib::Re
   if (fs::is_directory(root, ec)) {
     std::vector<std::string> found;
     for (const auto& e : fs::recursive_directory_iterator(root, ec)) {
-      const std::string ext = e.path().extension().string();
-      if (!e.is_symlink(ec) && e.is_regular_file(ec) && (ext == ".png" || ext == ".pdf" || ext == ".svg"))
-        found.push_back(e.path().lexically_relative(root).generic_string());
+      const std::string name = e.path().lexically_relative(root).generic_string();
+      // What /figures/NAME serves, and only that: no hidden segment.
+      if (!e.is_symlink(ec) && e.is_regular_file(ec) && IsFigure(e.path()) && name[0] != '.' &&
+          name.find("/.") == std::string::npos)
+        found.push_back(name);
     }
     std::sort(found.begin(), found.end());
     for (const std::string& n : found) names.push_back(n);

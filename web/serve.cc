@@ -38,6 +38,20 @@ void CheckAsset(const std::string& path) {
                            ")");
 }
 
+// A query the routes would misread, said before any route runs: their
+// values are matched as text, so a NUL byte (the decoded value stops at it)
+// or a key given twice (two filters ANDed into nothing) is refused.
+std::string BadQuery(const httplib::Request& req) {
+  const std::string& target = req.target;
+  for (std::size_t at = target.find('%'); at != std::string::npos; at = target.find('%', at + 1))
+    if (target.compare(at, 3, "%00") == 0) return "a NUL byte (%00) in the query";
+  std::set<std::string> seen;
+  for (const auto& [name, value] : req.params)
+    if (!seen.insert(name).second)
+      return "query parameter '" + name + "' given twice (list values with commas: a,b)";
+  return "";
+}
+
 }  // namespace
 
 void Serve(const ServeOptions& options, const std::function<void(const std::string&)>& on_listening) {
@@ -68,7 +82,10 @@ void Serve(const ServeOptions& options, const std::function<void(const std::stri
     }
   });
   server.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
-    if (res.body.empty()) SendError(res, res.status, "no such page: " + req.path);
+    if (!res.body.empty()) return;
+    if (res.status == 404) SendError(res, 404, "no such page: " + req.path);
+    else if (res.status == 414) SendError(res, 414, "the URL is too long");
+    else SendError(res, res.status, "bad request (HTTP status " + std::to_string(res.status) + ")");
   });
 
   // cpp-httplib's default sets SO_REUSEPORT, with which a second server
@@ -93,15 +110,21 @@ void Serve(const ServeOptions& options, const std::function<void(const std::stri
       (ipv6 ? "[" + options.host + "]" : options.host) + ":" + std::to_string(port);
   // On a loopback address only this machine's own names are answered: a web
   // page elsewhere that rebinds its DNS name to 127.0.0.1 cannot read the store.
-  if (options.host.rfind("127.", 0) == 0 || options.host == "localhost" || options.host == "::1") {
-    const std::set<std::string> names = {authority, "localhost:" + std::to_string(port)};
-    server.set_pre_routing_handler([names](const httplib::Request& req, httplib::Response& res) {
-      if (names.count(req.get_header_value("Host")) != 0) return httplib::Server::HandlerResponse::Unhandled;
+  std::set<std::string> names;  // empty: any Host
+  if (options.host.rfind("127.", 0) == 0 || options.host == "localhost" || options.host == "::1")
+    names = {authority, "localhost:" + std::to_string(port)};
+  server.set_pre_routing_handler([names](const httplib::Request& req, httplib::Response& res) {
+    if (!names.empty() && names.count(req.get_header_value("Host")) == 0) {
       SendError(res, 403, "host '" + req.get_header_value("Host") + "' not served (use " +
                               *names.begin() + ")");
       return httplib::Server::HandlerResponse::Handled;
-    });
-  }
+    }
+    if (const std::string problem = BadQuery(req); !problem.empty()) {
+      SendError(res, 400, problem);
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    return httplib::Server::HandlerResponse::Unhandled;
+  });
   on_listening("http://" + authority + "/");
 
   std::thread waiter([&server, stop_signals] {

@@ -89,6 +89,9 @@ def server(store_dir, db):
     with open(os.path.join(store_dir, "figures", "area.png"), "wb") as f:
         f.write(b"\x89PNG\r\n\x1a\n fake png for the test")
     os.symlink("/etc/passwd", os.path.join(store_dir, "figures", "outside.png"))
+    for name in (".hidden.png", "notes.txt"):  # neither listed nor served
+        with open(os.path.join(store_dir, "figures", name), "wb") as f:
+            f.write(b"not a figure to show")
     s = Server(store_dir)
     yield s
     assert s.stop() == 0

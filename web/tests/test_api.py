@@ -143,7 +143,8 @@ def test_profile_ratios_are_to_the_best_of_each_instance(server, db):
 
 
 def test_figures_are_listed_and_served(server, store_dir):
-    assert server.json("/api/figures") == ["area.png"]  # not the link out of DIR
+    # Listed: what /figures/ serves (no hidden file, no text, not the link out of DIR).
+    assert server.json("/api/figures") == ["area.png"]
     status, headers, body = server.get("/figures/area.png")
     assert status == 200 and headers["Content-Type"] == "image/png"
     assert body == open(os.path.join(store_dir, "figures", "area.png"), "rb").read()
@@ -190,6 +191,11 @@ def test_the_page_and_its_assets(server):
     ("/api/profile?metric=consistency_rate", 400, "lower is better"),
     ("/api/options?algorithm=hc4", 400, "no query parameters"),
     ("/api/nothing", 404, "no such page"),
+    ("/api/runs?algorithm=hc4%00x", 400, "NUL byte"),
+    ("/api/runs?algorithm=hc4&algorithm=bc4", 400, "'algorithm' given twice"),
+    ("/api/runs?limit=1&limit=2", 400, "'limit' given twice"),
+    ("/figures/notes.txt", 404, "no figure"),
+    ("/api/runs?x=" + "a" * 9000, 414, "too long"),
 ])
 def test_bad_requests_get_a_4xx_with_a_message(server, path, status, words):
     assert words in server.json(path, status=status)["error"]

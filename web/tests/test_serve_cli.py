@@ -44,10 +44,26 @@ def test_a_port_in_use_is_the_environment(store_dir):
     assert "cannot bind" in r.stderr
 
 
+def test_a_port_another_server_holds_is_the_environment(store_dir):
+    # Two servers on one port would split the requests between two stores.
+    first = subprocess.Popen([binary(), "serve", store_dir, "--port", "0"],
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        port = first.stdout.readline().strip().rsplit(":", 1)[1].rstrip("/")
+        r = subprocess.run([binary(), "serve", store_dir, "--port", port],
+                           capture_output=True, text=True, timeout=30)
+        assert r.returncode == 3, r.stderr
+        assert "cannot bind" in r.stderr
+    finally:
+        first.terminate()
+        first.wait(10)
+
+
 @pytest.mark.parametrize("args, words", [
     (["/nonexistent/dir"], "no such file"),
     ([HERE], "no such file"),
     (["--port", "70000"], "70000"),
+    (["--host", ""], "must not be empty"),
 ])
 def test_bad_input_exits_2(store_dir, args, words):
     if args[0].startswith("--"):
