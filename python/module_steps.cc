@@ -15,6 +15,7 @@
 #include "algorithms/registry.h"
 #include "harness/runner.h"
 #include "problems/registry.h"
+#include "core/params.h"
 #include "python/module_internal.h"
 #include "python/module_views.h"
 
@@ -98,6 +99,9 @@ class PyEstimator {
   std::string Needs() const { return std::string(ToString(info_->needs)); }
 
   PyEstimate StepOnce(const PyStep& s, double timeout_s) {
+    if (!(timeout_s > 0))  // as solve(timeout=...) and `solve --timeout`
+      throw py::value_error("timeout_s = " + FormatDouble(timeout_s) +
+                            ": must be a number of seconds > 0 (inf: no limit)");
     PyEstimate out;
     py::gil_scoped_release release;
     const StopCondition stop = timeout_s < std::numeric_limits<double>::infinity()
@@ -158,7 +162,11 @@ void BindSteps(py::module_& m) {
       })
       .def_property_readonly("centre", [](const PyEstimate& e) { return Array(EstimateOf(e).Centre()); })
       .def("contains", [](const PyEstimate& e, const std::vector<double>& point) {
-        return EstimateOf(e).Contains(point);
+        const Estimate& estimate = EstimateOf(e);
+        if (point.size() != estimate.Hull().size())
+          throw py::value_error("a point needs " + std::to_string(estimate.Hull().size()) +
+                                " components, got " + std::to_string(point.size()));
+        return estimate.Contains(point);
       }, py::arg("point"))
       .def_property_readonly("contained", [](const PyEstimate& e) -> py::object {
         if (e.record.contained < 0) return py::none();

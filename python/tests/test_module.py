@@ -207,3 +207,15 @@ def test_an_open_store_sees_a_later_sweep_and_refuses_bad_queries(tmp_path):
         with pytest.raises(ValueError, match="not authorized"):
             store.query(f"ATTACH DATABASE '{attached}' AS other")
         assert not attached.exists()
+
+
+def test_a_step_limit_and_a_point_are_checked_as_solves_are():
+    step = next(iter(icpbench.problem("car-track", seed=1, w=3, steps=1)))
+    estimator = icpbench.estimator("hc4")
+    for bad in (-1, 0, math.nan):
+        with pytest.raises(ValueError, match="must be a number of seconds > 0"):
+            estimator.step(step, timeout_s=bad)
+    estimate = estimator.step(step)
+    assert estimate.contains(step.truth)
+    with pytest.raises(ValueError, match="a point needs 3 components, got 1"):
+        estimate.contains([1.0])
