@@ -6,6 +6,7 @@
 // re-run's hull equals the stored step's (matches_store). The store is only
 // read.
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -21,6 +22,10 @@ namespace icp::web {
 namespace {
 
 constexpr double kTimeLimitS = 10;        // a re-run longer than this is a 503
+// Re-runs at once at most: the rest of the server's threads stay free for
+// the quick answers (ten slow re-runs had made a summary wait 9 s).
+constexpr int kMaxReruns = 2;
+std::atomic<int> reruns_in_flight{0};
 constexpr std::size_t kMaxBoxes = 5000;   // a paving's boxes sent, inner first
 constexpr int kMaxCells = 200;            // an accumulator image's rows and columns
 constexpr int kMaxParticles = 2000;       // particles sent
@@ -173,6 +178,16 @@ void GetEstimate(const std::string& dir, const httplib::Request& req, httplib::R
     estimator = algorithm->make(run.algorithm_params, run.seed);
   } catch (const std::exception& e) {
     throw HttpError(422, "run " + id + " cannot be re-run: " + e.what());
+  }
+  struct Slot {  // one of the kMaxReruns, held while this re-run lasts
+    Slot() : taken(++reruns_in_flight <= kMaxReruns) {}
+    ~Slot() { --reruns_in_flight; }
+    bool taken;
+  } slot;
+  if (!slot.taken) {
+    res.set_header("Retry-After", "5");
+    throw HttpError(503, "the server is re-running " + std::to_string(kMaxReruns) +
+                             " other runs: retry in a few seconds");
   }
   const auto start = std::chrono::steady_clock::now();
   const StopCondition stop = StopCondition::After(std::chrono::duration<double>(kTimeLimitS));
