@@ -81,7 +81,11 @@ class AccumulatorEstimator : public RelaxedEstimator {
     const Grid grid = AccumulatorGrid(prior, view.prior, space, p_.cells);
     bool stopped = false;
     std::vector<cv::Mat> counts = SourceAccumulators(grid, view, stop, &out.summary.work, &stopped);
-    if (stopped) out.summary.status = ContractStatus::kStopped;
+    if (stopped) {
+      out.summary.status = ContractStatus::kStopped;
+      out.summary.message =
+          "time limit reached: the cells not yet examined count every measurement pending there";
+    }
     const int m = static_cast<int>(view.measurements.size());
     double max_count = 0;
     cv::minMaxLoc(counts.back(), nullptr, &max_count);

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+
 #include <sys/resource.h>
 
 #include <cmath>
@@ -18,6 +20,17 @@ namespace icp {
 namespace {
 
 using testing::Lines;
+
+// Stopped by its time limit, it says so and why the box is still sound
+// (the message was empty, unlike q-relaxed's and polynomial's).
+TEST(AccumulatorTest, AStoppedCountSaysWhy) {
+  const auto c = Lines(1, 20, 7);
+  const StepResult r = MakeAccumulator({{"cells", "400"}}, 0)
+                           ->Step(c.views, StopCondition::After(std::chrono::duration<double>(0)));
+  EXPECT_EQ(r.summary.status, ContractStatus::kStopped);
+  EXPECT_NE(r.summary.message.find("time limit reached"), std::string::npos) << r.summary.message;
+  EXPECT_TRUE(r.estimate->Contains(c.truth));
+}
 
 TEST(AccumulatorTest, TheHighestCountHoldsTheTruth) {
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
