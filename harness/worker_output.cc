@@ -15,8 +15,8 @@
 #include <variant>
 
 #include "core/estimate.h"
-#include "harness/metrics.h"
 #include "core/rounding.h"
+#include "harness/metrics.h"
 
 namespace icp {
 
