@@ -327,6 +327,11 @@ std::vector<ComparisonRow> EvaluateClaims(const ClaimsFile& file, ClaimContext& 
     }
     if (!m.missing.empty()) {
       r.reason = m.missing;
+    } else if (c.rule != "same_text" && std::isnan(m.value)) {
+      // Runs were found but give no value (no truth to compare with, no
+      // seed with the metric): nothing to judge, not a difference.
+      r.measured = m.text.empty() ? "—" : m.text;
+      r.reason = "the runs it reads give no value (e.g. no truth to compare with)";
     } else {
       r.measured = m.text.empty() ? FormatNumber(m.value) : m.text;
       r.verdict = RuleHolds(c, m) ? Verdict::kMatch : Verdict::kDiffers;

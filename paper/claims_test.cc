@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <string>
 #include <vector>
 
@@ -301,6 +303,18 @@ TEST(Paper004ClaimsTest, ConsistencyIsJudgedOnEveryStep) {
   const ComparisonRow pl = ClaimRow(EvaluateClaims(ClaimsOf("paper004"), runs), "pl-narrower");
   EXPECT_EQ(pl.verdict, Verdict::kNoData);
   EXPECT_NE(pl.reason.find("experiment window"), std::string::npos) << pl.reason;
+}
+
+// Runs without a truth give no consistency: no data, not a difference (it
+// had read "differs: a box that loses the truth is unsound").
+TEST(Paper004ClaimsTest, RunsWithoutATruthAreNoData) {
+  std::vector<RunRecord> runs = {InExperiment(MakeRun("hc4", {}, {}, 1, {1e-5, 1e-5}), "table1")};
+  for (StepRecord& s : runs[0].steps) s.contained = -1;
+  runs[0].metrics = ComputeMetrics(runs[0].steps);
+  ASSERT_TRUE(std::isnan(runs[0].metrics.consistency_rate));
+  const ComparisonRow r = ClaimRow(EvaluateClaims(ClaimsOf("paper004"), runs), "eq31-consistent");
+  EXPECT_EQ(r.verdict, Verdict::kNoData) << r.measured << ": " << r.reason;
+  EXPECT_NE(r.reason.find("give no value"), std::string::npos) << r.reason;
 }
 
 }  // namespace
