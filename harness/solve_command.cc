@@ -151,9 +151,13 @@ std::string SolveResultToJson(const SolveResult& r) {
 
 std::string SolveResultToText(const SolveResult& r) {
   std::string text = "algorithm: " + r.algorithm + "\n";
-  text += "status: " + std::string(r.box.IsEmpty() ? "empty" : "nonempty") + " (" +
-          std::string(ToString(r.summary.status)) +
-          (r.summary.message.empty() ? "" : ": " + r.summary.message) + ")\n";
+  // A message that already names the status ("stopped (time limit)") is
+  // not prefixed with it again.
+  const std::string status(ToString(r.summary.status));
+  const std::string detail = r.summary.message.empty()                  ? status
+                             : r.summary.message.rfind(status, 0) == 0 ? r.summary.message
+                                                                       : status + ": " + r.summary.message;
+  text += "status: " + std::string(r.box.IsEmpty() ? "empty" : "nonempty") + " (" + detail + ")\n";
   if (!r.box.IsEmpty()) {
     std::size_t width = 0;
     for (const auto& name : r.csp.names()) width = std::max(width, name.size());

@@ -281,7 +281,7 @@ class Reader {
       if (runs > static_cast<double>(kMaxRuns))
         Fail(node, where, "the run matrix has " +
                               std::to_string(static_cast<unsigned long long>(std::min(runs, 1e18))) + " runs, more than the limit of " +
-                              std::to_string(kMaxRuns) + "; split the spec or use --shard");
+                              std::to_string(kMaxRuns) + "; split the spec (each shard expands the whole matrix)");
     }
     for (const Entry& p : probs) {
       const ProblemInfo& pinfo = FindProblem(p.name);
