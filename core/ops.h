@@ -99,7 +99,7 @@ inline bool MayJump(Op op, const Interval& a, const Interval& b, const Interval&
 // (A unary op gets db = da.)
 inline Interval RawDerivOp(Op op, const Interval& a, const Interval& b, const Interval& z,
                         const Interval& da, const Interval& db, int n) {
-  const Interval kZero(0.0);
+  static const Interval kZero(0.0);
   if (MayJump(op, a, b, z, n) && !(da == kZero && db == kZero)) return Interval();
   switch (op) {
     case Op::kAdd: return da + db;

@@ -36,7 +36,6 @@ constexpr char kNamingRule[] =
     "a name is lower-case letters, digits, '-' and '_', starting with a letter or digit, at most "
     "64 characters";
 
-
 // The name as a message shows it: quoted, control characters escaped (a
 // newline would break the message's line).
 std::string Quoted(const std::string& name) {

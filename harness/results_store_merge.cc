@@ -221,7 +221,6 @@ MergeSummary MergeStores(const std::string& out_dir, const std::vector<std::stri
   auto remove_tmp = [&] {
     for (const char* suffix : {"", "-wal", "-shm", "-journal"}) fs::remove(tmp_path + suffix, ec);
   };
-  remove_tmp();
   try {
     {
       ResultsStore out(tmp_path);

@@ -1,10 +1,5 @@
 #include "harness/sweep_recorder.h"
 
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <filesystem>
 #include <ostream>
 #include <set>

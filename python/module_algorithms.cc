@@ -149,7 +149,7 @@ class PythonEstimator : public Estimator {
         throw py::value_error("step() returned lo " + FormatDouble(l[i]) + " and hi " + FormatDouble(h[i]) +
                               " at component " + std::to_string(i) +
                               " (NaN or lo > hi); return None for an empty estimate");
-    return BoxFromBounds(lo, hi, n);
+    return BoxFromBounds(l, h, n);
   }
   static Property ToProperty(const std::string& name, const py::handle& value) {
     if (py::isinstance<py::bool_>(value) || py::isinstance<py::int_>(value))

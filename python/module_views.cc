@@ -26,8 +26,10 @@ py::tuple BoundsOf(const Box& box) {
 }
 
 Box BoxFromBounds(const py::handle& lo, const py::handle& hi, std::size_t size) {
-  const auto l = lo.cast<std::vector<double>>();
-  const auto h = hi.cast<std::vector<double>>();
+  return BoxFromBounds(lo.cast<std::vector<double>>(), hi.cast<std::vector<double>>(), size);
+}
+
+Box BoxFromBounds(const std::vector<double>& l, const std::vector<double>& h, std::size_t size) {
   if (l.size() != size || h.size() != size)
     throw py::value_error("a box needs " + std::to_string(size) + " lower and upper bounds, got " +
                           std::to_string(l.size()) + " and " + std::to_string(h.size()));
@@ -245,7 +247,7 @@ void BindViews(py::module_& m) {
       }, py::arg("n"), py::arg("seed"))
       .def("log_likelihood", [](const PyView& v, const std::vector<double>& state) {
         const ProbabilisticView& model = ModelOf(v);
-        if (state.size() != v.views->space.size())
+        if (state.size() != static_cast<std::size_t>(v.views->space.size()))
           throw py::value_error("a state needs " + std::to_string(v.views->space.size()) +
                                 " components, got " + std::to_string(state.size()));
         return model.log_likelihood(state);

@@ -26,6 +26,8 @@ py::array_t<double> Array(const std::vector<double>& values);
 py::tuple BoundsOf(const Box& box);
 // (lo, hi) sequences as a box; throws ValueError unless both have `size` bounds.
 Box BoxFromBounds(const py::handle& lo, const py::handle& hi, std::size_t size);
+// The same from bounds already converted.
+Box BoxFromBounds(const std::vector<double>& lo, const std::vector<double>& hi, std::size_t size);
 
 void BindViews(py::module_& m);
 
