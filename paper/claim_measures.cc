@@ -280,6 +280,19 @@ RunSelector ExplainedSelector(const Claim& claim, const char* key) {
   return ParseSelector(node);
 }
 
+std::string UnexplainedBecause(const Claim& claim, const ClaimContext& context) {
+  if (!claim.if_differs["runs"] && !claim.measure["runs"]) return "";
+  bool any = false;
+  for (const GroupSummary* g : Matching(context, ExplainedSelector(claim, "runs")))
+    for (const RunRecord* run : g->ok_runs) {
+      if (!RecordedRunsOnly(*run)) return "";
+      any = true;
+    }
+  return any ? "its explanation reads the runs' steps, and these runs were stored without them "
+               "(record: runs)"
+             : "";
+}
+
 std::string MissingRuns(const ClaimContext& context, const RunSelector& s) {
   return "no ok run matches " + SelectorText(s) + ": icpbench run " + context.spec +
          " produces them";

@@ -55,6 +55,11 @@ RunSelector ExplainedSelector(const Claim& claim, const char* key);
 // run SPEC produces them".
 std::string MissingRuns(const ClaimContext& context, const RunSelector& s);
 
+// Why an explainer found nothing, when the store can tell: the runs its
+// claim picks were all stored with `record: runs` (no steps to read); ""
+// otherwise.
+std::string UnexplainedBecause(const Claim& claim, const ClaimContext& context);
+
 // Each paper's measures and explainers (paper/<paper>_claims.cc).
 void AddPaper000ClaimFunctions(ClaimFunctions* functions);
 void AddPaper002ClaimFunctions(ClaimFunctions* functions);

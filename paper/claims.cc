@@ -5,6 +5,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "paper/claim_measures.h"
 #include "paper/claims_files.h"
 
 namespace icp {
@@ -344,7 +345,10 @@ std::vector<ComparisonRow> EvaluateClaims(const ClaimsFile& file, ClaimContext& 
             r.reason = std::string(kNotMeasured) + " (" + e.what() + ")";
           }
         }
-        if (r.reason.empty()) r.reason = kNotMeasured;
+        if (r.reason.empty()) {
+          const std::string because = c.explain.empty() ? "" : UnexplainedBecause(c, context);
+          r.reason = because.empty() ? kNotMeasured : std::string(kNotMeasured) + " (" + because + ")";
+        }
       }
     }
     rows.push_back(std::move(r));

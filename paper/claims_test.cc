@@ -289,6 +289,20 @@ TEST(Paper000ClaimsTest, EveryDifferenceHasAReason) {
   EXPECT_GE(differ, 8);
 }
 
+// A store made with `record: runs` keeps run metrics but no steps: a claim
+// on the area still gets its verdict, and an explainer that reads steps
+// says that is why it cannot explain.
+TEST(Paper000ClaimsTest, AnExplainerWithoutStepsSaysSo) {
+  std::vector<RunRecord> runs = Table1(1e-3, 1e-3, 1e-3, 1e-3);
+  for (RunRecord& r : runs) {
+    r = WithArea(std::move(r), 2000, 1);
+    r.steps.clear();  // what record: runs stores; metrics stay
+  }
+  const ComparisonRow r = ClaimRow(EvaluateClaims(ClaimsOf("paper000"), runs), "fig2-area-w20");
+  ASSERT_EQ(r.verdict, Verdict::kDiffers) << r.measured;
+  EXPECT_NE(r.reason.find("record: runs"), std::string::npos) << r.reason;
+}
+
 TEST(Paper004ClaimsTest, ConsistencyIsJudgedOnEveryStep) {
   std::vector<RunRecord> runs = {InExperiment(MakeRun("hc4", {}, {}, 1, {1e-5, 1e-5}), "table1")};
   EXPECT_EQ(ClaimRow(EvaluateClaims(ClaimsOf("paper004"), runs), "eq31-consistent").verdict,

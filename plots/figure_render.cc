@@ -267,6 +267,20 @@ std::string RunsOnlyText(int n) {
   return RunCount(n) + (n == 1 ? " was " : " were ") + RecordedWithRunsOnly({});
 }
 
+bool SkippedForOneStep(const FigureText& text, const std::vector<std::vector<std::vector<double>>>& rows,
+                       PlotOutput* out) {
+  const auto two_points = [](const std::vector<std::vector<double>>& r) {
+    return std::count_if(r.begin(), r.end(), [](const std::vector<double>& row) {
+             return HasPoint({"", {row}, ""});
+           }) >= 2;
+  };
+  if (std::any_of(rows.begin(), rows.end(), two_points)) return false;
+  out->messages.push_back(text.name +
+                          ": skipped: no run it draws has two steps with values (a line over "
+                          "the steps cannot show one)");
+  return true;
+}
+
 void Skip(const FigureText& text, PlotOutput* out, const std::vector<const RunRecord*>& runs) {
   const std::vector<const RunRecord*> runs_only = RunsOnlyOf(runs);
   if (runs_only.empty()) {

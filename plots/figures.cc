@@ -4,6 +4,7 @@
 #include "plots/figures.h"
 
 #include <filesystem>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,6 +20,26 @@ std::string RunLabel(const RunRecord& r) {
   if (!r.spec.problem_params.empty()) label += ", " + CompactParams(r.spec.problem_params);
   return label + ")";
 }
+
+namespace {
+
+// A figure skipped now but drawn by an earlier plot into the same
+// directory: its old files would pass for this store's (the paper and
+// `serve` pick figures up by name). Messages "NAME: skipped: ..." name it.
+void RemoveSkippedFigures(const PlotOutput& out, const std::string& out_dir) {
+  const std::set<std::string> written(out.files.begin(), out.files.end());
+  for (const std::string& m : out.messages) {
+    const std::size_t colon = m.find(": skipped: ");
+    if (colon == std::string::npos) continue;
+    for (const char* ext : {".png", ".pdf", ".svg"}) {
+      const std::string file = (std::filesystem::path(out_dir) / (m.substr(0, colon) + ext)).string();
+      std::error_code ignored;  // nothing there is the usual case
+      if (!written.count(file)) std::filesystem::remove(file, ignored);
+    }
+  }
+}
+
+}  // namespace
 
 PlotOutput PlotRuns(const std::vector<RunRecord>& runs, const std::string& out_dir,
                     const FigureMaker& more) {
@@ -43,6 +64,7 @@ PlotOutput PlotRuns(const std::vector<RunRecord>& runs, const std::string& out_d
     out.messages.push_back("of the store's runs, " + RunsOnlyText(n) +
                            ": figures over steps (corridors, area, centre error, track, timing) "
                            "leave them out");
+  RemoveSkippedFigures(out, out_dir);
   return out;
 }
 

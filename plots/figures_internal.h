@@ -109,6 +109,10 @@ double Positive(double v);
 
 // True when the series draws something: a function, or a row without NaN.
 bool HasPoint(const Series& s);
+// Skipped with that reason when no run's rows hold two points without NaN:
+// a line or band over the steps cannot show one step. True when skipped.
+bool SkippedForOneStep(const FigureText& text, const std::vector<std::vector<std::vector<double>>>& rows,
+                       PlotOutput* out);
 
 // Writes f as out_dir/NAME.png and .pdf in one gnuplot session and records
 // the files that came out non-empty.
@@ -164,6 +168,7 @@ using detail::plots::Figure;
 using detail::plots::Finite;
 using detail::plots::FooterHeight;
 using detail::plots::HasPoint;
+using detail::plots::SkippedForOneStep;
 using detail::plots::JoinedLabel;
 using detail::plots::kFontPt;
 using detail::plots::kFooterKey;

@@ -193,6 +193,43 @@ TEST(FiguresTest, SkipsWhatTheStoreLacks) {
   fs::remove_all(dir);
 }
 
+// A line or band over the steps shows nothing for a run of one step: the
+// figure says so instead of drawing an empty frame. Two steps draw.
+TEST(FiguresTest, OneStepRunsSkipTheFiguresOverSteps) {
+  if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
+  const fs::path dir = TempDir("figures_one_step");
+  fs::create_directories(dir);
+  const std::vector<RunRecord> one = {MakeRun("hc4", "car-track", {}, 1, 1, 1e-5, 1)};
+  PlotOutput out;
+  PlotCorridorFigure({"corridors", "", "none"}, Pointers(one), dir.string(), &out);
+  PlotAreaFigure({"area", "", "none"}, Pointers(one), dir.string(), &out);
+  ASSERT_EQ(out.messages.size(), 2u);
+  for (const std::string& m : out.messages)
+    EXPECT_NE(m.find("skipped: no run it draws has two steps"), std::string::npos) << m;
+  EXPECT_TRUE(out.files.empty());
+  const std::vector<RunRecord> two = {MakeRun("hc4", "car-track", {}, 1, 2, 1e-5, 1)};
+  PlotAreaFigure({"area", "", "none"}, Pointers(two), dir.string(), &out);
+  EXPECT_EQ(out.files, FigureFiles(dir, {"area"}));
+  fs::remove_all(dir);
+}
+
+// A figure a second plot skips loses the files a first plot drew of it:
+// they would pass for the new store's figure.
+TEST(FiguresTest, ASkippedFigureLeavesNoOldFile) {
+  if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
+  const fs::path dir = TempDir("figures_stale");
+  const std::vector<RunRecord> runs = {MakeRun("hc4", "chain", {{"w", "4"}}, 1, 30, 1e-5, 1)};
+  PlotRuns(runs, dir.string());
+  ASSERT_TRUE(fs::exists(dir / "fig_timing.png"));
+  std::ofstream(dir / "unrelated.png") << "kept";
+  const PlotOutput out = PlotRuns({}, dir.string());
+  EXPECT_TRUE(out.files.empty());
+  for (const char* f : {"fig_timing.png", "fig_timing.pdf", "fig_profile_time.png", "fig_profile_area.pdf"})
+    EXPECT_FALSE(fs::exists(dir / f)) << f;
+  EXPECT_TRUE(fs::exists(dir / "unrelated.png"));
+  fs::remove_all(dir);
+}
+
 TEST(FiguresTest, TimingShowsTheConfigurationWithTheMostAlgorithms) {
   std::vector<RunRecord> runs = PaperLikeRuns();  // 4 algorithms on the lap, 2 at each w
   // More CSPs, but fewer algorithms, and non-default parameters never count.

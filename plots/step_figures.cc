@@ -105,6 +105,9 @@ void PlotCorridorFigure(const FigureText& text, const std::vector<const RunRecor
     }
   }
   if (shown.empty()) return Skip(text, out, runs);
+  std::vector<std::vector<std::vector<double>>> per_variable = corridors[0];
+  per_variable.insert(per_variable.end(), corridors[1].begin(), corridors[1].end());
+  if (SkippedForOneStep(text, per_variable, out)) return;
   NoteRunsOnly(text, runs, out);
   // Runs whose corridors are equal at every step: one row of panels.
   const std::vector<std::vector<std::size_t>> groups = EqualGroups(both);
@@ -197,6 +200,7 @@ void PlotStepValueFigure(const FigureText& text, const std::string& y_label,
     rows.push_back(std::move(s.rows));
   }
   if (drawn.empty()) return Skip(text, out, runs);
+  if (SkippedForOneStep(text, rows, out)) return;
   NoteRunsOnly(text, runs, out);
   // Runs with the same values at every step and the same title extra: one
   // line under the joined label.

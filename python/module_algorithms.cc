@@ -15,6 +15,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -209,25 +210,39 @@ void Register(const std::string& name, py::object factory, const std::string& cl
   // The names a C++ plugin may use (they are spec keys and parts of run keys).
   if (const std::string rule = NameRuleViolation(name); !rule.empty())
     throw py::value_error("algorithm '" + name + "' is not a valid name: " + rule);
-  for (const AlgorithmInfo& a : Algorithms())
-    if (a.name == name) throw py::value_error("algorithm '" + name + "' is already registered");
-  for (const auto& [other, algorithm] : Registered())
-    if (algorithm.class_path == class_path)
-      throw py::value_error(class_path + " is already registered as '" + other + "'");
+  // The same class under the same name again (redefined in a notebook
+  // cell): its new definition replaces the old, the view it needs kept.
+  const auto same = Registered().find(name);
+  const bool redefinition = same != Registered().end() && same->second.class_path == class_path;
+  if (redefinition && FindAlgorithm(name).needs != view)
+    throw py::value_error("algorithm '" + name + "' is registered with another needs: a "
+                          "redefinition keeps its view (restart Python to change it)");
+  if (!redefinition) {
+    for (const AlgorithmInfo& a : Algorithms())
+      if (a.name == name) throw py::value_error("algorithm '" + name + "' is already registered");
+    for (const auto& [other, algorithm] : Registered())
+      if (algorithm.class_path == class_path)
+        throw py::value_error(class_path + " is already registered as '" + other + "'");
+  }
   for (const ParamInfo& p : declared) {
     if (p.name == "python" || p.name == "seed")
       throw py::value_error("'" + p.name + "' is a reserved parameter name");
     if (const std::string rule = NameRuleViolation(p.name); !rule.empty())
       throw py::value_error("parameter '" + p.name + "' is not a valid name: " + rule);
   }
-  // Checked before the registry knows the name: a failure leaves no trace.
+  // Checked before the registry knows the name: a failure leaves no trace
+  // (a redefinition that fails leaves the previous one).
+  std::optional<PythonAlgorithm> previous;
+  if (redefinition) previous = same->second;
   Registered()[name] = {std::move(factory), class_path, declared};
   try {
     ResolvePythonParams(name, {});  // the declared defaults must pass their own checks
   } catch (const std::exception& e) {
-    Registered().erase(name);
+    if (previous) Registered()[name] = *previous;
+    else Registered().erase(name);
     throw py::value_error(name + ": " + e.what());
   }
+  if (redefinition) return;
   RegisterAlgorithm({name, description.empty() ? class_path + " (Python)" : description,
                      &MakePythonEstimator, &ListParams, &ResolvePythonParams, view, {name, 5000, ""}});
   InstallForkHooks();

@@ -91,6 +91,12 @@ std::vector<std::string> Configuration(const GroupSummary& g) {
 
 constexpr double kConfigurationCm = 4.2;  // the LaTeX column that wraps
 
+// The note of a table with no row.
+std::string NoIndoorRuns() {
+  return std::string("No ok indoor-landmarks runs of experiment ") + kPaper002Experiment +
+         ": specs/default.yaml produces them.";
+}
+
 TextTable AccuracyTable(const std::vector<GroupSummary>& groups) {
   TextTable table;
   table.title = "Paper 002: a robot at a corridor's end tracking typed landmarks (indoor-landmarks)";
@@ -114,8 +120,7 @@ TextTable AccuracyTable(const std::vector<GroupSummary>& groups) {
     table.rows.push_back(std::move(row));
   }
   if (table.rows.empty()) {
-    table.notes.push_back(std::string("No ok indoor-landmarks runs of experiment ") +
-                          kPaper002Experiment + ": specs/default.yaml produces them.");
+    table.notes.push_back(NoIndoorRuns());
     return table;
   }
   const Paper002Published& p = kPaper002;
@@ -162,7 +167,10 @@ TextTable AssociationTable(const std::vector<GroupSummary>& groups) {
                 FormatWithInterval(RunMedian(g, RunMeanTime), 1e3)});
     table.rows.push_back(std::move(row));
   }
-  if (table.rows.empty()) return table;
+  if (table.rows.empty()) {
+    table.notes.push_back(NoIndoorRuns());
+    return table;
+  }
   table.notes.push_back(
       "Associations, summed over the seeds: right, a landmark's return given its landmark; "
       "wrong, given another, or a spurious return given any; missed, a landmark's return given "
@@ -254,11 +262,16 @@ std::vector<TextTable> Paper002Tables(const std::vector<RunRecord>& runs) {
 
 void Paper002Figures(const std::vector<RunRecord>& runs, const std::string& out_dir,
                      PlotOutput* out) {
-  const std::string skip = std::string("no ok run of experiment ") + kPaper002Experiment +
-                           " on both paths a and b (specs/default.yaml)";
+  // What FigureRun picks, said when it finds nothing.
+  auto skip = [](const std::string& algorithm) {
+    return "no ok run of " + algorithm +
+           " at its default parameters, with its steps stored, on both paths a and b of "
+           "indoor-landmarks at the problem's defaults otherwise (specs/default.yaml, experiment " +
+           std::string(kPaper002Experiment) + ")";
+  };
   // Fig. 9: the boxes on the map. Fig. 11's boxes are a few cm wide, hidden
   // under the track on the map: drawn as their interval errors instead.
-  FigureText fig9{"fig9_odometry", "Fig. 9: localization by odometry alone", skip};
+  FigureText fig9{"fig9_odometry", "Fig. 9: localization by odometry alone", skip("dead-reckoning")};
   if (const auto [a, b] = BothPaths(runs, "dead-reckoning"); a) {
     fig9.title += " (" + RunLabel(*a) + ")";
     PlotBoxTrackFigure(fig9, WallPoints(), {{"path a", a}, {"path b", b}}, Interval(-0.5, 16.8),
@@ -267,7 +280,8 @@ void Paper002Figures(const std::vector<RunRecord>& runs, const std::string& out_
     SkipFigure(fig9, {}, out);
   }
   FigureText fig11{"fig11_landmarks",
-                   "Fig. 11: localization with the landmarks, the boxes around the truth", skip};
+                   "Fig. 11: localization with the landmarks, the boxes around the truth",
+                   skip("landmark-tracking")};
   if (const auto [a, b] = BothPaths(runs, "landmark-tracking"); a) {
     fig11.title += " (" + RunLabel(*a) + ")";
     PlotCorridorFigure(fig11, {a, b}, {"path a", "path b"}, out_dir, out);

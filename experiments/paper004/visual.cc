@@ -221,8 +221,9 @@ void Paper004VisualFigures(const std::vector<RunRecord>& runs, const std::string
         p.ok_runs.front()->spec.algorithm_params.empty())
       sweep.push_back(p);
   PlotSweepFigure({"fig9_window", "DIGO's map and time per step against the window Xi",
-                   "no DIGO teach configuration of visual-landmarks with ok runs at two or more Xi "
-                   "(specs/default.yaml, experiment visual-teach)"},
+                   "no DIGO teach configuration (default parameters) of visual-landmarks on the "
+                   "paper's scene (every problem parameter but w at its default) with ok runs at "
+                   "two or more Xi (specs/default.yaml, experiment visual-teach)"},
                   "window Xi (steps)", sweep,
                   {{"Mean position-box volume of the landmarks (MPV, eq. 32)", "MPV (m^3)",
                     [](const RunRecord& r) { return PropertyOf(r, "mpv"); }},
@@ -234,7 +235,9 @@ void Paper004VisualFigures(const std::vector<RunRecord>& runs, const std::string
   for (const SweepPoint& p : sweep)
     if (p.value == kPaper004Table2.window) at_ten = p.ok_runs;
   const FigureText fig8{"fig8_landmark_boxes", "The landmarks' boxes shrinking (top view)",
-                        "no ok DIGO teach run at Xi = 10 (specs/default.yaml, visual-teach)"};
+                        "no ok DIGO teach run (default parameters) at Xi = 10 on the paper's scene "
+                        "(every problem parameter but w at its default; specs/default.yaml, "
+                        "experiment visual-teach)"};
   if (const RunRecord* run = SmallestSeed(at_ten)) {
     const int last = run->steps.empty() ? 0 : run->steps.back().step;
     PlotLandmarkBoxesFigure(fig8, *run, {1, last / 4, last / 2, last}, out_dir, out);

@@ -143,7 +143,7 @@ TEST(MarinaFiguresTest, WritesTheFourFiguresOrSaysWhyNot) {
                                       "fig6_9_particles" + no_run, "fig6_errors" + no_run}));
   if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
   const std::vector<RunRecord> runs = {
-      MarinaRun("q-relaxed", "known", 1, {MarinaStep(0, 0, 0.01), MarinaStep(1, 0.5, 0.01)}, {}),
+      MarinaRun("q-relaxed", "known", 1, {MarinaStep(0, 0.2, 0.01), MarinaStep(1, 0.5, 0.01)}, {}),
       MarinaRun("particle-filter", "known", 1,
                 {MarinaStep(0, 0.2, 0.01, "particles"), MarinaStep(1, 0.1, 0.01, "particles")}, {}),
   };
@@ -176,7 +176,7 @@ TEST(MarinaFiguresTest, RunsRecordedWithoutStepsAreNamed) {
   // An algorithm whose only run has no steps is left out with a note.
   if (GnuplotMissing()) GTEST_SKIP() << "gnuplot not installed";
   const std::vector<RunRecord> mixed = {
-      MarinaRun("q-relaxed", "known", 1, {MarinaStep(0, 0, 0.01), MarinaStep(1, 0.5, 0.01)}, {}),
+      MarinaRun("q-relaxed", "known", 1, {MarinaStep(0, 0.2, 0.01), MarinaStep(1, 0.5, 0.01)}, {}),
       runs[1]};
   const std::filesystem::path dir = TempDir("marina_figures_mixed");
   std::filesystem::create_directories(dir);

@@ -220,3 +220,33 @@ def test_a_registration_that_would_fail_every_run_is_refused_and_leaves_no_trace
     # A failed attempt leaves the name free.
     icpbench.register_algorithm("py-big", fresh(), params={"n": 2})
     assert "py-big" in {a["name"] for a in icpbench.algorithms()}
+
+
+def _versioned(version, needs_csp=True):
+    # The same class name twice, as a notebook cell run again defines it.
+    class Edited:
+        def step(self, view):
+            lo, hi = view.csp_domains
+            return view.newest_state(lo, hi)
+
+        def properties(self):
+            return {"version": version}
+    return Edited
+
+
+def test_a_class_redefined_under_its_name_replaces_the_old_one(tmp_path):
+    icpbench.register_algorithm("edited-python", _versioned(1))
+    icpbench.register_algorithm("edited-python", _versioned(2))  # the cell run again
+    assert icpbench.run(_spec("edited-python"), out=tmp_path)["ok"] == 1
+    with icpbench.open(tmp_path) as store:
+        props = store.step_properties(int(store.runs().iloc[0]["id"]))
+    assert set(props[props["name"] == "version"]["value"]) == {2}
+    # Its view stays: another `needs` is refused, and the last definition kept.
+    with pytest.raises(ValueError, match="another needs"):
+        icpbench.register_algorithm("edited-python", _versioned(3), needs="measurement-set")
+    # A redefinition that fails its checks leaves the previous one.
+    with pytest.raises(ValueError, match="choices|one of"):
+        icpbench.register_algorithm("edited-python", _versioned(4),
+                                    params={"mode": ("x", "a mode", ["a", "b"])})
+    listed = {a["name"]: a for a in icpbench.algorithms()}["edited-python"]
+    assert [p["name"] for p in listed["params"]] == ["python"]
