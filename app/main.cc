@@ -100,7 +100,8 @@ int main(int argc, char** argv) {
   std::string shard = "0/1";
   CLI::App* run_cmd = app.add_subcommand("run", "run an experiment spec (YAML) into a results store");
   run_cmd->add_option("SPEC", spec_file, "experiment spec, e.g. specs/default.yaml")->required();
-  run_cmd->add_option("--out,-o", run.out_dir, "output directory (default results/<spec name>)");
+  CLI::Option* run_out =
+      run_cmd->add_option("--out,-o", run.out_dir, "output directory (default results/<spec name>)");
   run_cmd->add_option("--jobs,-j", run.jobs,
                       "runs in parallel (default: the cores this process may use; with --mpi, on each rank)")
       ->capture_default_str();
@@ -212,6 +213,8 @@ int main(int argc, char** argv) {
                   << " (4 x the number of cores)\n";
         run.jobs = max_jobs;
       }
+      if (run_out->count() > 0 && run.out_dir.empty())
+        throw std::invalid_argument("--out is empty: give a directory, or leave --out out for results/<spec name>");
       if (run.out_dir.empty())
         run.out_dir = "results/" + std::filesystem::path(spec_file).stem().string();
       const bool terminal = isatty(STDERR_FILENO);
@@ -227,6 +230,9 @@ int main(int argc, char** argv) {
           std::cerr << ", shard " << run.shard_index << "/" << run.shard_count << " of them";
         std::cerr << ", " << run.jobs << " in parallel, results in " << icp::StorePath(run.out_dir) << "\n";
         s = icp::RunSweep(spec, run, std::cerr, terminal);
+        if (s.planned == 0 && !spec.runs.empty())
+          std::cerr << "icpbench: note: shard " << run.shard_index << "/" << run.shard_count
+                    << " holds none of the " << spec.runs.size() << " runs (more shards than runs)\n";
       }
       std::cerr << "icpbench: " << s.planned << " planned, " << s.already_stored
                 << " already stored, " << s.ok << " ok, " << s.failed << " failed, "

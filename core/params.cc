@@ -132,7 +132,7 @@ void ParamSet::Add(const std::string& name, double* field, const std::string& do
     double v;
     if (!ParseDouble(text, &v)) throw ParamError(where(text) + ": not a number");
     if (!range.Contains(v)) throw ParamError(where(text) + ": must be in " + range.ToString());
-    *field = v;
+    *field = v == 0 ? 0.0 : v;  // -0 is 0: one spelling, one run key
   };
   entries_.push_back(std::move(e));
 }

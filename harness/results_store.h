@@ -79,6 +79,7 @@ StepSource StepsOf(const RunRecord& run);
 struct StoredRun {
   std::string key;
   RunStatus status;
+  std::string spec_file;  // SPEC#experiment that stored it
 };
 
 // One replaced run summary, from table attempts.

@@ -211,9 +211,9 @@ bool ResultsStore::HasRun(const std::string& key) const {
 std::vector<StoredRun> ResultsStore::StoredRuns() const {
   std::lock_guard<std::mutex> lock(mutex_);
   std::vector<StoredRun> runs;
-  detail::Statement q(db_, path_, "SELECT key, status FROM runs ORDER BY id");
+  detail::Statement q(db_, path_, "SELECT key, status, spec_file FROM runs ORDER BY id");
   while (q.Step()) {
-    StoredRun r{q.ColumnText(0), RunStatus::kOk};
+    StoredRun r{q.ColumnText(0), RunStatus::kOk, q.ColumnText(2)};
     r.status = detail::ParseStoredStatus(q.ColumnText(1), path_, r.key);
     runs.push_back(std::move(r));
   }

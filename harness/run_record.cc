@@ -66,4 +66,9 @@ RunStatus ParseRunStatus(std::string_view text) {
                               "': must be one of ok|failed|timeout|skipped");
 }
 
+std::string ExperimentOf(const std::string& spec_file) {
+  const std::size_t hash = spec_file.rfind('#');
+  return hash == std::string::npos ? "" : spec_file.substr(hash + 1);
+}
+
 }  // namespace icp

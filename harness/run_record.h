@@ -109,6 +109,13 @@ struct RunRecord {
   Provenance provenance;
 };
 
+// The experiment of the spec that planned a run: what follows the last '#'
+// of its spec_file ("specs/default.yaml#table1" -> "table1"; a spec's path
+// may hold '#', an experiment's name may not); "" when none. A run that two
+// experiments of one spec plan is stored once, under the first.
+std::string ExperimentOf(const std::string& spec_file);
+inline std::string ExperimentOf(const RunRecord& run) { return ExperimentOf(run.spec_file); }
+
 }  // namespace icp
 
 #endif  // ICPBENCH_HARNESS_RUN_RECORD_H_

@@ -74,7 +74,17 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
                              ? StopCondition::After(std::chrono::duration<double>(spec.timeout_s))
                              : StopCondition();
     Step step;
+    int limit_reached_at = -1;  // the step after which the time limit had passed
     while (problem->Next(&step)) {
+      // The limit is checked between steps too: an algorithm whose steps are
+      // each short never sees it inside one. Only when a step is left to
+      // do: a run whose last step ends past the limit is complete.
+      if (limit_reached_at >= 0) {
+        record.status = RunStatus::kTimeout;
+        record.reason = "time limit of " + FormatDouble(spec.timeout_s) + " s reached at step " +
+                        std::to_string(limit_reached_at);
+        break;
+      }
       step_index = step.views.step;
       TakenStep taken = TakeStep(*estimator, algorithm.needs, step, stop);
       StepResult& result = taken.result;
@@ -90,14 +100,7 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
       guarantee.Judge(&r);
       sink(r);  // first: a step the sink could not take is not counted
       metrics.Add(r);
-      // The limit is checked between steps too: an algorithm whose steps are
-      // each short never sees it inside one.
-      if (stop.ShouldStop()) {
-        record.status = RunStatus::kTimeout;
-        record.reason = "time limit of " + FormatDouble(spec.timeout_s) + " s reached at step " +
-                        std::to_string(step_index);
-        break;
-      }
+      if (stop.ShouldStop()) limit_reached_at = step_index;
     }
   } catch (const InvalidResult& e) {
     record.status = RunStatus::kFailed;

@@ -326,31 +326,35 @@ testing::Result Icpbench(const std::string& args) {
   return testing::RunCommand(ICPBENCH_BINARY, args);
 }
 
-TEST(RunnerProcessTest, CliSigintStopsTheSweepWithItsMessageAndCode) {
-  const std::string dir = FreshDir("cli_sigint");
-  const std::string spec = testing::WriteFile("process_hang.yaml", kTwoHangs);
-  const std::string log = ::testing::TempDir() + "process_sigint.log";
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    dup2(fd, STDERR_FILENO);
-    execl(ICPBENCH_BINARY, ICPBENCH_BINARY, "run", spec.c_str(), "--out", dir.c_str(), "--jobs", "2",
-          static_cast<char*>(nullptr));
-    _exit(127);
+// SIGHUP (the terminal closed) stops a sweep as Ctrl-C does.
+TEST(RunnerProcessTest, CliSigintAndSighupStopTheSweepWithItsMessageAndCode) {
+  for (const int signal : {SIGINT, SIGHUP}) {
+    SCOPED_TRACE(signal);
+    const std::string dir = FreshDir("cli_sigint");
+    const std::string spec = testing::WriteFile("process_hang.yaml", kTwoHangs);
+    const std::string log = ::testing::TempDir() + "process_sigint.log";
+    const pid_t pid = fork();
+    if (pid == 0) {
+      const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      dup2(fd, STDERR_FILENO);
+      execl(ICPBENCH_BINARY, ICPBENCH_BINARY, "run", spec.c_str(), "--out", dir.c_str(), "--jobs", "2",
+            static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    std::vector<pid_t> workers;
+    ASSERT_TRUE(WaitFor([&] { return (workers = LiveChildrenOf(pid)).size() == 2; }, 5));
+    kill(pid, signal);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 128 + signal);
+    std::ifstream in(log);
+    const std::string out((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(out.find("icpbench: interrupted: 2 runs in flight were stopped, 0 finished runs kept"),
+              std::string::npos)
+        << out;
+    for (pid_t w : workers) EXPECT_FALSE(Alive(w));
   }
-  std::vector<pid_t> workers;
-  ASSERT_TRUE(WaitFor([&] { return (workers = LiveChildrenOf(pid)).size() == 2; }, 5));
-  kill(pid, SIGINT);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 130);
-  std::ifstream in(log);
-  const std::string out((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  EXPECT_NE(out.find("icpbench: interrupted: 2 runs in flight were stopped, 0 finished runs kept"),
-            std::string::npos)
-      << out;
-  for (pid_t w : workers) EXPECT_FALSE(Alive(w));
 }
 
 TEST(RunnerProcessTest, CliJobsAreCappedAndMustBePositive) {

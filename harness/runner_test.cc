@@ -104,6 +104,15 @@ TEST(RunnerTest, TheTimeLimitStopsARunBetweenShortSteps) {
   EXPECT_EQ(static_cast<std::size_t>(r.metrics.steps), r.steps.size());
 }
 
+// A run whose last step ends past the limit did every step: it is ok, not
+// a timeout (which `run` would redo every time).
+TEST(RunnerTest, ARunWhoseLastStepEndsPastTheLimitIsComplete) {
+  RunSpec spec{"fault", {{"mode", "slow"}, {"slow_ms", "150"}}, "car-track", {{"steps", "2"}}, 1, 0.2};
+  const RunRecord r = ExecuteRun(spec);
+  EXPECT_EQ(r.status, RunStatus::kOk) << r.reason;
+  EXPECT_EQ(r.steps.size(), 2u);
+}
+
 TEST(RunnerTest, FaultsAreRecordedAndTheSweepGoesOn) {
   const std::string dir = FreshDir("faults");
   SweepSummary s = Sweep(R"(

@@ -41,7 +41,12 @@ class Reader {
 
   // yaml-cpp keeps the first of duplicated keys silently and lets lookups
   // see only it, so every mapping of the document is checked once up front.
+  // Once: an alias is its anchor's node (the same mark), so nested aliases,
+  // each naming the one before twice, cost no more than their text.
   void CheckDocument(const YAML::Node& node, const std::string& where) const {
+    if ((node.IsSequence() || node.IsMap()) && node.Mark().pos >= 0 &&
+        !checked_.insert(node.Mark().pos).second)
+      return;
     if (node.IsSequence()) {
       for (std::size_t i = 0; i < node.size(); ++i)
         CheckDocument(node[i], where + "[" + std::to_string(i) + "]");
@@ -74,6 +79,14 @@ class Reader {
 
   static std::string Join(const std::string& where, const std::string& key) {
     return where.empty() ? key : where + "." + key;
+  }
+
+  // Runs are stored under SPEC#name, read back after the last '#'.
+  std::string ExperimentName(const YAML::Node& node, const std::string& key) const {
+    std::string name = Scalar(node, key);
+    if (name.find('#') != std::string::npos)
+      Fail(node, key, "'" + name + "': an experiment's name cannot hold '#' (runs are stored under SPEC#NAME)");
+    return name;
   }
 
   std::string Scalar(const YAML::Node& node, const std::string& key) const {
@@ -228,6 +241,20 @@ class Reader {
     };
     std::vector<Entry> algs, probs;
     std::set<std::string> legacy_carry;
+    // The matrix's size is checked as each entry is read, before anything is
+    // resolved or expanded: many large grids (YAML aliases make them cheap to
+    // write) must not exhaust memory before the limit is seen.
+    double a_points = 0, p_points = 0;
+    auto check_size = [&](const YAML::Node& at_node, const std::string& at) {
+      const double runs = std::max(a_points, 1.0) * std::max(p_points, 1.0) *
+                              static_cast<double>(std::max<std::size_t>(seeds.size(), 1)) +
+                          static_cast<double>(spec->runs.size());
+      if (runs > static_cast<double>(kMaxRuns))
+        Fail(at_node, at, "the run matrix has at least " +
+                              std::to_string(static_cast<unsigned long long>(std::min(runs, 1e18))) +
+                              " runs, more than the limit of " + std::to_string(kMaxRuns) +
+                              "; split the spec (each shard expands the whole matrix)");
+    };
     for (std::size_t i = 0; i < algorithms.size(); ++i) {
       const std::string at = Join(where, "algorithms[" + std::to_string(i) + "]");
       auto [alg, grid] = Plugin(algorithms[i], at);
@@ -236,11 +263,15 @@ class Reader {
       } catch (const std::invalid_argument& e) {
         Fail(algorithms[i], at, e.what());
       }
+      a_points += static_cast<double>(grid.size());
+      check_size(algorithms[i], at);
       algs.push_back({alg, grid, algorithms[i], at});
     }
     for (std::size_t i = 0; i < problems.size(); ++i) {
       const std::string at = Join(where, "problems[" + std::to_string(i) + "]");
       auto [prob, grid] = Plugin(problems[i], at);
+      p_points += static_cast<double>(grid.size());
+      check_size(problems[i], at);
       const ProblemInfo* info = nullptr;
       try {
         info = &FindProblem(prob);
@@ -271,18 +302,6 @@ class Reader {
       }
       a.grid = ResolveGrid(a.node, a.at, a.name, a.grid, info.resolve);
     }
-    {  // the size of this experiment's matrix, before expanding it
-      std::size_t a_points = 0, p_points = 0;
-      for (const Entry& a : algs) a_points += a.grid.size();
-      for (const Entry& p : probs) p_points += p.grid.size();
-      const double runs = static_cast<double>(a_points) * static_cast<double>(p_points) *
-                              static_cast<double>(seeds.size()) +
-                          static_cast<double>(spec->runs.size());
-      if (runs > static_cast<double>(kMaxRuns))
-        Fail(node, where, "the run matrix has " +
-                              std::to_string(static_cast<unsigned long long>(std::min(runs, 1e18))) + " runs, more than the limit of " +
-                              std::to_string(kMaxRuns) + "; split the spec (each shard expands the whole matrix)");
-    }
     for (const Entry& p : probs) {
       const ProblemInfo& pinfo = FindProblem(p.name);
       for (const Entry& a : algs) {
@@ -307,6 +326,7 @@ class Reader {
 
  private:
   std::string source_;
+  mutable std::set<int> checked_;  // CheckDocument's collections, by text position
 };
 
 }  // namespace
@@ -317,7 +337,15 @@ Spec ParseSpecText(const std::string& text, const std::string& source) {
   Reader reader(source);
   YAML::Node root;
   try {
-    root = YAML::Load(text);
+    // Every document, so that a second one ('---') is refused, not dropped.
+    // (an empty one, as a trailing '---' makes, is harmless).
+    const std::vector<YAML::Node> documents = YAML::LoadAll(text);
+    for (std::size_t i = 1; i < documents.size(); ++i)
+      if (!documents[i].IsNull())
+        reader.Fail(documents[i], "",
+                    "a second YAML document ('---'): a spec is one document (give its "
+                    "experiments in one list, or one spec per file)");
+    if (!documents.empty()) root = documents[0];
   } catch (const YAML::ParserException& e) {
     std::ostringstream out;
     out << source << ":" << e.mark.line + 1 << ":" << e.mark.column + 1 << ": " << e.msg;
@@ -328,6 +356,7 @@ Spec ParseSpecText(const std::string& text, const std::string& source) {
   reader.CheckKeys(root, "",
                    {"name", "description", "timeout_s", "memory_limit_mb", "record", "seeds",
                     "repetitions", "experiments", "algorithms", "problems"});
+  if (root["description"]) reader.Scalar(root["description"], "description");  // free text
   const double timeout = root["timeout_s"] ? reader.Timeout(root["timeout_s"], "timeout_s") : 600;
   const double memory = root["memory_limit_mb"]
                             ? reader.MemoryLimit(root["memory_limit_mb"], "memory_limit_mb")
@@ -349,8 +378,9 @@ Spec ParseSpecText(const std::string& text, const std::string& source) {
       reader.CheckKeys(e, where,
                        {"name", "description", "algorithms", "problems", "seeds", "repetitions",
                         "timeout_s", "memory_limit_mb", "record"});
+      if (e["description"]) reader.Scalar(e["description"], where + ".description");
       const std::string name =
-          e["name"] ? reader.Scalar(e["name"], where + ".name") : "experiment" + std::to_string(i + 1);
+          e["name"] ? reader.ExperimentName(e["name"], where + ".name") : "experiment" + std::to_string(i + 1);
       // Runs are stored under SPEC#name: two experiments of one name would mix.
       const auto [it, inserted] = names.emplace(name, where);
       if (!inserted)
@@ -366,7 +396,7 @@ Spec ParseSpecText(const std::string& text, const std::string& source) {
                         &seen);
     }
   } else {
-    const std::string name = root["name"] ? reader.Scalar(root["name"], "name") : "main";
+    const std::string name = root["name"] ? reader.ExperimentName(root["name"], "name") : "main";
     reader.Experiment(root, "", name, timeout, memory, record_steps, seeds, &spec, &seen);
   }
   return spec;

@@ -202,3 +202,71 @@ experiments:
 
 }  // namespace
 }  // namespace icp
+
+namespace icp {
+namespace {
+
+// A second YAML document would be dropped by a one-document load: it is
+// refused at its line. An empty one (a trailing '---') is harmless.
+TEST(SpecTest, ASecondDocumentIsRefused) {
+  EXPECT_NE(ErrorOf("algorithms: [hc4]\nproblems: [chain]\n---\nalgorithms: [bc4]\nproblems: [chain]\n")
+                .find("spec.yaml:4:1: a second YAML document"),
+            std::string::npos)
+      << ErrorOf("algorithms: [hc4]\nproblems: [chain]\n---\nalgorithms: [bc4]\nproblems: [chain]\n");
+  EXPECT_EQ(ParseSpec("---\nalgorithms: [hc4]\nproblems: [chain]\n---\n", "s").runs.size(), 1u);
+}
+
+// -0 is 0: one spelling, so one run key.
+TEST(SpecTest, MinusZeroIsZero) {
+  const Spec spec = ParseSpec("algorithms: [{name: hc4, params: {ratio: [0, -0, -0.0, 0e5]}}]\nproblems: [chain]\n", "s");
+  ASSERT_EQ(spec.runs.size(), 1u);
+  EXPECT_EQ(spec.runs[0].spec.algorithm_params.at("ratio"), "0");
+}
+
+// Aliases nest cheaply in YAML (each level naming the one before twice):
+// the duplicate-key check visits each node once, and grids are counted
+// against the run limit before they are resolved, so neither a deep nest
+// nor many aliased large grids costs more than its text.
+TEST(SpecTest, NestedAliasesCostTheirTextNotTheirExpansion) {
+  std::string laughs = "anchors: {l0: &l0 [a, a]";
+  for (int i = 1; i <= 40; ++i)
+    laughs += ", l" + std::to_string(i) + ": &l" + std::to_string(i) + " [*l" + std::to_string(i - 1) +
+              ", *l" + std::to_string(i - 1) + "]";
+  laughs += "}\nalgorithms: [hc4]\nproblems: [chain]\n";
+  // 2^40 leaves, which would never end if walked: the unknown key is seen.
+  EXPECT_NE(ErrorOf(laughs).find("key 'anchors': unknown key"), std::string::npos) << ErrorOf(laughs);
+
+  std::string values = "[";
+  for (int i = 0; i < 100; ++i) values += (i ? ", " : "") + std::to_string(i + 1) + "e-9";
+  values += "]";
+  std::string seeds = "seeds: [";
+  for (int i = 1; i <= 100; ++i) seeds += (i > 1 ? ", " : "") + std::to_string(i);
+  std::string grids = seeds + "]\nalgorithms:\n  - &big {name: hc4, params: {ratio: " + values +
+                      ", max_revise_calls: " + values + "}}\n";
+  for (int i = 0; i < 200; ++i) grids += "  - *big\n";
+  grids += "problems: [chain]\n";
+  // 201 grids of 10^4 points, 100 seeds: the second grid passes the limit.
+  const std::string error = ErrorOf(grids);
+  EXPECT_NE(error.find("key 'algorithms[1]': the run matrix has at least 2000000 runs, more than the limit of 1000000"), std::string::npos)
+      << error;
+}
+
+// A description is free text: one value, not a list or a mapping.
+TEST(SpecTest, ADescriptionIsText) {
+  EXPECT_NE(ErrorOf("description: [a, b]\nalgorithms: [hc4]\nproblems: [chain]\n")
+                .find("key 'description': expected a single value"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("experiments:\n  - {description: {a: 1}, algorithms: [hc4], problems: [chain]}\n")
+                .find("key 'experiments[0].description'"),
+            std::string::npos);
+}
+
+// Runs are stored under SPEC#NAME and read back after the last '#'.
+TEST(SpecTest, AnExperimentNameCannotHoldAHash) {
+  EXPECT_NE(ErrorOf("experiments:\n  - {name: 'a#b', algorithms: [hc4], problems: [chain]}\n")
+                .find("cannot hold '#'"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace icp

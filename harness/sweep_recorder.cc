@@ -1,6 +1,7 @@
 #include "harness/sweep_recorder.h"
 
 #include <filesystem>
+#include <map>
 #include <ostream>
 #include <set>
 
@@ -32,11 +33,20 @@ StopSignals::StopSignals() {
   sigemptyset(&sa.sa_mask);
   sigaction(SIGINT, &sa, &old_int_);
   sigaction(SIGTERM, &sa, &old_term_);
+  sigaction(SIGHUP, &sa, &old_hup_);  // the terminal closed: stop as for Ctrl-C
+  // A closed stderr (a pipe to `head`, a dropped ssh) must not kill the
+  // sweep mid-store: writes to it fail instead, and the runs go on.
+  struct sigaction ignore {};
+  ignore.sa_handler = SIG_IGN;
+  sigemptyset(&ignore.sa_mask);
+  sigaction(SIGPIPE, &ignore, &old_pipe_);
 }
 
 StopSignals::~StopSignals() {
   sigaction(SIGINT, &old_int_, nullptr);
   sigaction(SIGTERM, &old_term_, nullptr);
+  sigaction(SIGHUP, &old_hup_, nullptr);
+  sigaction(SIGPIPE, &old_pipe_, nullptr);
 }
 
 int StopSignals::Caught() { return g_stop_signal; }
@@ -50,19 +60,32 @@ SweepRecorder::SweepRecorder(const Spec& spec, const RunnerOptions& options, std
       store_((RemoveStaleStepFiles(out_dir_), StorePath(out_dir_))) {
   // Kept: ok and skipped runs; failed and timed-out ones are retried (a
   // transient kill must not be permanent) unless no_retry.
-  std::set<std::string> stored;
+  std::map<std::string, std::string> stored;  // key -> the experiment it is filed under
   for (const StoredRun& r : store_.StoredRuns()) {
     const bool finished = r.status == RunStatus::kOk || r.status == RunStatus::kSkipped;
-    if (finished || options.no_retry) stored.insert(r.key);
+    if (finished || options.no_retry) stored[r.key] = ExperimentOf(r.spec_file);
   }
+  // Tables and figures pick runs by experiment: a stored run filed under
+  // another one (a renamed experiment, an earlier spec) is kept but missed.
+  int filed_elsewhere = 0;
+  std::string example;
   for (std::size_t i : ShardRuns(spec, options.shard_index, options.shard_count)) {
     ++summary_.planned;
-    if (!options.force && stored.count(spec.runs[i].spec.Key())) {
+    const auto it = stored.find(spec.runs[i].spec.Key());
+    if (!options.force && it != stored.end()) {
       ++summary_.already_stored;
+      if (it->second != spec.runs[i].experiment && filed_elsewhere++ == 0)
+        example = "'" + it->second + "', planned here in '" + spec.runs[i].experiment + "'";
       continue;
     }
     queue_.push_back(spec.runs[i]);
   }
+  if (filed_elsewhere > 0)
+    progress << "icpbench: " << filed_elsewhere << " of the runs already stored "
+             << (filed_elsewhere == 1 ? "is" : "are") << " filed under another experiment (e.g. "
+             << example << "): tables and figures that pick this spec's experiments leave "
+             << (filed_elsewhere == 1 ? "it" : "them") << " out; --force reruns "
+             << (filed_elsewhere == 1 ? "it" : "them") << " under this spec\n";
   progress_.emplace(progress, terminal, static_cast<int>(queue_.size()));
   // Computed once (it runs git) while descriptors are still free: a sweep
   // that exhausts them must not store an empty provenance.

@@ -21,8 +21,9 @@
 
 namespace icp {
 
-// SIGINT/SIGTERM are caught while one lives (Caught() says which came, 0
-// while none); the previous handlers come back after it.
+// SIGINT/SIGTERM/SIGHUP are caught while one lives (Caught() says which
+// came, 0 while none), and SIGPIPE ignored; the previous handlers come back
+// after it.
 class StopSignals {
  public:
   StopSignals();
@@ -32,7 +33,7 @@ class StopSignals {
   static int Caught();
 
  private:
-  struct sigaction old_int_ {}, old_term_ {};
+  struct sigaction old_int_ {}, old_term_ {}, old_hup_ {}, old_pipe_ {};
 };
 
 class SweepRecorder {

@@ -127,11 +127,6 @@ bool RecordedRunsOnly(const RunRecord& run) {
   return run.status == RunStatus::kOk && run.steps.empty() && run.metrics.steps > 0;
 }
 
-std::string ExperimentOf(const RunRecord& run) {
-  const std::size_t hash = run.spec_file.rfind('#');
-  return hash == std::string::npos ? "" : run.spec_file.substr(hash + 1);
-}
-
 bool HasExperiment(const GroupSummary& group, const std::string& experiment) {
   return std::any_of(group.runs.begin(), group.runs.end(),
                      [&](const RunRecord* r) { return ExperimentOf(*r) == experiment; });

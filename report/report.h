@@ -110,12 +110,7 @@ struct GroupSummary {
 // rows. Tables use its run metrics; tables and figures over steps cannot.
 bool RecordedRunsOnly(const RunRecord& run);
 
-// The experiment of the spec that planned a run: what follows the last '#'
-// of its spec_file ("specs/default.yaml#table1" -> "table1"); "" when none.
-// A run that two experiments of one spec plan is stored once, under the
-// first.
-std::string ExperimentOf(const RunRecord& run);
-// True when some run of the group (any status) is of that experiment.
+// True (ExperimentOf: harness/run_record.h) when some run of the group (any status) is of that experiment.
 bool HasExperiment(const GroupSummary& group, const std::string& experiment);
 
 // Groups runs by (algorithm, algorithm params, problem, problem params),

@@ -417,6 +417,35 @@ TEST(CliTest, ReportAndPlotSayWhatARunsOnlyStoreLacks) {
 
 // Resume, merge and report over stores (docs/cli.md, docs/store.md): a rerun retries the failed run unless --no-retry; merge and
 // report refuse a missing or zero-byte store with exit 2 and write nothing.
+// What run keeps but tables would miss, and what it cannot do, it says.
+TEST(CliTest, RunSaysWhatItKeepsUnderAnotherExperimentAndRefusesAnEmptyOut) {
+  const std::string dir = ::testing::TempDir() + "cli_renamed";
+  std::filesystem::remove_all(dir);
+  const std::string pilot = WriteFile(
+      "cli_pilot.yaml", "experiments:\n  - {name: pilot, algorithms: [hc4], problems: [chain]}\n");
+  const std::string renamed = WriteFile(
+      "cli_renamed.yaml", "experiments:\n  - {name: table1, algorithms: [hc4], problems: [chain]}\n");
+  ASSERT_EQ(Icpbench("run " + pilot + " --out " + dir).exit_code, 0);
+  Result r = Icpbench("run " + renamed + " --out " + dir);
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("1 of the runs already stored is filed under another experiment (e.g. "
+                       "'pilot', planned here in 'table1')"),
+            std::string::npos)
+      << r.out;
+  r = Icpbench("run " + renamed + " --out " + dir + " --force");
+  EXPECT_EQ(r.out.find("filed under another"), std::string::npos) << r.out;
+  r = Icpbench("run " + renamed + " --out " + dir);
+  EXPECT_EQ(r.out.find("filed under another"), std::string::npos) << r.out;  // now table1's
+
+  r = Icpbench("run " + renamed + " --out ''");
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find("--out is empty"), std::string::npos) << r.out;
+  r = Icpbench("run " + renamed + " --out " + dir + "/shard --shard 1/2");
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("shard 1/2 holds none of the 1 runs"), std::string::npos) << r.out;
+  std::filesystem::remove_all(dir);
+}
+
 TEST(CliTest, RetryMergeAndReportOverStores) {
   const std::string dir = ::testing::TempDir() + "cli_stores";
   std::filesystem::remove_all(dir);

@@ -6,14 +6,30 @@
 
 #include "harness/results_store.h"
 #include "harness/results_store_internal.h"
+#include "harness/run_record.h"
 #include "web/api.h"
 
 namespace icp::web {
+
+namespace {
+
+// SQL experiment_of(spec_file): ExperimentOf (harness/run_record.h) (after the last '#'; a
+// spec path may hold '#' too), so the browser groups runs as the report does.
+void ExperimentOfSql(sqlite3_context* context, int, sqlite3_value** argv) {
+  const unsigned char* text = sqlite3_value_text(argv[0]);
+  const std::string experiment = ExperimentOf(std::string(text ? reinterpret_cast<const char*>(text) : ""));
+  sqlite3_result_text(context, experiment.c_str(), static_cast<int>(experiment.size()), SQLITE_TRANSIENT);
+}
+
+}  // namespace
 
 StoreReader::StoreReader(const std::string& dir) : path_(StorePath(dir)) {
   db_ = detail::OpenExistingReadOnly(path_);
   try {
     version_ = detail::CheckOrCreateSchema(db_, path_, /*may_create=*/false);
+    if (sqlite3_create_function(db_, "experiment_of", 1, SQLITE_UTF8 | SQLITE_DETERMINISTIC, nullptr,
+                                &ExperimentOfSql, nullptr, nullptr) != SQLITE_OK)
+      detail::Fail(path_, "defining experiment_of", db_);
   } catch (...) {
     sqlite3_close_v2(db_);
     throw;
@@ -107,7 +123,7 @@ RunFilter ParseRunFilter(const httplib::Request& req, const std::vector<std::str
     if (name == "algorithm") column = "r.algorithm";
     else if (name == "problem") column = "r.problem";
     else if (name == "status") column = "r.status";
-    else if (name == "experiment") column = "substr(r.spec_file, instr(r.spec_file, '#') + 1)";
+    else if (name == "experiment") column = "experiment_of(r.spec_file)";
     if (!column.empty()) {
       const std::vector<std::string> items = SplitList(name, text);
       f.where += " AND " + column + " IN (";

@@ -40,7 +40,7 @@ Expr Metric(const httplib::Request& req) {
 Expr Axis(const httplib::Request& req, const char* key, const std::string& fallback) {
   const std::string name = req.has_param(key) ? req.get_param_value(key) : fallback;
   if (name == "algorithm" || name == "problem") return {"r." + name, {}};
-  if (name == "experiment") return {"substr(r.spec_file, instr(r.spec_file, '#') + 1)", {}};
+  if (name == "experiment") return {"experiment_of(r.spec_file)", {}};
   if (name == "none") return {"''", {}};
   if (name.rfind("param.", 0) == 0) {
     const std::string path = ParamPath(name.substr(6));

@@ -16,7 +16,7 @@ constexpr const char* kListColumns[] = {
     "key", "experiment", "algorithm", "problem", "status", "reason", "seed", "steps",
     "wall_time_s", "mean_area", "consistency_rate", "centre_rmse", "time_mean_s", "time_median_s"};
 constexpr const char* kListSql =
-    "SELECT r.id, r.key, substr(r.spec_file, instr(r.spec_file, '#') + 1), r.algorithm, r.problem, "
+    "SELECT r.id, r.key, experiment_of(r.spec_file), r.algorithm, r.problem, "
     "r.status, r.reason, r.seed, r.steps, r.wall_time_s, r.mean_area, r.consistency_rate, "
     "r.centre_rmse, r.time_mean_s, r.time_median_s, r.algorithm_params, r.problem_params FROM runs r";
 constexpr int kListParamsColumn = 15;
@@ -100,7 +100,7 @@ void GetOptions(const std::string& dir, const httplib::Request& req, httplib::Re
   options["algorithms"] = Distinct(store, "SELECT DISTINCT algorithm FROM runs ORDER BY 1");
   options["problems"] = Distinct(store, "SELECT DISTINCT problem FROM runs ORDER BY 1");
   options["experiments"] = Distinct(
-      store, "SELECT DISTINCT substr(f, instr(f, '#') + 1) FROM (SELECT DISTINCT spec_file AS f "
+      store, "SELECT DISTINCT experiment_of(f) FROM (SELECT DISTINCT spec_file AS f "
              "FROM runs) ORDER BY 1");
   // Parameters with their values (a sweep's axes), at most 200 values each.
   nlohmann::json params = nlohmann::json::object();

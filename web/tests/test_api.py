@@ -9,6 +9,8 @@ import statistics
 
 import pytest
 
+from conftest import Server, run_spec
+
 
 def runs_where(db, where="1", *args):
     return db.execute(f"SELECT * FROM runs WHERE {where} ORDER BY id", args).fetchall()
@@ -245,3 +247,22 @@ def test_another_host_name_is_refused(server):
     connection.request("GET", "/api/summary", headers={"Host": f"localhost:{server.port}"})
     assert connection.getresponse().status == 200
     connection.close()
+
+
+def test_a_spec_path_holding_a_hash_groups_runs_as_the_report_does(tmp_path):
+    # Runs are stored under SPEC#EXPERIMENT: the experiment follows the last '#'.
+    spec_dir = tmp_path / "specs#1"
+    spec_dir.mkdir()
+    spec = spec_dir / "hash.yaml"
+    spec.write_text("seeds: [1]\nexperiments:\n  - name: e\n    algorithms: [hc4]\n"
+                    "    problems: [{name: car-track, params: {w: 2, steps: 3}}]\n")
+    out = str(tmp_path / "out")
+    run_spec(str(spec), out)
+    s = Server(out)
+    try:
+        assert s.json("/api/options")["experiments"] == ["e"]
+        runs = s.json("/api/runs?experiment=e")
+        assert [r["experiment"] for r in runs] == ["e"]
+        assert s.json("/api/summary?experiment=e")["total"] == 1
+    finally:
+        assert s.stop() == 0
