@@ -146,7 +146,10 @@ StepRecord MeasureStep(const Step& step, const Estimate& estimate) {
 }
 
 void PostStateJudge::Judge(const Step& step, Properties* properties) {
-  if (!step.truth.empty()) truths_.emplace_back(step.views.step, step.truth);
+  // A step's truth is its newest state's: keyed by that state's time, which
+  // is the step's own except where one step holds many states (chain).
+  const int newest = step.views.csp ? step.views.csp->newest : step.views.step;
+  if (!step.truth.empty()) truths_.emplace_back(newest, step.truth);
   const std::optional<double> post = NumberProperty(*properties, "post_step");
   if (!post) return;
   const int state = static_cast<int>(*post);

@@ -232,6 +232,21 @@ TEST(PostStateJudgeTest, JudgesAStateAgainstItsOwnTruth) {
   EXPECT_TRUE(none.empty());
 }
 
+// A step's truth is its newest state's (chain: one step, newest state w):
+// the oldest state's box is not judged against it.
+TEST(PostStateJudgeTest, AStepsTruthIsItsNewestStates) {
+  PostStateJudge judge;
+  struct Step step = PlanarStep(0);
+  step.views.csp.emplace();
+  step.views.csp->newest = 20;
+  Properties p = Post(0, -1, 1, 6, 6.5);
+  judge.Judge(step, &p);
+  EXPECT_FALSE(NumberProperty(p, "post_contained"));  // state 0's truth is unknown
+  Properties q = Post(20, -1, 1, 6, 6.5);
+  judge.Judge(step, &q);
+  EXPECT_EQ(NumberProperty(q, "post_contained"), 1);
+}
+
 TEST(PostLocalizedStatesTest, EachStateKeepsItsLastReport) {
   PostStateJudge judge;
   std::vector<StepRecord> steps;

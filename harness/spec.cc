@@ -1,11 +1,13 @@
 #include "harness/spec.h"
 
+#include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -22,7 +24,10 @@ class Reader {
 
   [[noreturn]] void Fail(const YAML::Node& node, const std::string& key,
                          const std::string& message) const {
-    const YAML::Mark mark = node.Mark();
+    Fail(node.Mark(), key, message);
+  }
+  [[noreturn]] void Fail(const YAML::Mark& mark, const std::string& key,
+                         const std::string& message) const {
     std::ostringstream out;
     out << source_;
     if (mark.line >= 0) out << ":" << mark.line + 1 << ":" << mark.column + 1;
@@ -333,19 +338,60 @@ class Reader {
 
 namespace {
 
+// Where a second, non-empty YAML document starts, if there is one. Not
+// YAML::LoadAll: yaml-cpp 0.7's parser returns an endless run of empty
+// documents on a stray ',' (LoadAll never returns; found by the fuzzer), so
+// the parser is asked for two documents and no more.
+class SecondDocumentFinder : public YAML::EventHandler {
+ public:
+  static std::optional<YAML::Mark> Find(const std::string& text) {
+    std::istringstream in(text);
+    YAML::Parser parser(in);
+    SecondDocumentFinder finder;
+    if (!parser.HandleNextDocument(finder)) return std::nullopt;
+    ++finder.document_;
+    if (!parser.HandleNextDocument(finder)) return std::nullopt;
+    return finder.second_;
+  }
+
+  void OnDocumentStart(const YAML::Mark&) override {}
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}  // empty: harmless
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override { Content(mark); }
+  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                const std::string&) override {
+    Content(mark);
+  }
+  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {
+    Content(mark);
+  }
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {
+    Content(mark);
+  }
+  void OnMapEnd() override {}
+
+ private:
+  void Content(const YAML::Mark& mark) {
+    if (document_ == 1 && !second_) second_ = mark;
+  }
+  int document_ = 0;
+  std::optional<YAML::Mark> second_;
+};
+
 Spec ParseSpecText(const std::string& text, const std::string& source) {
   Reader reader(source);
   YAML::Node root;
   try {
-    // Every document, so that a second one ('---') is refused, not dropped.
-    // (an empty one, as a trailing '---' makes, is harmless).
-    const std::vector<YAML::Node> documents = YAML::LoadAll(text);
-    for (std::size_t i = 1; i < documents.size(); ++i)
-      if (!documents[i].IsNull())
-        reader.Fail(documents[i], "",
-                    "a second YAML document ('---'): a spec is one document (give its "
-                    "experiments in one list, or one spec per file)");
-    if (!documents.empty()) root = documents[0];
+    root = YAML::Load(text);
+    // A second document ('---') is refused, not dropped (an empty one, as
+    // a trailing '---' makes, is harmless).
+    if (const std::optional<YAML::Mark> second = SecondDocumentFinder::Find(text))
+      reader.Fail(*second, "",
+                  "a second YAML document ('---'): a spec is one document (give its "
+                  "experiments in one list, or one spec per file)");
   } catch (const YAML::ParserException& e) {
     std::ostringstream out;
     out << source << ":" << e.mark.line + 1 << ":" << e.mark.column + 1 << ": " << e.msg;

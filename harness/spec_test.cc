@@ -216,6 +216,14 @@ TEST(SpecTest, ASecondDocumentIsRefused) {
   EXPECT_EQ(ParseSpec("---\nalgorithms: [hc4]\nproblems: [chain]\n---\n", "s").runs.size(), 1u);
 }
 
+// A stray ',' made yaml-cpp's LoadAll loop forever (found by the fuzzer):
+// such text is an empty or bad spec, answered at once.
+TEST(SpecTest, AStrayCommaIsAnsweredNotLoopedOn) {
+  EXPECT_THROW(ParseSpec(",", "s"), SpecError);
+  EXPECT_THROW(ParseSpec("algorithms: [hc4]\nproblems: [chain]\n,\n", "s"), SpecError);
+  EXPECT_THROW(ParseSpec("- a\n,\n", "s"), SpecError);
+}
+
 // -0 is 0: one spelling, so one run key.
 TEST(SpecTest, MinusZeroIsZero) {
   const Spec spec = ParseSpec("algorithms: [{name: hc4, params: {ratio: [0, -0, -0.0, 0e5]}}]\nproblems: [chain]\n", "s");

@@ -20,7 +20,9 @@ trap 'rm -rf "$work"' EXIT
 for t in "${targets[@]}"; do
   mkdir -p "$work/$t"
   echo "icpbench: fuzzing $t for $seconds s"
-  if ! "build-asan/fuzz/${t}_fuzzer" -max_total_time="$seconds" \
+  # timeout: libFuzzer's own -timeout once failed to stop a hung input
+  # (CI stalled past its limit); this fails the target instead.
+  if ! timeout --kill-after=10 $((seconds + 120)) "build-asan/fuzz/${t}_fuzzer" -max_total_time="$seconds" \
       -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$work/$t-" \
       "$work/$t" "fuzz/corpus/$t" 2>"$work/$t.log"; then
     tail -n 60 "$work/$t.log"

@@ -45,8 +45,8 @@ if [ "${1:-}" = "--ci" ]; then
   )
   cmake --build build-asan -j"${ICPBENCH_JOBS:-2}" --target "${programs[@]/%/_test}"
   regex="^($(IFS='|'; echo "${programs[*]}"))\."
-  ctest --test-dir build-asan --output-on-failure -j"${ICPBENCH_JOBS:-2}" -R "$regex" ${exclude:+-E "$exclude"}
+  ctest --test-dir build-asan --output-on-failure --timeout 900 -j"${ICPBENCH_JOBS:-2}" -R "$regex" ${exclude:+-E "$exclude"}
 else
   cmake --build build-asan -j"${ICPBENCH_JOBS:-2}"
-  ctest --test-dir build-asan --output-on-failure -j"${ICPBENCH_JOBS:-2}" ${exclude:+-E "$exclude"}
+  ctest --test-dir build-asan --output-on-failure --timeout 900 -j"${ICPBENCH_JOBS:-2}" ${exclude:+-E "$exclude"}
 fi

@@ -5,4 +5,4 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/deps.sh
 bash scripts/build.sh
-ctest --test-dir build --output-on-failure -j"${ICPBENCH_JOBS:-2}"
+ctest --test-dir build --output-on-failure --timeout 900 -j"${ICPBENCH_JOBS:-2}"

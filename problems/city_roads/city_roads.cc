@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -162,6 +163,10 @@ bool CityRoadsProblem::Next(Step* step) {
     };
   }
   pv.log_likelihood = [map = map_, roads = params_.roads](const std::vector<double>& s) {
+    // The robot is in the city: a state off the map is impossible, roads or
+    // not (the CSP's domains say the same).
+    if (!map.bounds[0].Contains(s[0]) || !map.bounds[1].Contains(s[1]))
+      return -std::numeric_limits<double>::infinity();
     if (!roads) return 0.0;
     const double d = WallDistance(map, s[0], s[1]);
     return std::log((1 - kLikelihoodFloor) *

@@ -101,6 +101,18 @@ TEST(CityRoadsViewsTest, ParticlesStartInTheStartBoxAndWeighRoadsHigher) {
   EXPECT_GT(pv.log_likelihood({75, 50}), pv.log_likelihood({50, 50}));
 }
 
+// A particle pushed off the map (a large speed_error) is impossible, not
+// an error: the filter drops it (it used to fail "not inside its domain").
+TEST(CityRoadsViewsTest, AStateOffTheMapIsImpossible) {
+  for (const char* roads : {"true", "false"}) {
+    const std::vector<Step> steps = Drive({{"steps", "2"}, {"roads", roads}}, 1);
+    const ProbabilisticView& pv = *steps[0].views.probabilistic;
+    EXPECT_EQ(pv.log_likelihood({-1e4, 50}), -INFINITY) << roads;
+    EXPECT_EQ(pv.log_likelihood({50, 1e6}), -INFINITY) << roads;
+    EXPECT_GT(pv.log_likelihood({75, 50}), -INFINITY) << roads;
+  }
+}
+
 TEST(CityRoadsRegistryTest, OffersTheThreeViews) {
   const ProblemInfo& p = FindProblem("city-roads");
   EXPECT_EQ(p.offers,
