@@ -128,10 +128,17 @@ Value Parser::ParseName() {
     Expect("(", {"after", name});
     Value a = ParseExpr();
     Expect(",", {"between the two arguments of", name});
-    Value b = ParseExpr();
-    Expect(")", {"after the second argument of", name});
-    if (a.is_constant() && b.is_constant()) return Const(f->on_interval(a.constant, b.constant));
-    return Node(f->on_expr(ToExpr(a), ToExpr(b)));
+    // max and min take any number of arguments (IBEX's max(e1,e2,...)),
+    // folded from the left; atan2 takes two.
+    const bool n_ary = name == "max" || name == "min";
+    while (true) {
+      const Value b = ParseExpr();
+      a = a.is_constant() && b.is_constant() ? Const(f->on_interval(a.constant, b.constant))
+                                             : Node(f->on_expr(ToExpr(a), ToExpr(b)));
+      if (!n_ary || !Accept(",")) break;
+    }
+    Expect(")", {n_ary ? "after the last argument of" : "after the second argument of", name});
+    return a;
   }
   if (IsUnsupportedFunction(name)) Fail(t, "function '", name, "' is not supported");
   if (IsReserved(name)) Fail(t, What{"expected an expression, found keyword", name});

@@ -4,19 +4,20 @@
 // minibex_tokenizer.cc, minibex_words.cc and minibex_expression.cc.
 // Grammar (IBEX's parser.yc, reduced):
 //
-//   system     := [Constants cst_decl ';' {cst_decl ';'}]
+//   system     := [Constants {cst_decl ';'}]
 //                 Variables var_decl {(';'|',') var_decl} ';'
+//                 [Minimize expr [';']]
 //                 [Constraints block {';' block} [';']] end [';']
 //   cst_decl   := NAME ('=' | 'in') expr                  (constant expr)
 //   var_decl   := NAME ['[' expr ']'] ['in' expr]         (constant exprs)
 //   block      := for NAME '=' expr ':' expr ';' block {';' block} [';'] end
-//               | expr ('=' | '<=' | '>=' | '<' | '>') expr
+//               | expr ('=' | 'in' | '<=' | '>=' | '<' | '>') expr
 //   expr       := term {('+' | '-') term}
 //   term       := unary {('*' | '/') unary}
 //   unary      := ('-' | '+') unary | power
 //   power      := primary {'^' (primary | ('-' | '+') unary)}  (left-assoc.)
 //   primary    := NUMBER | '(' expr ')' | '[' bound ',' bound ']' | pi
-//               | FUNC '(' expr [',' expr] ')' | NAME | NAME '(' expr ')'
+//               | FUNC '(' expr {',' expr} ')' | NAME | NAME '(' expr ')'
 //               | NAME '[' expr ']'
 //   bound      := ['+' | '-'] oo | expr
 //
@@ -69,7 +70,8 @@ ConstraintSystem Parser::Run() {
 void Parser::ParseSystem() {
   if (IsWord("constants")) {
     Next();
-    ParseConstants();
+    // IBEX allows the section empty (files converted from COCONUT have it).
+    if (!AtEnd() && !IsSectionWord(Peek().text)) ParseConstants();
   }
   if (!IsWord("variables")) {
     RejectUnsupportedSection();
@@ -78,6 +80,15 @@ void Parser::ParseSystem() {
   Next();
   ParseVariables();
   RejectUnsupportedSection();
+  if (IsWord("minimize")) {
+    // The goal of an optimisation file is read (so its errors are reported)
+    // and dropped: solve contracts the constraints, which an objective does
+    // not restrict, so the boxes stay sound.
+    Next();
+    ParseExpr();
+    Accept(";");
+    RejectUnsupportedSection();
+  }
   if (IsWord("constraints")) {
     Next();
     ParseBlockList("Constraints section");  // reads the final 'end' too
@@ -92,7 +103,7 @@ void Parser::ParseSystem() {
 }
 
 void Parser::RejectUnsupportedSection() {
-  for (std::string_view w : {"parameters", "function", "minimize"})
+  for (std::string_view w : {"parameters", "function"})
     if (IsWord(w)) Fail(Peek(), "the '", Peek().text, "' section is not supported");
 }
 
@@ -232,14 +243,16 @@ void Parser::SkipLoopBody(const std::string& what) {
 void Parser::ParseConstraint() {
   Value lhs = ParseExpr();
   Relation rel;
-  if (IsPunct("=")) {
+  // e in X is IBEX's thick constraint: e takes a value of X, as e = X does
+  // here (an interval right-hand side is a range, not a point).
+  if (IsPunct("=") || IsIn()) {
     rel = Relation::kEq;
   } else if (IsPunct("<=") || IsPunct("<")) {
     rel = Relation::kLeq;  // strict and non-strict are the same on intervals
   } else if (IsPunct(">=") || IsPunct(">")) {
     rel = Relation::kGeq;
   } else {
-    Fail(Peek(), "expected '=', '<=' or '>=' in the constraint, found ", Peek());
+    Fail(Peek(), "expected '=', 'in', '<=' or '>=' in the constraint, found ", Peek());
   }
   Next();
   Value rhs = ParseExpr();

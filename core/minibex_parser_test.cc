@@ -52,6 +52,38 @@ TEST(MinibexParserTest, PaperExample) {
   EXPECT_EQ(Eval(csp, 0, csp.domains()), Interval(-8, 17));
 }
 
+// What IBEX's optimisation benchmarks use: an empty Constants section, a
+// Minimize goal (read, then dropped: solve contracts constraints only), the
+// thick constraint 'e in X', and max/min of more than two arguments.
+TEST(MinibexParserTest, ReadsIbexOptimisationFiles) {
+  ConstraintSystem csp = ParseMinibex(R"(
+    constants
+    variables x in [0,3]; y in [0,3]; z in [0,3];
+    minimize x + y*z;
+    constraints
+      x + y in [1,2];
+      max(x, y, z) <= 3;
+      min(x, y, z, 0.5) >= 0;
+    end)");
+  ASSERT_EQ(csp.num_variables(), 3);
+  ASSERT_EQ(csp.constraints().size(), 3u);
+  EXPECT_EQ(csp.constraints()[0].range, Interval(1, 2));
+  EXPECT_EQ(Eval(csp, 0, PointBox({0.25, 1, 0})), Interval(1.25));
+  // Every argument counts, the last ones too.
+  EXPECT_EQ(Eval(csp, 1, PointBox({1, 2, 2.5})), Interval(2.5));
+  EXPECT_EQ(Eval(csp, 1, PointBox({2.75, 2, 1})), Interval(2.75));
+  EXPECT_EQ(Eval(csp, 2, PointBox({1, 2, 2.5})), Interval(0.5));
+  EXPECT_EQ(Eval(csp, 2, PointBox({1, 0.25, 2.5})), Interval(0.25));
+  EXPECT_EQ(VariablesOf(csp, 2), (std::vector<int>{0, 1, 2}));
+  // Without constraints, and with constant arguments folded.
+  ConstraintSystem goal_only = ParseMinibex("Variables x in [0,1]; Minimize max(x, 2, 3) end");
+  EXPECT_TRUE(goal_only.constraints().empty());
+  EXPECT_EQ(ParseMinibex("Variables x in [0,9]; Constraints x = max(1, 4, 2); end")
+                .constraints()[0]
+                .range,
+            Interval(4));
+}
+
 TEST(MinibexParserTest, LeadingUtf8ByteOrderMarkIsSkipped) {
   ConstraintSystem csp = ParseMinibex("\xEF\xBB\xBFVariables x in [0,2]; Constraints x^2=1; end");
   ASSERT_EQ(csp.num_variables(), 1);
