@@ -2,6 +2,8 @@
 // their readers share.
 #include "problems/log_file.h"
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <istream>
 #include <ostream>
@@ -20,8 +22,13 @@ std::ifstream OpenLogFile(const std::string& path, const std::string& what) {
   if (std::filesystem::is_directory(status)) throw std::invalid_argument(path + ": is a directory, not a " + what);
   if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
     throw std::invalid_argument(path + ": is not a regular file (a pipe or a device), not a " + what);
+  errno = 0;
   std::ifstream in(path);
-  if (!in) throw std::invalid_argument(path + ": cannot open the " + what);
+  if (!in) {
+    const int error = errno;  // why: no such file, permission denied, ...
+    throw std::invalid_argument(path + ": cannot open the " + what +
+                                (error != 0 ? std::string(" (") + std::strerror(error) + ")" : ""));
+  }
   return in;
 }
 

@@ -120,7 +120,9 @@ CarTrackProblem::CarTrackProblem(const CarTrackParams& params, std::vector<CarTr
   heading0_ = Interval(-Pi().hi(), Pi().hi());
   if (params_.heading_known) {
     if (records_.empty() || !records_[0].has_truth)
-      throw ParamError("car-track.heading_known = true: the first row of the log has no truth");
+      throw ParamError("car-track.heading_known = true: the first row of the log" +
+                       (params_.log.empty() ? std::string() : " " + params_.log) +
+                       " has no truth");
     heading0_ = Around(records_[0].truth_theta, kHeadingKnownError);
   }
   prior_ = Box({Interval(), Interval(), heading0_});

@@ -113,7 +113,7 @@ class LogReader {
   // What the problem derives from two consecutive rows must be meaningful.
   void CheckStep(const CarTrackRecord& prev, const CarTrackRecord& r) const {
     if (!(r.t > prev.t))
-      Fail("column 't': " + FormatDouble(r.t) + " is not after the previous row's " +
+      Fail(Where(kT) + ": " + FormatDouble(r.t) + " is not after the previous row's " +
            FormatDouble(prev.t));
     CheckTicks(kOdoLeft, prev.odo_left_ticks, r.odo_left_ticks);
     CheckTicks(kOdoRight, prev.odo_right_ticks, r.odo_right_ticks);
@@ -149,6 +149,9 @@ class LogReader {
     const std::string_view f = Field(column);
     double v = 0;
     const auto [end, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
+    if (ec == std::errc::result_out_of_range && end == f.data() + f.size())
+      Fail(Where(column) + ": '" + QuoteForMessage(f) +
+           "' is out of the range of a double (too large, or too small to tell from 0)");
     if (f.empty() || ec != std::errc() || end != f.data() + f.size() || !std::isfinite(v))
       Fail(Where(column) + ": '" + QuoteForMessage(f) + "' is not a finite number");
     return v;
@@ -175,8 +178,8 @@ class LogReader {
   CarTrackRecord ReadRow(std::string_view text) {
     fields_ = SplitCsvFields(text);
     if (fields_.size() != names_.size())
-      Fail(std::to_string(fields_.size()) + " fields, the header has " +
-           std::to_string(names_.size()));
+      Fail("the row has " + std::to_string(fields_.size()) + " field" +
+           (fields_.size() == 1 ? "" : "s") + ", the header " + std::to_string(names_.size()));
     CarTrackRecord r;
     r.t = Bounded(kT, kMaxTime, "s");
     r.odo_left_ticks = Integer(kOdoLeft);
@@ -202,16 +205,20 @@ class LogReader {
   }
 
   // The CSP carries the unwrapped heading from th[0] in [-pi, pi]: r's is
-  // moved within pi of the previous known one. Where the previous row has a
-  // truth too, the change must agree with the gyro: a glitch that still lies
-  // within kMaxAngle would otherwise shift every later heading by 2 pi.
+  // moved within pi of the heading the gyro predicts from the previous known
+  // one (not of that one itself: a true turn of more than pi between rows, a
+  // spinning robot or a slow log, would unwrap the wrong way). Where the
+  // previous row has a truth too, the change must agree with the gyro: a
+  // glitch that still lies within kMaxAngle would otherwise shift every later
+  // heading by 2 pi.
   void UnwrapTruthHeading(const CarTrackRecord* prev, CarTrackRecord& r) {
+    gyro_since_known_heading_ += r.gyro_dtheta;
     if (!r.has_truth) return;
     const double two_pi = 2 * kPi;
     const double raw = r.truth_theta;
-    const double turns = !have_known_heading_
-                             ? std::ceil((raw - kPi) / two_pi)
-                             : std::round((raw - last_known_heading_) / two_pi);
+    const double predicted = last_known_heading_ + gyro_since_known_heading_;
+    const double turns = !have_known_heading_ ? std::ceil((raw - kPi) / two_pi)
+                                              : std::round((raw - predicted) / two_pi);
     if (turns != 0) r.truth_theta -= turns * two_pi;
     if (prev && prev->has_truth) {
       const double turn = r.truth_theta - prev->truth_theta;
@@ -222,6 +229,7 @@ class LogReader {
     }
     last_known_heading_ = r.truth_theta;
     have_known_heading_ = true;
+    gyro_since_known_heading_ = 0;
   }
 
   std::string source_;
@@ -231,6 +239,7 @@ class LogReader {
   std::vector<std::string_view> fields_;
   bool have_known_heading_ = false;
   double last_known_heading_ = 0;
+  double gyro_since_known_heading_ = 0;  // the gyro's turn since that row
 };
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <limits>
@@ -111,6 +112,26 @@ TEST(CarTrackTest, LogWithoutTruthOrFixesAndWithWrappedHeading) {
                    .has_truth);
 }
 
+// A turn of more than pi between rows (a robot spinning 3.5 rad per row) is
+// unwrapped along the gyro, not to the nearest turn, across a row without
+// truth too (it was refused as a glitch).
+TEST(CarTrackTest, TurnsOfMoreThanPiPerRowUnwrapAlongTheGyro) {
+  std::string text = "t,odo_left_ticks,odo_right_ticks,gyro_dtheta,gps_x,gps_y,gps_ex,gps_ey,"
+                     "truth_x,truth_y,truth_theta\n";
+  const int rows = 8;
+  for (int k = 0; k < rows; ++k) {
+    const double heading = 3.5 * k;
+    char wrapped[32];
+    std::snprintf(wrapped, sizeof wrapped, "%.17g", std::remainder(heading, 2 * kPi));
+    text += std::to_string(k) + ",0,0," + (k == 0 ? "0" : "3.5") + ",,,,," +
+            (k == 4 ? ",," : std::string("0,0,") + wrapped) + "\n";
+  }
+  const std::vector<CarTrackRecord> r = ReadLogText(text);
+  ASSERT_EQ(r.size(), static_cast<std::size_t>(rows));
+  for (int k = 0; k < rows; ++k)
+    if (k != 4) EXPECT_NEAR(r[k].truth_theta, 3.5 * k, 1e-9) << "row " << k;
+}
+
 TEST(CarTrackTest, BadLogsFailWithLineAndColumn) {
   const std::string header =
       "t,odo_left_ticks,odo_right_ticks,gyro_dtheta,gps_x,gps_y,gps_ex,gps_ey\n";
@@ -131,8 +152,9 @@ TEST(CarTrackTest, BadLogsFailWithLineAndColumn) {
       {header + "0,0,0,nan,,,,\n", "column 4 (gyro_dtheta): 'nan' is not a finite"},
       {header + "0,0,0,0,1,2,,\n", "log.csv:2: gps_x, gps_y, gps_ex, gps_ey columns must be"},
       {header + "0,0,0,0,1,2,0,1\n", "log.csv:2: column 7 (gps_ex): 0 must be > 0"},
-      {header + "0,0,0,0,,,\n", "log.csv:2: 7 fields, the header has 8"},
-      {header + "0,0,0,0,,,,\n0,1,1,0,,,,\n", "log.csv:3: column 't': 0 is not after"},
+      {header + "0,0,0,0,,,\n", "log.csv:2: the row has 7 fields, the header 8"},
+      {header + "0,0,0,1e-400,,,,\n", "log.csv:2: column 4 (gyro_dtheta): '1e-400' is out of the range"},
+      {header + "0,0,0,0,,,,\n0,1,1,0,,,,\n", "log.csv:3: column 1 (t): 0 is not after"},
       {header + ",0,0,0,,,,\n", "log.csv:2: column 1 (t): '' is not a finite"},
       // A wrapped counter: the int64 difference would overflow.
       {header + "0,9223372036854775807,0,0,,,,\n0.2,-9223372036854775808,0,0,,,,\n",

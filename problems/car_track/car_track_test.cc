@@ -310,7 +310,9 @@ TEST(CarTrackTest, RegistryRejectsBadParameters) {
   EXPECT_THROW(info.resolve("car-track", {{"radius_error", "1"}}), ParamError);
   EXPECT_NO_THROW(info.resolve("car-track", {{"w", "3"}, {"gps_error", "1"}}));
   const std::string missing = ErrorOf([&] { info.make({{"log", "/nonexistent/log.csv"}}, 1); });
-  EXPECT_NE(missing.find("/nonexistent/log.csv: cannot open"), std::string::npos) << missing;
+  EXPECT_NE(missing.find("/nonexistent/log.csv: cannot open the car-track log (No such file"),
+            std::string::npos)
+      << missing;
   EXPECT_THROW(info.resolve("car-track", {{"log", "/nonexistent/log.csv"}}),
                std::invalid_argument);
   const std::string directory = ErrorOf([&] { info.resolve("car-track", {{"log", "/tmp"}}); });
@@ -332,6 +334,9 @@ TEST(CarTrackTest, RegistryRejectsBadParameters) {
   std::vector<CarTrackRecord> records = SimulateCarTrack(p, 1);
   records[0].has_truth = false;
   EXPECT_THROW(CarTrackProblem(p, records), ParamError);
+  p.log = "drive.csv";  // the error names the log
+  EXPECT_NE(ErrorOf([&] { CarTrackProblem(p, records); }).find("the log drive.csv has no truth"),
+            std::string::npos);
 }
 
 }  // namespace

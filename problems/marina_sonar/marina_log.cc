@@ -69,8 +69,8 @@ class LogReader {
   void Expect(const char* const (&names)[N]) {
     names_ = names;
     if (fields_.size() != N + 1)
-      Fail("a " + std::string(fields_[0]) + " row has " + std::to_string(N) +
-           " fields after its kind, not " + std::to_string(fields_.size() - 1));
+      Fail("a " + std::string(fields_[0]) + " row takes " + std::to_string(N) +
+           " fields after its kind; this one has " + std::to_string(fields_.size() - 1));
   }
 
   std::string Where(int i) const {

@@ -466,7 +466,7 @@ TEST(MarinaLogTest, ReaderNamesTheLineAndField) {
   fails_with(ret, "drive.csv:1: a return before the first step row");
   fails_with(step + "stepp,1\n", "drive.csv:2: unknown row kind 'stepp' (step, return)");
   fails_with("step,0,abc,0,0.02,1.5,0.01,,\n", "drive.csv:1: field 3 (dvl_u): 'abc' is not a finite number");
-  fails_with("step,0,0.5,0,0.02,1.5,0.01\n", "drive.csv:1: a step row has 8 fields after its kind, not 6");
+  fails_with("step,0,0.5,0,0.02,1.5,0.01\n", "drive.csv:1: a step row takes 8 fields after its kind; this one has 6");
   fails_with(step + step, "drive.csv:2: field 2 (t): 0 is not after the previous step's 0");
   fails_with("step,0,0.5,0,-1,1.5,0.01,,\n", "field 5 (dvl_error): -1 must be >= 0");
   fails_with("step,0,0.5,0,0.02,1.5,0.01,3,\n", "truth_x and truth_y must be both given or both empty");
