@@ -15,6 +15,7 @@
 #include "algorithms/q_relaxed/q_relaxed.h"
 #include "algorithms/test_estimators/test_estimators.h"
 #include "algorithms/three_b/three_b.h"
+#include "core/near_names.h"
 
 namespace icp {
 
@@ -86,11 +87,14 @@ const std::vector<AlgorithmInfo>& Algorithms() { return Table(); }
 
 const AlgorithmInfo& FindAlgorithm(const std::string& name) {
   std::string known;
+  std::vector<std::string> names;
   for (const AlgorithmInfo& a : Algorithms()) {
     if (a.name == name) return a;
     known += (known.empty() ? "" : ", ") + a.name;
+    names.push_back(a.name);
   }
-  throw std::invalid_argument("unknown algorithm '" + name + "' (known: " + known + ")");
+  throw std::invalid_argument("unknown algorithm '" + name + "'" + DidYouMean(name, names) +
+                              " (known: " + known + ")");
 }
 
 ContractorFactory InnerContractorFactory(const std::string& owner, const std::string& inner) {

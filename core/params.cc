@@ -9,6 +9,8 @@
 #include <cstdlib>
 #include <limits>
 
+#include "core/near_names.h"
+
 namespace icp {
 
 bool Range::Contains(double v) const {
@@ -213,8 +215,12 @@ void ParamSet::Set(const std::string& name, const std::string& value) {
     }
   }
   std::string known;
-  for (const Entry& e : entries_) known += (known.empty() ? "" : ", ") + e.info.name;
-  throw ParamError("unknown parameter '" + name + "' for " + owner_ +
+  std::vector<std::string> names;
+  for (const Entry& e : entries_) {
+    known += (known.empty() ? "" : ", ") + e.info.name;
+    names.push_back(e.info.name);
+  }
+  throw ParamError("unknown parameter '" + name + "' for " + owner_ + DidYouMean(name, names) +
                    (known.empty() ? " (it takes none)" : " (known: " + known + ")"));
 }
 

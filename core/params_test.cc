@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "core/near_names.h"
+
 namespace icp {
 namespace {
 
@@ -77,6 +79,24 @@ TEST(ParamsTest, RejectsBadInputWithFieldValueAndRule) {
   EXPECT_EQ(message({{"speed", "1"}}),
             "unknown parameter 'speed' for example (known: ratio, slices, verbose, mode, "
             "inner.ratio)");
+  EXPECT_EQ(message({{"ratoi", "1"}}),
+            "unknown parameter 'ratoi' for example; did you mean 'ratio'? (known: ratio, slices, "
+            "verbose, mode, inner.ratio)");
+}
+
+// A likely misspelling is named; a far or ambiguous name is not guessed.
+TEST(NearNamesTest, SuggestsOnlyALikelyMisspelling) {
+  const std::vector<std::string> keys = {"seeds", "name", "timeout_s", "algorithms", "problems"};
+  EXPECT_EQ(DidYouMean("seed", keys), "; did you mean 'seeds'?");
+  EXPECT_EQ(DidYouMean("algoritms", keys), "; did you mean 'algorithms'?");
+  EXPECT_EQ(DidYouMean("porblems", keys), "; did you mean 'problems'?");  // a swap is one edit
+  EXPECT_EQ(DidYouMean("timeout", keys), "; did you mean 'timeout_s'?");  // 2 of 7 off
+  EXPECT_EQ(DidYouMean("time", keys), "");  // 5 off
+  EXPECT_EQ(DidYouMean("speed", keys), "");
+  EXPECT_EQ(DidYouMean("", keys), "");
+  EXPECT_EQ(DidYouMean("ab", {"ac", "ad"}), "");  // tied
+  EXPECT_EQ(DidYouMean("hc4", {"hc3", "hc4x"}), "");
+  EXPECT_EQ(DidYouMean("hc5", {"hc4", "bc4"}), "; did you mean 'hc4'?");
 }
 
 TEST(ParamsTest, ValuesRoundTrip) {

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "algorithms/registry.h"
+#include "core/near_names.h"
 #include "problems/registry.h"
 
 namespace icp {
@@ -77,7 +78,9 @@ class Reader {
       if (!allowed.count(k)) {
         std::string known;
         for (const auto& a : allowed) known += (known.empty() ? "" : ", ") + a;
-        Fail(kv.first, Join(where, k), "unknown key (expected one of: " + known + ")");
+        Fail(kv.first, Join(where, k),
+             "unknown key" + DidYouMean(k, {allowed.begin(), allowed.end()}) +
+                 " (expected one of: " + known + ")");
       }
     }
   }
@@ -187,6 +190,14 @@ class Reader {
         const std::string key = Key(kv.first, Join(where, "params"));
         const std::string at = Join(where, "params." + key);
         std::vector<std::string> values;
+        if (kv.second.IsMap()) {
+          // A composite's inner parameters are flat, dotted names.
+          const std::string first =
+              kv.second.size() > 0 ? Key(kv.second.begin()->first, at) : "name";
+          Fail(kv.second, at,
+               "expected a value or a list of values, not a mapping (an inner parameter is "
+               "written with a dot: '" + key + "." + first + ": VALUE')");
+        }
         if (kv.second.IsSequence()) {
           if (kv.second.size() == 0) Fail(kv.second, at, "an empty list of values");
           for (std::size_t i = 0; i < kv.second.size(); ++i)

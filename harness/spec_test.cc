@@ -216,6 +216,21 @@ TEST(SpecTest, ASecondDocumentIsRefused) {
   EXPECT_EQ(ParseSpec("---\nalgorithms: [hc4]\nproblems: [chain]\n---\n", "s").runs.size(), 1u);
 }
 
+// A misspelt key or name is answered with the likely one.
+TEST(SpecTest, AMisspeltNameIsSuggested) {
+  EXPECT_NE(ErrorOf("seed: [1]\nalgorithms: [hc4]\nproblems: [chain]\n")
+                .find("key 'seed': unknown key; did you mean 'seeds'? (expected one of:"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("algorithms: [hc44]\nproblems: [chain]\n").find("did you mean 'hc4'?"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("algorithms: [hc4]\nproblems: [chian]\n").find("did you mean 'chain'?"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("algorithms: [{name: 3b-bc4, params: {inner: {epsilon: 1e-8}}}]\n"
+                    "problems: [chain]\n")
+                .find("written with a dot: 'inner.epsilon: VALUE'"),
+            std::string::npos);
+}
+
 // A stray ',' made yaml-cpp's LoadAll loop forever (found by the fuzzer):
 // such text is an empty or bad spec, answered at once.
 TEST(SpecTest, AStrayCommaIsAnsweredNotLoopedOn) {

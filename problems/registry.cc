@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "core/near_names.h"
 #include "problems/beacon_ranges/beacon_ranges.h"
 #include "problems/car_track/car_track.h"
 #include "problems/chain/chain.h"
@@ -52,11 +53,14 @@ const std::vector<ProblemInfo>& Problems() { return Table(); }
 
 const ProblemInfo& FindProblem(const std::string& name) {
   std::string known;
+  std::vector<std::string> names;
   for (const ProblemInfo& p : Problems()) {
     if (p.name == name) return p;
     known += (known.empty() ? "" : ", ") + p.name;
+    names.push_back(p.name);
   }
-  throw std::invalid_argument("unknown problem '" + name + "' (known: " + known + ")");
+  throw std::invalid_argument("unknown problem '" + name + "'" + DidYouMean(name, names) +
+                              " (known: " + known + ")");
 }
 
 std::vector<Step> ProblemSteps(const std::string& name, const ParamMap& params, std::uint64_t seed) {
