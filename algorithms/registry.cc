@@ -20,8 +20,8 @@
 namespace icp {
 
 namespace {
-std::vector<AlgorithmInfo>& Table() {
-  static std::vector<AlgorithmInfo> table = {
+std::deque<AlgorithmInfo>& Table() {
+  static std::deque<AlgorithmInfo> table = {
       CspAlgorithm<HC3Params, &MakeHC3>(
           "hc3", "HC3: constraints decomposed into primitives with auxiliary variables, AC3 queue",
           {"HC3", 10, "#8c564b"}),
@@ -83,7 +83,7 @@ std::vector<AlgorithmInfo>& Table() {
 }
 }  // namespace
 
-const std::vector<AlgorithmInfo>& Algorithms() { return Table(); }
+const std::deque<AlgorithmInfo>& Algorithms() { return Table(); }
 
 const AlgorithmInfo& FindAlgorithm(const std::string& name) {
   std::string known;

@@ -6,6 +6,7 @@
 #define ICPBENCH_ALGORITHMS_REGISTRY_H_
 
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <string>
 #include <vector>
@@ -54,7 +55,9 @@ AlgorithmInfo CspAlgorithm(std::string name, std::string description, Display di
           std::move(display), F};
 }
 
-const std::vector<AlgorithmInfo>& Algorithms();
+// A deque: a registration (a --plugin library, Python) keeps references to
+// the algorithms already found valid.
+const std::deque<AlgorithmInfo>& Algorithms();
 // The algorithm called name; throws std::invalid_argument listing the known
 // names if there is none.
 const AlgorithmInfo& FindAlgorithm(const std::string& name);

@@ -100,7 +100,16 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
       guarantee.Judge(&r);
       sink(r);  // first: a step the sink could not take is not counted
       metrics.Add(r);
-      if (stop.ShouldStop()) limit_reached_at = step_index;
+      if (stop.ShouldStop()) {
+        limit_reached_at = step_index;
+        // A step the limit cut short is incomplete, last or not.
+        if (result.summary.status == ContractStatus::kStopped) {
+          record.status = RunStatus::kTimeout;
+          record.reason = "time limit of " + FormatDouble(spec.timeout_s) +
+                          " s reached during step " + std::to_string(step_index);
+          break;
+        }
+      }
     }
   } catch (const InvalidResult& e) {
     record.status = RunStatus::kFailed;

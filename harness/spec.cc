@@ -302,6 +302,11 @@ class Reader {
           m.erase("carry");
         }
       probs.push_back({prob, ResolveGrid(problems[i], at, prob, grid, info->resolve), problems[i], at});
+      if (info->note)
+        for (const ParamMap& resolved : probs.back().grid)
+          if (std::string note = info->note(resolved);
+              !note.empty() && std::find(spec->notes.begin(), spec->notes.end(), note) == spec->notes.end())
+            spec->notes.push_back(std::move(note));
     }
     if (legacy_carry.size() > 1)
       Fail(problems, Join(where, "problems"),
@@ -485,10 +490,10 @@ ParamMap NonDefaultParams(const ParamMap& defaults, const ParamMap& params) {
 
 namespace {
 // The current defaults of a plugin's parameters ({} for one not registered).
-template <class Info>
-ParamMap DefaultsOf(const std::vector<Info>& registry, const std::string& name) {
+template <class Registry>
+ParamMap DefaultsOf(const Registry& registry, const std::string& name) {
   ParamMap out;
-  for (const Info& info : registry)
+  for (const auto& info : registry)
     if (info.name == name)
       for (const ParamInfo& p : info.params(info.name)) out[p.name] = p.default_value;
   return out;

@@ -65,6 +65,9 @@ struct PlannedRun {
 struct Spec {
   std::string file;
   std::vector<PlannedRun> runs;  // the whole matrix, duplicates removed, in spec order
+  // The problems' notes on their parameters (ProblemInfo::note), once each;
+  // run prints them before the runs.
+  std::vector<std::string> notes;
 };
 
 // Reads and validates a spec file. Throws SpecError("FILE:LINE:COL: key

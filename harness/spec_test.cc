@@ -2,6 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+#include "problems/car_track/car_track.h"
+
 namespace icp {
 namespace {
 
@@ -214,6 +221,31 @@ TEST(SpecTest, ASecondDocumentIsRefused) {
             std::string::npos)
       << ErrorOf("algorithms: [hc4]\nproblems: [chain]\n---\nalgorithms: [bc4]\nproblems: [chain]\n");
   EXPECT_EQ(ParseSpec("---\nalgorithms: [hc4]\nproblems: [chain]\n---\n", "s").runs.size(), 1u);
+}
+
+// A log longer than `steps` is cut, and the spec says so once (it was cut
+// without a word).
+TEST(SpecTest, ALogLongerThanStepsIsNoted) {
+  const std::string log =
+      (std::filesystem::temp_directory_path() / ("spec_test_log_" + std::to_string(::getpid()) + ".csv"))
+          .string();
+  CarTrackParams p;
+  p.steps = 40;
+  {
+    std::ofstream out(log);
+    WriteCarTrackLog(SimulateCarTrack(p, 1), out);
+  }
+  const Spec cut = ParseSpec("algorithms: [hc4, bc4]\nproblems:\n  - {name: car-track, params: "
+                             "{log: " + log + ", steps: 30, w: [5, 10]}}\n",
+                             "s");
+  EXPECT_EQ(cut.notes, (std::vector<std::string>{"car-track: the log " + log +
+                                                 " has 40 rows; steps = 30 uses the first 30 "
+                                                 "(give steps: 40 to use them all)"}));
+  const Spec whole = ParseSpec(
+      "algorithms: [hc4]\nproblems:\n  - {name: car-track, params: {log: " + log + ", steps: 40}}\n",
+      "s");
+  EXPECT_TRUE(whole.notes.empty());
+  std::filesystem::remove(log);
 }
 
 // A misspelt key or name is answered with the likely one.

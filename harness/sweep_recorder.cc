@@ -80,6 +80,7 @@ SweepRecorder::SweepRecorder(const Spec& spec, const RunnerOptions& options, std
     }
     queue_.push_back(spec.runs[i]);
   }
+  for (const std::string& note : spec.notes) progress << "icpbench: note: " << note << "\n";
   if (filed_elsewhere > 0)
     progress << "icpbench: " << filed_elsewhere << " of the runs already stored "
              << (filed_elsewhere == 1 ? "is" : "are") << " filed under another experiment (e.g. "

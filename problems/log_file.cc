@@ -32,6 +32,14 @@ std::ifstream OpenLogFile(const std::string& path, const std::string& what) {
   return in;
 }
 
+std::string CutLogNote(const std::string& problem, const std::string& path, std::size_t rows,
+                       long long steps) {
+  if (steps < 0 || rows <= static_cast<std::size_t>(steps)) return "";
+  const std::string s = std::to_string(steps), n = std::to_string(rows);
+  return problem + ": the log " + path + " has " + n + " rows; steps = " + s + " uses the first " +
+         s + " (give steps: " + n + " to use them all)";
+}
+
 void WriteLogComment(std::ostream& out, const std::string& comment) {
   std::istringstream lines(comment);
   for (std::string line; std::getline(lines, line);) out << "# " << line << "\n";

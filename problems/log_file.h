@@ -21,6 +21,12 @@ namespace icp {
 // kinds, which could read as nothing or block the reader.
 std::ifstream OpenLogFile(const std::string& path, const std::string& what);
 
+// The note (ProblemInfo::note) of a log with more rows than `steps` uses:
+// "<problem>: the log <path> has <rows> rows; steps = <steps> uses the first
+// <steps> (give steps: <rows> to use them all)", or empty when none is cut.
+std::string CutLogNote(const std::string& problem, const std::string& path, std::size_t rows,
+                       long long steps);
+
 // Writes comment to out as '#' lines, one for each of its lines (none when
 // it is empty).
 void WriteLogComment(std::ostream& out, const std::string& comment);

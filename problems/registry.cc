@@ -16,11 +16,11 @@
 namespace icp {
 
 namespace {
-std::vector<ProblemInfo>& Table() {
-  static std::vector<ProblemInfo> table = {
+std::deque<ProblemInfo>& Table() {
+  static std::deque<ProblemInfo> table = {
       {"car-track", "a simulated lap (or a CSV log) of the car-track CSP, paper 000 eq. 9-14, window w",
        &MakeCarTrack, &DefaultParams<CarTrackParams>, &ResolveCarTrack,
-       {View::kCsp, View::kProbabilistic}},
+       {View::kCsp, View::kProbabilistic}, &NoteCarTrack},
       {"chain", "car-track-shaped window CSP (paper 000 eq. 14) with a simulated truth",
        &MakeChain, &DefaultParams<ChainParams>, &ResolveParams<ChainParams>, {View::kCsp}},
       {"minibex-file", "one CSP read from a Minibex file (IBEX benchmark syntax)",
@@ -34,7 +34,7 @@ std::vector<ProblemInfo>& Table() {
        {View::kCsp, View::kMeasurementSet, View::kProbabilistic}},
       {"marina-sonar", "an AUV in a marina with DVL, compass and a sector-scan sonar on a binary map, paper 003 ch. 6 (eq. 6.8)",
        &MakeMarinaSonar, &DefaultParams<MarinaSonarParams>, &ResolveMarinaSonar,
-       {View::kCsp, View::kMeasurementSet, View::kProbabilistic}},
+       {View::kCsp, View::kMeasurementSet, View::kProbabilistic}, &NoteMarinaSonar},
       {"city-roads", "a car in a city without GPS: speed, compass and the road map through the image contractor, paper 003 §4.8.7 (Fig. 4.17)",
        &MakeCityRoads, &DefaultParams<CityRoadsParams>, &ResolveCityRoads,
        {View::kCsp, View::kMeasurementSet, View::kProbabilistic}},
@@ -49,7 +49,7 @@ std::vector<ProblemInfo>& Table() {
 }
 }  // namespace
 
-const std::vector<ProblemInfo>& Problems() { return Table(); }
+const std::deque<ProblemInfo>& Problems() { return Table(); }
 
 const ProblemInfo& FindProblem(const std::string& name) {
   std::string known;

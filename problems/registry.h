@@ -5,6 +5,7 @@
 #define ICPBENCH_PROBLEMS_REGISTRY_H_
 
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <string>
 #include <vector>
@@ -25,9 +26,14 @@ struct ProblemInfo {
   // run key); throws ParamError, or std::invalid_argument for a bad file.
   ParamMap (*resolve)(const std::string& owner, const ParamMap& values);
   std::vector<View> offers;  // the views of its steps
+  // What a user should know of these effective parameters before the runs
+  // (a log longer than `steps` is cut), or empty; optional.
+  std::string (*note)(const ParamMap& resolved) = nullptr;
 };
 
-const std::vector<ProblemInfo>& Problems();
+// A deque: a registration keeps references to the problems already found
+// valid.
+const std::deque<ProblemInfo>& Problems();
 // Throws std::invalid_argument listing the known names if there is none.
 const ProblemInfo& FindProblem(const std::string& name);
 // Every step of problem `name` made with params and seed, in order (tests

@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "problems/log_file.h"
+
 namespace icp {
 
 void Describe(CarTrackParams& p, ParamSet& set) {
@@ -147,6 +149,12 @@ ParamMap ResolveCarTrack(const std::string& owner, const ParamMap& values) {
     static_cast<void>(checked);
   }
   return ResolveParams<CarTrackParams>(owner, values);
+}
+
+std::string NoteCarTrack(const ParamMap& resolved) {
+  const CarTrackParams p = ParseParams<CarTrackParams>("car-track", resolved);
+  if (p.log.empty()) return "";
+  return CutLogNote("car-track", p.log, ReadCarTrackLog(p.log).size(), p.steps);
 }
 
 std::unique_ptr<Problem> MakeCarTrack(const ParamMap& params, std::uint64_t seed) {

@@ -145,6 +145,8 @@ void Validate(const CarTrackParams& p, const std::string& owner = "car-track");
 // effective parameters. Throws ParamError, or std::invalid_argument for a
 // bad log.
 ParamMap ResolveCarTrack(const std::string& owner, const ParamMap& values);
+// The registry's note: a log longer than `steps` is cut (CutLogNote).
+std::string NoteCarTrack(const ParamMap& resolved);
 
 // One 5 Hz sample of the sensors, a row of the CSV log.
 struct CarTrackRecord {

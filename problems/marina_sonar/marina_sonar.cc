@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "problems/log_file.h"
+
 namespace icp {
 
 constexpr double kPi = std::numbers::pi;
@@ -157,6 +159,12 @@ ParamMap ResolveMarinaSonar(const std::string& owner, const ParamMap& values) {
   const Box bounds = CheckMarinaMap(MapPath(p));
   if (!p.log.empty()) CheckDrive(p, ReadMarinaLog(p.log), bounds);
   return ResolveParams<MarinaSonarParams>(owner, values);
+}
+
+std::string NoteMarinaSonar(const ParamMap& resolved) {
+  const MarinaSonarParams p = ParseMarinaSonar("marina-sonar", resolved);
+  if (p.log.empty()) return "";
+  return CutLogNote("marina-sonar", p.log, ReadMarinaLog(p.log).size(), p.steps);
 }
 
 std::unique_ptr<Problem> MakeMarinaSonar(const ParamMap& params, std::uint64_t seed) {

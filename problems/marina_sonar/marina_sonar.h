@@ -124,6 +124,8 @@ Box MarinaAreaStart(double x, double y, const Box& bounds);
 // Parses, validates (map without log), loads the map and reads the log so
 // that bad files fail early; returns the effective parameters.
 ParamMap ResolveMarinaSonar(const std::string& owner, const ParamMap& values);
+// The registry's note: a log longer than `steps` is cut (CutLogNote).
+std::string NoteMarinaSonar(const ParamMap& resolved);
 
 // One sonar return.
 struct MarinaReturn {
