@@ -95,6 +95,13 @@ Box Domains(const Views& views) {
 }
 }  // namespace
 
+bool ContainsState(const StateSpace& space, const Estimate& estimate, std::vector<double> point) {
+  const Box hull = estimate.Hull();
+  if (hull.IsEmpty()) return false;
+  for (int c = 0; c < space.size(); ++c) point[c] = Representative(point[c], space.Period(c), hull[c]);
+  return estimate.Contains(point);
+}
+
 Properties CoverageProperties(const Step& step, const Estimate& estimate) {
   Properties out;
   if (step.truth.empty()) return out;
@@ -128,7 +135,7 @@ StepRecord MeasureStep(const Step& step, const Estimate& estimate) {
     v.truth = known ? truth[c] : kNaN;
     r.vars.push_back(v);
   }
-  r.contained = known ? (!empty && estimate.Contains(truth) ? 1 : 0) : -1;
+  r.contained = known ? (ContainsState(space, estimate, step.truth) ? 1 : 0) : -1;
   // The truth's outlier count, to compare with the q a relaxed solver found.
   if (step.views.measurement_set && !step.views.measurement_set->outliers.empty()) {
     const auto& o = step.views.measurement_set->outliers;

@@ -22,6 +22,9 @@ namespace icp {
 // property `true_outliers` (their number). status, solve time and the
 // estimator's properties are left to the caller.
 StepRecord MeasureStep(const Step& step, const Estimate& estimate);
+// Whether point, a state of space, lies in estimate, a periodic component (a
+// heading) compared modulo its period: what `contained` records of a truth.
+bool ContainsState(const StateSpace& space, const Estimate& estimate, std::vector<double> point);
 
 // The levels, in per cent, whose credible regions' coverage is measured.
 inline constexpr int kCoverageLevels[] = {50, 90, 95};

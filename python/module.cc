@@ -6,8 +6,11 @@
 #include <pybind11/stl.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -38,11 +41,14 @@ ParamMap ToParamMap(const py::dict& params) {
 
 namespace {
 
-// What solve() parsed and built, by file (path, size and modification
-// time), algorithm and parameters, so that a loop solving one file parses it
-// and builds its contractor once (the contractor is contracted again, as
-// `solve --repeat` does). A few entries at most.
+// What solve() parsed and built, by file, algorithm and parameters, so that
+// a loop solving one file parses it and builds its contractor once (the
+// contractor is contracted again, as `solve --repeat` does). An entry holds
+// the text it was built from and serves only that text: a file replaced
+// with the same size and time (cp -p, rsync) is not answered from the old
+// one. A few entries at most.
 struct Prepared {
+  std::string text;
   std::shared_ptr<const ConstraintSystem> system;
   std::shared_ptr<Contractor> contractor;
 };
@@ -50,12 +56,15 @@ std::map<std::string, Prepared>& PreparedCache() {
   static std::map<std::string, Prepared> cache;
   return cache;
 }
-std::string FileKey(const std::string& file) {
+// The file's text, or nullopt when it cannot be read as a regular file
+// (Solve reads it then, and says why).
+std::optional<std::string> FileText(const std::string& file) {
   std::error_code error;
-  const auto size = std::filesystem::file_size(file, error);
-  const auto time = std::filesystem::last_write_time(file, error);
-  if (error) return "";  // Solve reads it and says why
-  return file + "|" + std::to_string(size) + "|" + std::to_string(time.time_since_epoch().count());
+  if (!std::filesystem::is_regular_file(file, error)) return std::nullopt;
+  std::ifstream in(file, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in && !in.eof()) return std::nullopt;
+  return text;
 }
 
 // `solve`: the JSON the command line prints (solve --format json) and the
@@ -64,16 +73,21 @@ py::tuple SolveJson(const std::string& file, const std::string& algorithm, const
                     int repeat, double timeout_s) {
   SolveOptions options;
   options.file = file;
-  std::string key = FileKey(file);
+  const std::optional<std::string> text = FileText(file);
+  std::string key;
   // Taken out of the cache while in use (the GIL, held here, orders the
   // cache's changes): a contractor serves one contraction at a time, so a
   // thread solving the same file meanwhile builds its own.
   Prepared prepared;
-  if (!key.empty()) {
-    key += "|" + algorithm;
+  if (text) {
+    key = file + "|" + algorithm;
     for (const auto& [name, value] : ToParamMap(params)) key += "|" + name + "=" + value;
-    if (auto entry = PreparedCache().extract(key)) prepared = std::move(entry.mapped());
-    if (!prepared.system) prepared.system = std::make_shared<const ConstraintSystem>(ParseMinibexFile(file));
+    if (auto entry = PreparedCache().extract(key); entry && entry.mapped().text == *text)
+      prepared = std::move(entry.mapped());
+    if (!prepared.system) {
+      prepared.text = *text;
+      prepared.system = std::make_shared<const ConstraintSystem>(ParseMinibex(*text, file));
+    }
     options.parsed = prepared.system;
     options.contractor = prepared.contractor;
   }

@@ -17,6 +17,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "algorithms/registry.h"
@@ -63,7 +64,20 @@ ParamSet Describe(const std::string& owner, Fields* f) {
     } else if (p.type == "bool") {
       set.Add(p.name, &f->bools.emplace_back(p.default_value == "true"), p.doc);
     } else {
-      set.Add(p.name, &f->strings.emplace_back(p.default_value), p.doc);
+      // Choices arrive as ParamInfo writes them ("one of a|b"), so that the
+      // spec is checked before any run, as a C++ plugin's is.
+      std::vector<std::string> choices;
+      constexpr std::string_view kOneOf = "one of ";
+      if (p.range.rfind(kOneOf, 0) == 0) {
+        const std::string list = p.range.substr(kOneOf.size());
+        for (std::size_t start = 0;;) {
+          const std::size_t bar = list.find('|', start);
+          choices.push_back(list.substr(start, bar - start));
+          if (bar == std::string::npos) break;
+          start = bar + 1;
+        }
+      }
+      set.Add(p.name, &f->strings.emplace_back(p.default_value), p.doc, std::move(choices));
     }
   }
   set.Add("python", &f->strings.emplace_back(algorithm.class_path),
@@ -144,13 +158,11 @@ class PythonEstimator : public Estimator {
     } catch (const py::cast_error&) {
       throw py::value_error(std::string(kShape) + ", the bounds sequences of numbers");
     }
-    // Only None is empty: a NaN or crossed bound is a broken result.
-    for (std::size_t i = 0; i < std::min(l.size(), h.size()); ++i)
-      if (!(l[i] <= h[i]))
-        throw py::value_error("step() returned lo " + FormatDouble(l[i]) + " and hi " + FormatDouble(h[i]) +
-                              " at component " + std::to_string(i) +
-                              " (NaN or lo > hi); return None for an empty estimate");
-    return BoxFromBounds(l, h, n);
+    try {
+      return BoxFromBounds(l, h, n);
+    } catch (const py::value_error& e) {
+      throw py::value_error(std::string("step() returned ") + e.what());
+    }
   }
   static Property ToProperty(const std::string& name, const py::handle& value) {
     if (py::isinstance<py::bool_>(value) || py::isinstance<py::int_>(value))

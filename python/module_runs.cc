@@ -33,9 +33,13 @@ class PythonStderrBuffer : public std::streambuf {
   void Flush() {
     if (line_.empty()) return;
     py::gil_scoped_acquire gil;
+    // sys.stderr may be None (pythonw, a daemon) or a stream without
+    // flush: the progress is then dropped, the runs are not.
     py::object err = py::module_::import("sys").attr("stderr");
-    err.attr("write")(line_);
-    err.attr("flush")();
+    if (!err.is_none() && py::hasattr(err, "write")) {
+      err.attr("write")(line_);
+      if (py::hasattr(err, "flush")) err.attr("flush")();
+    }
     line_.clear();
   }
   std::string line_;
@@ -51,7 +55,8 @@ py::dict Run(const std::string& spec_or_path, bool is_path, const std::string& s
   options.jobs = jobs;
   options.force = force;
   options.no_retry = no_retry;
-  const bool terminal = py::module_::import("sys").attr("stderr").attr("isatty")().cast<bool>();
+  const py::object err = py::module_::import("sys").attr("stderr");
+  const bool terminal = !err.is_none() && py::hasattr(err, "isatty") && py::bool_(err.attr("isatty")());
   PythonStderrBuffer buffer;
   std::ostream progress(&buffer);
   SweepSummary s;

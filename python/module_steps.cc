@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "algorithms/registry.h"
+#include "harness/metrics.h"
 #include "harness/runner.h"
 #include "problems/registry.h"
 #include "core/params.h"
@@ -86,6 +87,7 @@ class PyProblem {
 struct PyEstimate {
   std::shared_ptr<StepResult> result;
   StepRecord record;
+  StateSpace space;  // the step's: contains() reads a heading modulo 2 pi
 };
 
 class PyEstimator {
@@ -111,6 +113,7 @@ class PyEstimator {
     taken.result.solve_time_s = taken.record.solve_time_s;
     out.result = std::make_shared<StepResult>(std::move(taken.result));
     out.record = std::move(taken.record);
+    out.space = s.step->views.space;
     return out;
   }
   py::dict RunProperties() const { return PropertiesToDict(estimator_->RunProperties()); }
@@ -166,8 +169,8 @@ void BindSteps(py::module_& m) {
         if (point.size() != estimate.Hull().size())
           throw py::value_error("a point needs " + std::to_string(estimate.Hull().size()) +
                                 " components, got " + std::to_string(point.size()));
-        return estimate.Contains(point);
-      }, py::arg("point"))
+        return ContainsState(e.space, estimate, point);
+      }, py::arg("point"), "Whether point lies in the estimate (a heading compared modulo 2 pi, as contained).")
       .def_property_readonly("contained", [](const PyEstimate& e) -> py::object {
         if (e.record.contained < 0) return py::none();
         return py::bool_(e.record.contained == 1);

@@ -2,6 +2,7 @@
 
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -34,11 +35,20 @@ Box BoxFromBounds(const std::vector<double>& l, const std::vector<double>& h, st
     throw py::value_error("a box needs " + std::to_string(size) + " lower and upper bounds, got " +
                           std::to_string(l.size()) + " and " + std::to_string(h.size()));
   Box box(size);
+  // Empty is written lo +inf, hi -inf throughout (as the module returns it);
+  // any other NaN or crossed bound is a bug of the caller's, not "no
+  // solution" (0/0 or swapped arrays would read as an empty set).
+  const bool empty = size > 0 && std::all_of(l.begin(), l.end(), [](double x) { return x == kInf; }) &&
+                     std::all_of(h.begin(), h.end(), [](double x) { return x == -kInf; });
+  if (empty) {
+    box.SetEmpty();
+    return box;
+  }
   for (std::size_t i = 0; i < size; ++i) {
-    if (!(l[i] <= h[i])) {  // NaN or crossed: empty
-      box.SetEmpty();
-      return box;
-    }
+    if (!(l[i] <= h[i]))
+      throw py::value_error("lo " + FormatDouble(l[i]) + " and hi " + FormatDouble(h[i]) +
+                            " at component " + std::to_string(i) +
+                            " (NaN or lo > hi; an empty box is None, or lo +inf and hi -inf throughout)");
     box[i] = Interval(l[i], h[i]);
   }
   return box;

@@ -39,7 +39,13 @@ def problems():
 
 
 def _looks_like_minibex_text(minibex):
-    return "\n" in minibex or minibex.lstrip().startswith(("Variables", "Constants"))
+    # A path-like object is a path, whatever its name; text has a newline or
+    # starts with a section word (and is then not an existing file).
+    if not isinstance(minibex, str):
+        return False
+    if "\n" in minibex:
+        return True
+    return minibex.lstrip().startswith(("Variables", "Constants")) and not os.path.isfile(minibex)
 
 
 def _bounds(pair):
@@ -57,8 +63,9 @@ def solve(minibex, algorithm="hc4", repeat=1, timeout=math.inf, **params):
     as floats (+-inf where the command line writes null), plus `lo` and `hi`:
     the box as NumPy arrays in the variables' order ("variables").
     """
+    is_text = _looks_like_minibex_text(minibex)
     minibex = os.fspath(minibex)
-    if _looks_like_minibex_text(minibex):
+    if is_text:
         with tempfile.NamedTemporaryFile("w", suffix=".bxx", delete=False) as f:
             f.write(minibex)
         try:
@@ -139,10 +146,18 @@ def _declared(name, declaration):
                          f"[-2147483648, 2147483647] (use a float)")
     if choices is not None and kind != "string":
         raise ValueError(f"parameter '{name}': choices are for str parameters")
+    if choices is not None:
+        if (isinstance(choices, str) or not all(isinstance(c, str) for c in choices)
+                or not choices or any(not c or "|" in c for c in choices)):
+            raise ValueError(f"parameter '{name}': choices must be a list of non-empty str "
+                             f"without '|', got {choices!r}")
+        choices = list(choices)
     if choices is not None and default not in choices:
         raise ValueError(f"parameter '{name}': default {default!r} is not one of its choices {choices}")
-    # The choices are checked in Python (the registry's string fields are free text).
-    return _icpbench.ParamInfo(name, kind, text, "", doc), kind, choices
+    # Written as the registry lists choices ("one of a|b"): a spec is checked
+    # before any run, as for a C++ plugin.
+    allowed = "one of " + "|".join(choices) if choices is not None else ""
+    return _icpbench.ParamInfo(name, kind, text, allowed, doc), kind, choices
 
 
 def register_algorithm(name, cls, needs="csp", params=None, description=""):
@@ -162,7 +177,7 @@ def register_algorithm(name, cls, needs="csp", params=None, description=""):
     """
     params = params or {}
     declared = [_declared(k, v) for k, v in params.items()]
-    kinds = {info.name: (kind, choices) for info, kind, choices in declared}
+    kinds = {info.name: kind for info, kind, _ in declared}
     # What would fail every run in its worker is refused here.
     if not callable(getattr(cls, "step", None)):
         raise ValueError(f"{name}: {cls.__qualname__} has no step(view) method")
@@ -175,13 +190,10 @@ def register_algorithm(name, cls, needs="csp", params=None, description=""):
 
     def typed(texts):
         values = {}
+        # Checked already (the registry's ParamSet, choices included): typed only.
         for key, text in texts.items():
-            kind, choices = kinds[key]
-            value = {"bool": lambda t: t == "true", "int": int, "double": float,
-                     "string": str}[kind](text)
-            if choices is not None and value not in choices:
-                raise ValueError(f"{name}.{key} = {text}: must be one of {'|'.join(choices)}")
-            values[key] = value
+            values[key] = {"bool": lambda t: t == "true", "int": int, "double": float,
+                           "string": str}[kinds[key]](text)
         return values
 
     def factory(texts, seed):

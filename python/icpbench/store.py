@@ -49,7 +49,11 @@ class Store:
             self._db.close()
         self._opened_state = self._state()
         mode = "mode=ro" if self._opened_state[2] else "immutable=1"
-        self._db = sqlite3.connect(f"file:{quote(os.path.abspath(self.path))}?{mode}", uri=True)
+        # Autocommit (isolation_level None): sqlite3 would open a transaction
+        # before a write it then refuses, and every later read would stay in
+        # that snapshot, blind to new runs.
+        self._db = sqlite3.connect(f"file:{quote(os.path.abspath(self.path))}?{mode}", uri=True,
+                                   isolation_level=None)
         # Read-only also for ATTACH, which would create the file it names.
         self._db.set_authorizer(
             lambda action, *_: sqlite3.SQLITE_DENY if action == sqlite3.SQLITE_ATTACH else sqlite3.SQLITE_OK)

@@ -207,6 +207,12 @@ def test_an_open_store_sees_a_later_sweep_and_refuses_bad_queries(tmp_path):
         with pytest.raises(ValueError, match="not authorized"):
             store.query(f"ATTACH DATABASE '{attached}' AS other")
         assert not attached.exists()
+        # A refused write leaves no transaction behind: later sweeps still show.
+        with pytest.raises(ValueError):
+            store.query("DELETE FROM runs")
+        spec["experiments"][0]["algorithms"].append("hc3")
+        icpbench.run(spec, out=tmp_path)
+        assert len(store.runs()) == 3
 
 
 def test_a_step_limit_and_a_point_are_checked_as_solves_are():
@@ -219,3 +225,29 @@ def test_a_step_limit_and_a_point_are_checked_as_solves_are():
     assert estimate.contains(step.truth)
     with pytest.raises(ValueError, match="a point needs 3 components, got 1"):
         estimate.contains([1.0])
+
+
+def test_a_file_replaced_with_the_same_size_and_time_is_solved_anew(tmp_path):
+    # The cache was keyed by path, size and time: cp -p of another system of
+    # the same size gave the old box.
+    path = tmp_path / "replaced.bch"
+    path.write_text("Variables x in [0, 10]; Constraints x >= 7; end")
+    stat = os.stat(path)
+    assert icpbench.solve(path)["box"]["x"] == (7.0, 10.0)
+    path.write_text("Variables x in [0, 10]; Constraints x <= 3; end")
+    os.utime(path, ns=(stat.st_atime_ns, stat.st_mtime_ns))
+    assert icpbench.solve(path)["box"]["x"] == (0.0, 3.0)
+
+
+def test_a_path_is_a_path_whatever_its_name(tmp_path, monkeypatch):
+    path = tmp_path / "Variables.bch"
+    path.write_text("Variables x in [0, 10]; Constraints x <= 3; end")
+    assert icpbench.solve(path)["box"]["x"] == (0.0, 3.0)
+    assert icpbench.solve(str(path))["box"]["x"] == (0.0, 3.0)
+    monkeypatch.chdir(tmp_path)
+    assert icpbench.solve("Variables.bch")["box"]["x"] == (0.0, 3.0)
+
+
+def test_a_sweep_runs_without_a_stderr(tmp_path, monkeypatch):
+    monkeypatch.setattr(sys, "stderr", None)
+    assert icpbench.run(_car_spec(3), out=tmp_path)["ok"] == 1

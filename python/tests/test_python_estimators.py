@@ -68,6 +68,16 @@ def test_python_parameters_are_checked_like_a_plugins(tmp_path):
         icpbench.register_algorithm("bad-needs", Raises, needs="pictures")
     listed = {a["name"]: a for a in icpbench.algorithms()}
     assert "hc4-python" in listed
+    # A str parameter's choices are checked when the sweep is planned (every
+    # run failed in its worker), and listed as a C++ plugin's are.
+    with pytest.raises(ValueError, match=r"kind = sometimes: must be one of nan\|crossed"):
+        icpbench.run(_spec({"name": "broken-bounds-python", "params": {"kind": "sometimes"}}),
+                     out=tmp_path)
+    kind = [p for p in listed["broken-bounds-python"]["params"] if p["name"] == "kind"][0]
+    assert kind["range"] == "one of nan|crossed"
+    for bad in ("abc", ["a", 1], [], ["a|b"]):
+        with pytest.raises(ValueError, match="choices must be a list"):
+            icpbench.register_algorithm("bad-choices", Raises, params={"m": ("a", "", bad)})
 
 
 def test_a_python_estimator_steps_by_hand_too():
@@ -192,7 +202,8 @@ def test_nan_or_crossed_bounds_fail_the_run_instead_of_reading_as_empty(tmp_path
     assert (summary["ok"], summary["failed"]) == (0, 2)
     with icpbench.open(tmp_path) as store:
         for reason in store.runs()["reason"]:
-            assert "NaN or lo > hi" in reason and "return None for an empty estimate" in reason, reason
+            assert "step() returned lo" in reason and "NaN or lo > hi" in reason, reason
+            assert "an empty box is None, or lo +inf and hi -inf throughout" in reason, reason
 
 
 def test_a_registration_that_would_fail_every_run_is_refused_and_leaves_no_trace():
@@ -250,3 +261,40 @@ def test_a_class_redefined_under_its_name_replaces_the_old_one(tmp_path):
                                     params={"mode": ("x", "a mode", ["a", "b"])})
     listed = {a["name"]: a for a in icpbench.algorithms()}["edited-python"]
     assert [p["name"] for p in listed["params"]] == ["python"]
+
+
+def test_an_estimator_made_before_many_registrations_still_steps():
+    # The registry grew by reallocating: an estimator made before kept a
+    # pointer into freed memory (its needs read '?').
+    est = icpbench.estimator("hc4", seed=1)
+    step = next(icpbench.problem("car-track", seed=1, w=5, steps=3))
+    for i in range(40):
+        grown = type(f"Grown{i}", (_versioned(i),), {})  # a class of its own name
+        icpbench.register_algorithm(f"grown-registry-{i}", grown)
+    _ = [bytearray(200) for _ in range(20000)]  # reuse what was freed
+    assert est.needs == "csp"
+    assert len(est.step(step).values) == 3
+
+
+def test_an_empty_contraction_passed_on_is_an_empty_estimate(tmp_path):
+    # view.contract writes an empty box as lo +inf, hi -inf; passing it on
+    # (docs/python.md's example) failed the run as 'lo > hi'.
+    spec = {"name": "python-empty", "seeds": [1], "experiments": [
+        {"name": "lines", "algorithms": ["hc4", "hc4-python"],
+         "problems": [{"name": "line-intersection", "params": {"lines": 10, "outliers": 3}}]}]}
+    assert icpbench.run(spec, out=tmp_path)["ok"] == 2
+    with icpbench.open(tmp_path) as store:
+        statuses = store.query("SELECT r.algorithm, s.status FROM steps s JOIN runs r ON r.id = s.run_id")
+    assert sorted(statuses["algorithm"]) == ["hc4", "hc4-python"]
+    assert set(statuses["status"]) == {"empty"}
+
+
+def test_contains_reads_a_heading_modulo_two_pi_as_contained_does():
+    step = next(icpbench.problem("car-track", seed=1, w=5, steps=3))
+    estimate = icpbench.estimator("hc4", seed=1).step(step)
+    truth = list(step.truth)
+    assert estimate.contained and estimate.contains(truth)
+    truth[2] += 2 * math.pi
+    assert estimate.contains(truth)
+    truth[0] += 1e6
+    assert not estimate.contains(truth)
