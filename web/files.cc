@@ -3,7 +3,8 @@
 // DIR/figures) and GET /api/claims (DIR/paper/claims.json, if present).
 // Nothing outside DIR/figures, DIR/paper/claims.json and the assets is ever
 // read: a figure's name is checked segment by segment, then its real path
-// (symbolic links resolved) must lie inside DIR/figures.
+// (symbolic links resolved) must lie inside DIR/figures; claims.json is read
+// only as a regular file, not through a link. A figure is served sandboxed.
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -91,7 +92,9 @@ void GetClaims(const std::string& dir, const httplib::Request& req, httplib::Res
   if (!req.params.empty()) throw HttpError(400, "/api/claims takes no query parameters");
   const fs::path file = fs::path(dir) / "paper" / "claims.json";
   std::error_code ec;
-  if (!fs::is_regular_file(file, ec)) {
+  // Not through a symbolic link: nothing outside the store is read.
+  if (!fs::is_regular_file(fs::symlink_status(file, ec)) ||
+      fs::is_symlink(fs::symlink_status(file.parent_path(), ec))) {
     SendJson(res, {{"file", nullptr}, {"claims", nlohmann::json::array()}});
     return;
   }
@@ -118,6 +121,9 @@ void RegisterFiles(httplib::Server& server, const std::string& dir, const std::s
   server.Get("/api/claims", std::bind(GetClaims, dir, _1, _2));
   server.Get(R"(/figures/(.*))", [dir](const httplib::Request& req, httplib::Response& res) {
     SendFile(res, FigurePath(dir, req.matches[1]));
+    // A figure is a picture: an SVG opened on its own would run its scripts
+    // with the page's origin (and its API); sandboxed, none runs.
+    res.set_header("Content-Security-Policy", "sandbox; default-src 'none'; style-src 'unsafe-inline'; img-src data:");
   });
 }
 

@@ -4,14 +4,18 @@
 // store that cannot be read during a request (a foreign file, an error) a 500.
 #include "web/serve.h"
 
+#include <netdb.h>
 #include <pthread.h>
 #include <signal.h>
 #include <sys/socket.h>
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <set>
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 #include "harness/environment_error.h"
 #include "harness/results_store.h"
@@ -52,6 +56,48 @@ std::string BadQuery(const httplib::Request& req) {
   return "";
 }
 
+// The numeric addresses host resolves to, as getnameinfo writes them
+// ("127.0.0.1", "::1"); empty when it does not resolve.
+std::vector<std::string> NumericAddresses(const std::string& host) {
+  addrinfo hints{};
+  hints.ai_socktype = SOCK_STREAM;
+  addrinfo* found = nullptr;
+  if (getaddrinfo(host.c_str(), nullptr, &hints, &found) != 0) return {};
+  std::vector<std::string> out;
+  for (const addrinfo* a = found; a != nullptr; a = a->ai_next) {
+    char text[NI_MAXHOST];
+    if (getnameinfo(a->ai_addr, a->ai_addrlen, text, sizeof text, nullptr, 0, NI_NUMERICHOST) == 0)
+      out.push_back(text);
+  }
+  freeaddrinfo(found);
+  return out;
+}
+
+bool IsLoopback(const std::string& numeric) {
+  return numeric.rfind("127.", 0) == 0 || numeric == "::1" || numeric.rfind("::ffff:127.", 0) == 0;
+}
+
+// The Host headers a server bound to a loopback host answers: the printed
+// authority, localhost and every numeric spelling of the bound addresses
+// (so 127.1, 2130706433 and 0:0:0:0:0:0:0:1 are checked as what they are);
+// empty (any Host) for a host that is not loopback only.
+std::set<std::string> LoopbackHostNames(const std::string& host, const std::string& authority,
+                                        int port) {
+  const std::vector<std::string> addresses = NumericAddresses(host);
+  if (addresses.empty() || !std::all_of(addresses.begin(), addresses.end(), IsLoopback)) return {};
+  const std::string suffix = ":" + std::to_string(port);
+  std::set<std::string> names = {authority, "localhost" + suffix};
+  for (const std::string& a : addresses)
+    names.insert(a.find(':') != std::string::npos ? "[" + a + "]" + suffix : a + suffix);
+  return names;
+}
+
+std::string Lowercase(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
 }  // namespace
 
 void Serve(const ServeOptions& options, const std::function<void(const std::string&)>& on_listening) {
@@ -68,6 +114,12 @@ void Serve(const ServeOptions& options, const std::function<void(const std::stri
 
   httplib::Server server;
   server.set_tcp_nodelay(true);  // no 40 ms Nagle delay on small answers
+  // Idle keep-alive connections each hold a thread: with cpp-httplib's 8 and
+  // 5 s, 20 idle ones (a browser's, a script's) stalled every request for
+  // seconds. More threads, shorter idles.
+  server.new_task_queue = [] { return new httplib::ThreadPool(32); };
+  server.set_keep_alive_timeout(1);
+  server.set_read_timeout(3, 0);
   RegisterRunsApi(server, options.dir);
   RegisterEstimateApi(server, options.dir);
   RegisterCompareApi(server, options.dir);
@@ -110,13 +162,20 @@ void Serve(const ServeOptions& options, const std::function<void(const std::stri
       (ipv6 ? "[" + options.host + "]" : options.host) + ":" + std::to_string(port);
   // On a loopback address only this machine's own names are answered: a web
   // page elsewhere that rebinds its DNS name to 127.0.0.1 cannot read the store.
+  // Host names are compared in lower case, as DNS does.
   std::set<std::string> names;  // empty: any Host
-  if (options.host.rfind("127.", 0) == 0 || options.host == "localhost" || options.host == "::1")
-    names = {authority, "localhost:" + std::to_string(port)};
+  for (const std::string& name : LoopbackHostNames(options.host, authority, port))
+    names.insert(Lowercase(name));
   server.set_pre_routing_handler([names](const httplib::Request& req, httplib::Response& res) {
-    if (!names.empty() && names.count(req.get_header_value("Host")) == 0) {
+    if (!names.empty() && names.count(Lowercase(req.get_header_value("Host"))) == 0) {
       SendError(res, 403, "host '" + req.get_header_value("Host") + "' not served (use " +
                               *names.begin() + ")");
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    // Many ranges of one body would multiply it in the answer (300 ranges of
+    // a 200 kB figure: 60 MB built in memory); one range is enough to resume.
+    if (req.get_header_value("Range").find(',') != std::string::npos) {
+      SendError(res, 416, "one byte range per request");
       return httplib::Server::HandlerResponse::Handled;
     }
     if (const std::string problem = BadQuery(req); !problem.empty()) {

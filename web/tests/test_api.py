@@ -5,7 +5,9 @@ import json
 import math
 import os
 import shutil
+import socket
 import statistics
+import time
 
 import pytest
 
@@ -150,6 +152,8 @@ def test_figures_are_listed_and_served(server, store_dir):
     status, headers, body = server.get("/figures/area.png")
     assert status == 200 and headers["Content-Type"] == "image/png"
     assert body == open(os.path.join(store_dir, "figures", "area.png"), "rb").read()
+    # Sandboxed: an SVG's script would run with the page's origin.
+    assert "sandbox" in headers["Content-Security-Policy"]
 
 
 def test_claims_are_empty_until_the_paper_writes_them(server, store_dir):
@@ -164,6 +168,13 @@ def test_claims_are_empty_until_the_paper_writes_them(server, store_dir):
         with open(os.path.join(paper, "claims.json"), "w") as f:
             f.write("{not json")
         assert "not JSON" in server.json("/api/claims", status=404)["error"]
+        # A link to a file outside the store is not followed.
+        outside = os.path.join(os.path.dirname(store_dir), "outside-claims.json")
+        with open(outside, "w") as f:
+            json.dump([{"claim": "secret"}], f)
+        os.remove(os.path.join(paper, "claims.json"))
+        os.symlink(outside, os.path.join(paper, "claims.json"))
+        assert server.json("/api/claims") == {"file": None, "claims": []}
     finally:
         shutil.rmtree(paper)
 
@@ -266,3 +277,26 @@ def test_a_spec_path_holding_a_hash_groups_runs_as_the_report_does(tmp_path):
         assert s.json("/api/summary?experiment=e")["total"] == 1
     finally:
         assert s.stop() == 0
+
+
+def test_many_byte_ranges_are_refused(server):
+    """300 ranges of one body multiplied it in memory (a 60 MB answer)."""
+    connection = http.client.HTTPConnection(server.host, server.port, timeout=30)
+    connection.request("GET", "/figures/area.png", headers={"Range": "bytes=0-10,0-10,0-10"})
+    response = connection.getresponse()
+    response.read()
+    connection.close()
+    assert response.status == 416
+
+
+def test_idle_connections_do_not_stall_the_others(server):
+    """Twenty idle connections held cpp-httplib's eight threads: a request
+    waited for their keep-alive to end (9.7 s)."""
+    idle = [socket.create_connection((server.host, server.port)) for _ in range(20)]
+    try:
+        start = time.monotonic()
+        server.json("/api/summary")
+        assert time.monotonic() - start < 3
+    finally:
+        for s in idle:
+            s.close()

@@ -1,5 +1,6 @@
 """`icpbench serve` on the command line: its URL line, --host and --port, its
 exit codes, and serving a store while `icpbench run` is still writing it."""
+import http.client
 import os
 import signal
 import socket
@@ -32,6 +33,28 @@ def test_host_and_port_are_honoured(store_dir):
         assert s.json("/api/summary")["total"] == 9
     finally:
         s.stop()
+
+
+def _status(s, host_header):
+    connection = http.client.HTTPConnection("127.0.0.1", s.port, timeout=30)
+    connection.request("GET", "/api/summary", headers={"Host": host_header})
+    status = connection.getresponse().status
+    connection.close()
+    return status
+
+
+def test_a_loopback_host_in_any_spelling_answers_only_its_own_names(store_dir):
+    """127.1 and 2130706433 are 127.0.0.1: the DNS-rebinding check is kept
+    (it was off for such spellings), and the numeric address is answered."""
+    for spelling in ("127.1", "2130706433"):
+        s = Server(store_dir, "--host", spelling)
+        try:
+            assert _status(s, f"evil.example:{s.port}") == 403
+            assert _status(s, f"127.0.0.1:{s.port}") == 200
+            assert _status(s, f"LOCALHOST:{s.port}") == 200
+            assert _status(s, f"{spelling}:{s.port}") == 200  # the URL it printed
+        finally:
+            s.stop()
 
 
 def test_a_port_in_use_is_the_environment(store_dir):
