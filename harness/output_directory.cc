@@ -37,10 +37,14 @@ int TryCreateFileIn(const std::string& dir) {
 void CheckWritableDirectory(const std::string& dir, const std::string& elsewhere) {
   std::error_code ec;
   if (!std::filesystem::is_directory(dir, ec)) return;
+  // Any errno: a directory that takes no files (/proc says ENOENT) is not
+  // one to write figures or a store in, whatever the reason.
   const int error = TryCreateFileIn(dir);
-  if (error != 0 && IsEnvironmentErrno(error))
+  if (error != 0)
     throw EnvironmentError("cannot write in " + dir + ": " + std::strerror(error) + " (" +
-                           EnvironmentAdvice(error, elsewhere) + ")");
+                           (IsEnvironmentErrno(error) ? EnvironmentAdvice(error, elsewhere)
+                                                      : "this directory takes no files: " + elsewhere) +
+                           ")");
 }
 
 }  // namespace icp

@@ -199,7 +199,8 @@ void Render(const Figure& f, const std::string& out_dir, PlotOutput* out) {
   ignore.sa_handler = SIG_IGN;
   sigaction(SIGPIPE, &ignore, &previous);
   {
-    Gnuplot gp("gnuplot");
+    // gnuplot writes to its stdout what it cannot write to a file: not ours.
+    Gnuplot gp("gnuplot > /dev/null");
     for (const auto& [terminal, path] : outputs) {
       SetTerminal(gp, terminal, f, path);
       const bool by_hand = !f.row_weights.empty() || f.footer_in > 0;

@@ -49,6 +49,17 @@ TEST_F(CliOutputsTest, PlotIntoAnUnwritableDirectoryIsTheEnvironment) {
   }
 }
 
+// /proc takes no files (ENOENT, not a permission): plot exited 0 with no
+// figure and gnuplot's PNG bytes on its stdout.
+TEST_F(CliOutputsTest, PlotIntoADirectoryThatTakesNoFilesIsTheEnvironment) {
+  ASSERT_EQ(run_.exit_code, 0) << run_.out;
+  if (!std::filesystem::is_directory("/proc/self")) GTEST_SKIP() << "no /proc";
+  const Result r = Icpbench("plot " + dir_ + "/store --out /proc");
+  EXPECT_EQ(r.exit_code, 3) << r.out;
+  EXPECT_NE(r.out.find("cannot write in /proc"), std::string::npos) << r.out;
+  EXPECT_LT(r.out.size(), 2000u) << "gnuplot's output reached icpbench's";
+}
+
 TEST_F(CliOutputsTest, MergeIntoAnUnwritableDirectoryIsTheEnvironment) {
   ASSERT_EQ(run_.exit_code, 0) << run_.out;
   for (const std::string& out : {kUnwritable + "/icpbench_merged", kUnwritable}) {

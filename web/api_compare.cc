@@ -70,7 +70,10 @@ void GetAggregate(const std::string& dir, const httplib::Request& req, httplib::
   nlohmann::json rows = nlohmann::json::array();
   while (q.Step()) {
     const double n = static_cast<double>(sqlite3_column_int64(q.stmt(), 2));
-    const double mean = sqlite3_column_double(q.stmt(), 3);
+    // avg() is NULL where the sum is NaN (+inf and -inf): a null mean, not 0.
+    const double mean = sqlite3_column_type(q.stmt(), 3) == SQLITE_NULL
+                            ? std::numeric_limits<double>::quiet_NaN()
+                            : sqlite3_column_double(q.stmt(), 3);
     nlohmann::json row = {{"group", Column(q.stmt(), 0)}, {"x", Column(q.stmt(), 1)},
                           {"n", static_cast<long long>(n)}, {"mean", Number(mean)},
                           {"min", Column(q.stmt(), 5)}, {"max", Column(q.stmt(), 6)},

@@ -29,7 +29,13 @@ const std::set<std::string> kSortable = {"id", "algorithm", "problem", "status",
 nlohmann::json ParamsObject(sqlite3_stmt* stmt, int i) {
   const unsigned char* text = sqlite3_column_text(stmt, i);
   if (text == nullptr) return nlohmann::json::object();
-  return nlohmann::json::parse(reinterpret_cast<const char*>(text), nullptr, /*exceptions=*/false);
+  nlohmann::json value =
+      nlohmann::json::parse(reinterpret_cast<const char*>(text), nullptr, /*exceptions=*/false);
+  // Sent as is, a malformed column would make the whole answer not JSON.
+  if (value.is_discarded())
+    throw HttpError(500, std::string("the store's column runs.") + sqlite3_column_name(stmt, i) +
+                             " is not JSON (a damaged store)");
+  return value;
 }
 
 // One row of kListSql as JSON.

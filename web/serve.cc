@@ -49,6 +49,21 @@ std::string BadQuery(const httplib::Request& req) {
   const std::string& target = req.target;
   for (std::size_t at = target.find('%'); at != std::string::npos; at = target.find('%', at + 1))
     if (target.compare(at, 3, "%00") == 0) return "a NUL byte (%00) in the query";
+  // cpp-httplib splits on ';' too and keeps what follows a value's last '=':
+  // limit=3;offset=1 read limit as 1. Such characters must be encoded.
+  if (const std::size_t q = target.find('?'); q != std::string::npos) {
+    std::size_t start = q + 1;
+    while (start <= target.size()) {
+      std::size_t end = target.find('&', start);
+      if (end == std::string::npos) end = target.size();
+      const std::string item = target.substr(start, end - start);
+      if (item.find(';') != std::string::npos ||
+          std::count(item.begin(), item.end(), '=') > 1)
+        return "a raw ';' or a second '=' in the query item '" + item +
+               "' (encode them: %3B, %3D)";
+      start = end + 1;
+    }
+  }
   std::set<std::string> seen;
   for (const auto& [name, value] : req.params)
     if (!seen.insert(name).second)

@@ -197,7 +197,8 @@ def test_the_page_and_its_assets(server):
     ("/api/runs?limit=0", 400, "limit='0'"),
     ("/api/runs?limit=ten", 400, "must be an integer"),
     ("/api/runs?algorithm=", 400, "empty value"),
-    ("/api/runs?sort=key;DROP", 400, "cannot sort"),
+    ("/api/runs?sort=key;DROP", 400, "encode them"),
+    ("/api/runs?sort=key%3BDROP", 400, "cannot sort"),
     ("/api/runs?param.w%27)%20OR%201--=1", 400, "bad parameter name"),
     ("/api/aggregate?metric=bogus", 400, "unknown metric"),
     ("/api/aggregate?x=colour", 400, "bad x"),
@@ -300,3 +301,36 @@ def test_idle_connections_do_not_stall_the_others(server):
     finally:
         for s in idle:
             s.close()
+
+
+def test_a_damaged_store_is_a_500_and_an_undefined_mean_is_null(store_dir, tmp_path):
+    """A malformed JSON column was sent as <discarded> in a 200 (not JSON);
+    avg() of +inf and -inf (NULL) was sent as a mean of 0."""
+    import sqlite3
+    damaged = str(tmp_path / "damaged")
+    os.makedirs(damaged)
+    shutil.copy(os.path.join(store_dir, "results.sqlite"), damaged)
+    with sqlite3.connect(os.path.join(damaged, "results.sqlite")) as c:
+        first, second = [r[0] for r in c.execute("SELECT id FROM runs WHERE status = 'ok' "
+                                                  "ORDER BY id LIMIT 2")]
+        c.execute("UPDATE runs SET mean_area = 1e999 WHERE id = ?", (first,))
+        c.execute("UPDATE runs SET mean_area = -1e999 WHERE id = ?", (second,))
+        algorithm = c.execute("SELECT algorithm FROM runs WHERE id = ?", (first,)).fetchone()[0]
+        c.execute("UPDATE runs SET algorithm = ? WHERE id = ?", (algorithm, second))
+        c.execute("UPDATE runs SET algorithm_params = '{not json' WHERE id = ?", (first,))
+    s = Server(damaged)
+    try:
+        status, _, body = s.get(f"/api/runs/{first}")
+        assert status == 500 and "not JSON" in json.loads(body)["error"]
+        rows = s.json(f"/api/aggregate?metric=mean_area&algorithm={algorithm}")
+        assert rows and all(r["mean"] is None for r in rows if r["min"] == "-inf" and r["max"] == "inf")
+        assert any(r["min"] == "-inf" and r["max"] == "inf" for r in rows)
+    finally:
+        s.stop()
+
+
+def test_a_raw_semicolon_or_second_equals_in_the_query_is_refused(server):
+    """cpp-httplib read limit=3;offset=1 as limit 1, and status=ok=failed as failed."""
+    for query in ("limit=3;offset=1", "algorithm=hc4;algorithm=bc4", "status=ok=failed"):
+        assert "encode them" in server.json(f"/api/runs?{query}", status=400)["error"], query
+    assert "unknown status 'ok=failed'" in server.json("/api/runs?status=ok%3Dfailed", status=400)["error"]
