@@ -227,6 +227,10 @@ TEST(ReportTest, TexUsesBooktabsAndEscapes) {
   // Signs the default (OT1) text font lacks or LaTeX cannot read as UTF-8.
   EXPECT_EQ(TexEscape("q ≤ 2 < 3 > 1 | §5 ≥ −1"),
             "q $\\leq$ 2 $<$ 3 $>$ 1 \\textbar{} \\S{}5 $\\geq$ $-$1");
+  // Latin-1 letters pass; any other character is its code point (pdflatex
+  // stopped on a store named 結果), a byte that is not UTF-8 a '?'.
+  EXPECT_EQ(TexEscape("結果 über \xF0\x9F\x98\x80 \xFF \xE7\xB5"),
+            "[U+7D50][U+679C] über [U+1F600] ? ??");
 }
 
 TEST(ReportTest, CsvParsesBackWithOneColumnPerHeader) {

@@ -113,7 +113,33 @@ std::string TexEscape(const std::string& text) {
         break;
       }
     }
-    if (!matched) out += line[i++];
+    if (matched) continue;
+    const auto byte = static_cast<unsigned char>(line[i]);
+    if (byte < 0x80) {
+      out += line[i++];
+      continue;
+    }
+    // Other UTF-8: pdflatex's utf8 input typesets the Latin-1 letters; any
+    // other character (a store in 結果, an emoji in a parameter) stops it,
+    // so it is written as its code point.
+    const int length = byte >= 0xF0 ? 4 : byte >= 0xE0 ? 3 : byte >= 0xC0 ? 2 : 1;
+    char32_t code = length == 1 ? 0 : byte & (0x7F >> length);
+    bool valid = length > 1 && i + length <= line.size();
+    for (int k = 1; valid && k < length; ++k) {
+      const auto next = static_cast<unsigned char>(line[i + k]);
+      valid = (next & 0xC0) == 0x80;
+      code = (code << 6) | (next & 0x3F);
+    }
+    if (valid && code >= 0xC0 && code <= 0xFF && code != 0xD7 && code != 0xF7) {
+      out += line.substr(i, length);
+    } else if (valid) {
+      char hex[16];
+      std::snprintf(hex, sizeof hex, "[U+%04X]", static_cast<unsigned>(code));
+      out += hex;
+    } else {
+      out += "?";  // not UTF-8
+    }
+    i += valid ? length : 1;
   }
   return out;
 }
