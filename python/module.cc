@@ -135,6 +135,10 @@ PYBIND11_MODULE(_icpbench, m) {
       } else {
         PyErr_SetString(PyExc_ValueError, e.what());
       }
+    } catch (const py::cast_error& e) {  // an argument of the wrong kind: bad input
+      PyErr_SetString(PyExc_ValueError,
+                      (std::string("an argument or a returned value of the wrong type (") + e.what() +
+                       ")").c_str());
     } catch (const py::builtin_exception& e) {  // StopIteration, IndexError, ...: as raised
       e.set_error();
     } catch (const std::runtime_error& e) {  // a malformed file: the command line's exit 2

@@ -125,7 +125,13 @@ class PythonEstimator : public Estimator {
         for (const auto& [key, value] : instance_.attr("properties")().cast<py::dict>())
           result.properties.push_back(ToProperty(py::str(key), value));
     } catch (py::error_already_set& e) {
+      // Ctrl-C and exit() are the user's, not the estimator's failure.
+      if (e.matches(PyExc_KeyboardInterrupt) || e.matches(PyExc_SystemExit)) throw;
       throw std::runtime_error(name_ + " (Python) raised " + LastLine(e));
+    } catch (const py::cast_error& e) {
+      throw std::runtime_error(name_ + " (Python) returned what cannot be read (associations() "
+                               "a list of ints, properties() a dict of bool, int, float or str "
+                               "values; int within 64 bits): " + e.what());
     }
     result.summary.status = result.estimate->Hull().IsEmpty() ? ContractStatus::kEmpty
                                                               : ContractStatus::kContracted;

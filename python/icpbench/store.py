@@ -34,7 +34,11 @@ class Store:
                 "SELECT value FROM meta WHERE key='schema_version'").fetchone()
         except sqlite3.DatabaseError as e:
             raise ValueError(f"{path}: not an icpbench results store ({e})") from None
-        self.schema_version = int(version[0]) if version else None
+        try:
+            self.schema_version = int(version[0]) if version else None
+        except (TypeError, ValueError):
+            raise ValueError(f"{path}: not an icpbench results store (schema version "
+                             f"{version[0]!r})") from None
         if self.schema_version not in _KNOWN_SCHEMA_VERSIONS:
             raise ValueError(f"{path}: schema version {self.schema_version} is not one this "
                              f"icpbench reads ({sorted(_KNOWN_SCHEMA_VERSIONS)})")
@@ -90,6 +94,11 @@ class Store:
         return [dict(zip(columns, row)) for row in rows]
 
     def _table(self, table, run_id):
+        # A version-1 store has no property tables: no properties, as `report` reads it.
+        if table.endswith("_properties") and self.schema_version == 1:
+            step = "NULL AS step, " if table == "step_properties" else ""
+            return self.query(f"SELECT NULL AS run_id, {step}NULL AS name, NULL AS type, "
+                              "NULL AS value WHERE 0")
         if run_id is None:
             return self.query(f"SELECT * FROM {table}")
         return self.query(f"SELECT * FROM {table} WHERE run_id = ?", (run_id,))

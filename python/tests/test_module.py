@@ -251,3 +251,15 @@ def test_a_path_is_a_path_whatever_its_name(tmp_path, monkeypatch):
 def test_a_sweep_runs_without_a_stderr(tmp_path, monkeypatch):
     monkeypatch.setattr(sys, "stderr", None)
     assert icpbench.run(_car_spec(3), out=tmp_path)["ok"] == 1
+
+
+def test_a_version_one_store_has_no_properties_rather_than_an_error(tmp_path):
+    import sqlite3
+    icpbench.run(_car_spec(3), out=tmp_path)
+    with sqlite3.connect(tmp_path / "results.sqlite") as c:
+        c.executescript("DROP TABLE step_properties; DROP TABLE run_properties; "
+                        "UPDATE meta SET value = '1' WHERE key = 'schema_version'")
+    with icpbench.open(tmp_path) as store:
+        assert store.schema_version == 1 and len(store.runs()) == 1
+        assert len(store.step_properties()) == 0 and "step" in store.step_properties().columns
+        assert len(store.run_properties(1)) == 0

@@ -298,3 +298,18 @@ def test_contains_reads_a_heading_modulo_two_pi_as_contained_does():
     assert estimate.contains(truth)
     truth[0] += 1e6
     assert not estimate.contains(truth)
+
+
+class Interrupted:
+    def step(self, view):
+        raise KeyboardInterrupt
+
+
+icpbench.register_algorithm("interrupted-python", Interrupted)
+
+
+def test_ctrl_c_in_a_python_estimator_stepped_by_hand_stays_ctrl_c():
+    # It came out as ValueError: a notebook loop catching ValueError went on.
+    step = next(icpbench.problem("car-track", seed=1, w=5, steps=3))
+    with pytest.raises(KeyboardInterrupt):
+        icpbench.estimator("interrupted-python", seed=1).step(step)
