@@ -307,11 +307,35 @@ function drawEstimate(values) {
 // The step's estimate re-run by the server (boxes, accumulator image,
 // particles) over the stored hull; the note says whether the re-run
 // reproduces the stored step. A run that cannot be re-run keeps the hull.
+// One re-run in flight per page: the server keeps computing one whose
+// request the page gave up, so quick clicks through steps held both of its
+// slots (503). A click meanwhile waits, and only the last one runs.
+let rerunInFlight = false, rerunWaiting = null;
 async function drawRerun(id, step, values) {
+  const note = document.getElementById('estimate-note');
+  if (rerunInFlight) {
+    rerunWaiting = [id, step, values];
+    note.textContent = 're-running the step (after the one in progress)…';
+    return;
+  }
+  rerunInFlight = true;
+  try {
+    await drawOneRerun(id, step, values);
+  } finally {
+    rerunInFlight = false;
+    if (rerunWaiting) {
+      const next = rerunWaiting;
+      rerunWaiting = null;
+      drawRerun(...next);
+    }
+  }
+}
+async function drawOneRerun(id, step, values) {
   const note = document.getElementById('estimate-note'), canvas = document.getElementById('estimate-chart');
   note.textContent = 're-running the step…';
   let e;
   try { e = await api(`/api/runs/${id}/steps/${step}/estimate`); } catch (err) { note.textContent = 'no re-run: ' + err.message; return; }
+  if (rerunWaiting) return;  // another step was chosen meanwhile: draw that one
   const d = e.data, rects = [], points = [];
   (d.inner || []).forEach(r => rects.push([r, colour(2)]));
   (d.boundary || []).forEach(r => rects.push([r, colour(3)]));
