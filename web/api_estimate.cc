@@ -210,7 +210,7 @@ void GetEstimate(const std::string& dir, const httplib::Request& req, httplib::R
     for (double t : step.truth) truth.push_back(Number(t));
     SendJson(res, {{"run_id", std::stoll(id)}, {"step", wanted}, {"kind", e.Kind()},
                    {"hull", Components(e.Hull(), space)}, {"x", space.x}, {"y", space.y},
-                   {"truth", truth}, {"contained", record.contained},
+                   {"truth", truth}, {"contained", record.contained < 0 ? nlohmann::json(nullptr) : nlohmann::json(record.contained)},
                    {"data", KindData(e, space)},
                    {"matches_store", MatchesStore(store, id, step_text, record)},
                    {"rerun_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}});

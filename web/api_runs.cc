@@ -108,19 +108,24 @@ void GetOptions(const std::string& dir, const httplib::Request& req, httplib::Re
   options["experiments"] = Distinct(
       store, "SELECT DISTINCT experiment_of(f) FROM (SELECT DISTINCT spec_file AS f "
              "FROM runs) ORDER BY 1");
-  // Parameters with their values (a sweep's axes), at most 200 values each.
+  // Parameters with their values (a sweep's axes), in numeric order, at most
+  // 200 each; `truncated_parameters` names those that have more.
   nlohmann::json params = nlohmann::json::object();
+  std::set<std::string> truncated;
   // The distinct parameter objects first: a sweep has few, however many seeds and runs.
   Query q(store,
-          "SELECT p.key, p.value FROM (SELECT DISTINCT problem_params AS j FROM runs) d, "
-          "json_each(d.j) p UNION SELECT p.key, p.value FROM (SELECT DISTINCT algorithm_params AS "
-          "j FROM runs) d, json_each(d.j) p ORDER BY 1, 2",
+          "SELECT k, v FROM (SELECT p.key AS k, p.value AS v FROM (SELECT DISTINCT problem_params "
+          "AS j FROM runs) d, json_each(d.j) p UNION SELECT p.key, p.value FROM (SELECT DISTINCT "
+          "algorithm_params AS j FROM runs) d, json_each(d.j) p) ORDER BY k, CAST(v AS REAL), v",
           {});
   while (q.Step()) {
-    nlohmann::json& values = params[reinterpret_cast<const char*>(sqlite3_column_text(q.stmt(), 0))];
+    const std::string name = reinterpret_cast<const char*>(sqlite3_column_text(q.stmt(), 0));
+    nlohmann::json& values = params[name];
     if (values.size() < 200) values.push_back(Column(q.stmt(), 1));
+    else truncated.insert(name);
   }
   options["parameters"] = params;
+  options["truncated_parameters"] = truncated;
   options["properties"] =
       store.version() >= 2
           ? Distinct(store, "SELECT DISTINCT name FROM run_properties WHERE type IN ('int', 'real') "
