@@ -249,6 +249,13 @@ TEST(FiguresTest, TimingShowsTheConfigurationWithTheMostAlgorithms) {
   runs.push_back(MakeRun("3b-bc4", "car-track", {{"steps", "900"}}, 1, 900, 1e-5, 1));
   TimingGroups(SummariseGroups(runs), &setting);
   EXPECT_EQ(setting, "car-track, steps=900");
+  // More algorithms, but recorded with `record: runs` (no step rows to draw).
+  for (const char* a : {"hc3", "hc4", "bc3", "bc4", "3b-hc4", "3b-bc4"}) {
+    runs.push_back(MakeRun(a, "car-track", {{"steps", "50"}}, 1, 50, 1e-5, 1));
+    runs.back().steps.clear();
+  }
+  TimingGroups(SummariseGroups(runs), &setting);
+  EXPECT_EQ(setting, "car-track, steps=900");
   EXPECT_TRUE(TimingGroups({}, &setting).empty());
 }
 

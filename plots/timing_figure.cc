@@ -50,13 +50,18 @@ void PlotTimingFigure(const FigureText& text, const std::vector<const GroupSumma
 
 std::vector<const GroupSummary*> TimingGroups(const std::vector<GroupSummary>& groups,
                                               std::string* setting) {
-  // (problem, problem params) -> (algorithms ok at default params, CSPs)
-  std::map<std::pair<std::string, ParamMap>, std::pair<int, int>> score;
+  // (problem, problem params) -> (algorithms ok at default params, CSPs),
+  // over the step rows stored: a merged store's configuration recorded with
+  // `record: runs` has none to draw, and must not win over one that has.
+  std::map<std::pair<std::string, ParamMap>, std::pair<int, std::size_t>> score;
   for (const GroupSummary& g : groups) {
     if (!g.algorithm_params.empty() || g.ok == 0) continue;
+    std::size_t stored = 0;
+    for (const RunRecord* r : g.ok_runs) stored += r->steps.size();
+    if (stored == 0) continue;
     auto& [algorithms, steps] = score[{g.problem, g.problem_params}];
     ++algorithms;
-    steps += g.metrics.steps;
+    steps += stored;
   }
   const auto best = std::max_element(score.begin(), score.end(), [](const auto& a, const auto& b) {
     return a.second < b.second;
