@@ -89,6 +89,8 @@ class Query {
 
 // The run id of a /api/runs/ID/... path (match 1); a 400 unless a number.
 std::string RunId(const httplib::Request& req);
+// Throws a 400 if req has a query: PATH takes no query parameters.
+void RequireNoQuery(const httplib::Request& req);
 // A 404 unless run id is stored.
 void RequireRun(const StoreReader& store, const std::string& id);
 

@@ -91,7 +91,9 @@ long long IntParam(const httplib::Request& req, const std::string& name, long lo
   char* end = nullptr;
   errno = 0;
   const long long v = std::strtoll(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || errno != 0 || v < lo || v > hi)
+  // Digits only: strtoll would also take leading blanks and a '+'.
+  if (text.empty() || text.find_first_not_of("-0123456789") != std::string::npos ||
+      *end != '\0' || errno != 0 || v < lo || v > hi)
     throw HttpError(400, name + "='" + text + "' must be an integer in [" + std::to_string(lo) +
                              ", " + std::to_string(hi) + "]");
   return v;
@@ -146,7 +148,12 @@ RunFilter ParseRunFilter(const httplib::Request& req, const std::vector<std::str
   return f;
 }
 
+void RequireNoQuery(const httplib::Request& req) {
+  if (!req.params.empty()) throw HttpError(400, req.path + " takes no query parameters");
+}
+
 std::string RunId(const httplib::Request& req) {
+  RequireNoQuery(req);  // a run's own answers are not filtered
   const std::string id = req.matches[1];
   if (id.empty() || id.size() > 18 || id.find_first_not_of("0123456789") != std::string::npos)
     throw HttpError(400, "bad run id '" + id + "' (a number)");

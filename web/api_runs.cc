@@ -100,7 +100,7 @@ nlohmann::json Distinct(const StoreReader& store, const std::string& sql) {
 }
 
 void GetOptions(const std::string& dir, const httplib::Request& req, httplib::Response& res) {
-  if (!req.params.empty()) throw HttpError(400, "/api/options takes no query parameters");
+  RequireNoQuery(req);
   StoreReader store(dir);
   nlohmann::json options;
   options["algorithms"] = Distinct(store, "SELECT DISTINCT algorithm FROM runs ORDER BY 1");

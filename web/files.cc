@@ -69,7 +69,7 @@ fs::path FigurePath(const std::string& dir, const std::string& name) {
 }
 
 void GetFigures(const std::string& dir, const httplib::Request& req, httplib::Response& res) {
-  if (!req.params.empty()) throw HttpError(400, "/api/figures takes no query parameters");
+  RequireNoQuery(req);
   nlohmann::json names = nlohmann::json::array();
   std::error_code ec;
   const fs::path root = fs::path(dir) / "figures";
@@ -89,7 +89,7 @@ void GetFigures(const std::string& dir, const httplib::Request& req, httplib::Re
 }
 
 void GetClaims(const std::string& dir, const httplib::Request& req, httplib::Response& res) {
-  if (!req.params.empty()) throw HttpError(400, "/api/claims takes no query parameters");
+  RequireNoQuery(req);
   const fs::path file = fs::path(dir) / "paper" / "claims.json";
   std::error_code ec;
   // Not through a symbolic link: nothing outside the store is read.

@@ -139,6 +139,16 @@ void Serve(const ServeOptions& options, const std::function<void(const std::stri
   RegisterEstimateApi(server, options.dir);
   RegisterCompareApi(server, options.dir);
   RegisterFiles(server, options.dir, ICPBENCH_WEB_ASSETS, ICPBENCH_CHART_JS);
+  // Read-only: any other method is a 405 naming the allowed ones.
+  const auto not_allowed = [](const httplib::Request& req, httplib::Response& res) {
+    res.set_header("Allow", "GET, HEAD");
+    SendError(res, 405, req.method + " is not allowed: the server only reads (GET, HEAD)");
+  };
+  server.Post(".*", not_allowed);
+  server.Put(".*", not_allowed);
+  server.Patch(".*", not_allowed);
+  server.Delete(".*", not_allowed);
+  server.Options(".*", not_allowed);
   server.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr e) {
     try {
       std::rethrow_exception(e);

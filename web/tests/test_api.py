@@ -335,3 +335,18 @@ def test_a_raw_semicolon_or_second_equals_in_the_query_is_refused(server):
     for query in ("limit=3;offset=1", "algorithm=hc4;algorithm=bc4", "status=ok=failed"):
         assert "encode them" in server.json(f"/api/runs?{query}", status=400)["error"], query
     assert "unknown status 'ok=failed'" in server.json("/api/runs?status=ok%3Dfailed", status=400)["error"]
+
+
+def test_a_runs_answers_take_no_query_and_other_methods_are_405(server, db):
+    run_id = runs_where(db, "status = 'ok'")[0]["id"]
+    for path in (f"/api/runs/{run_id}?foo=bar", f"/api/runs/{run_id}/values?foo=bar",
+                 f"/api/runs/{run_id}/steps/0?foo=bar", "/api/runs?limit=+2", "/api/runs?limit=%202"):
+        server.json(path, status=400)
+    for method in ("POST", "PUT", "PATCH", "DELETE", "OPTIONS"):
+        connection = http.client.HTTPConnection(server.host, server.port, timeout=30)
+        connection.request(method, "/api/runs", body=b"x" if method != "OPTIONS" else None)
+        response = connection.getresponse()
+        body = json.loads(response.read())
+        connection.close()
+        assert response.status == 405 and response.getheader("Allow") == "GET, HEAD", method
+        assert "only reads" in body["error"]
