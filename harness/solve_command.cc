@@ -44,8 +44,10 @@ SolveResult Solve(const SolveOptions& options) {
                                 ": must be a number of seconds > 0 (inf: no limit)");
   // Each repeat gets the whole limit.
   auto limit = [&] {
-    return StopCondition::After(std::chrono::duration<double>(options.timeout_s));
+    return StopCondition::After(std::chrono::duration<double>(options.timeout_s))
+        .WithCancelFlag(options.cancel);
   };
+  auto cancelled = [&] { return options.cancel != nullptr && options.cancel->load(); };
   const AlgorithmInfo& info = FindAlgorithm(options.algorithm);
   SolveResult result;
   result.algorithm = info.name;
@@ -58,7 +60,7 @@ SolveResult Solve(const SolveOptions& options) {
         options.contractor && options.parsed ? options.contractor
                                              : info.contractor(ContractorParams(params), result.csp);
     result.contractor = contractor;
-    for (int r = 0; r < options.repeat; ++r) {
+    for (int r = 0; r < options.repeat && (r == 0 || !cancelled()); ++r) {
       Box box = result.csp.domains();
       const StopCondition stop = limit();
       ContractContext context(stop);
@@ -74,7 +76,7 @@ SolveResult Solve(const SolveOptions& options) {
     FindProblem("minibex-file").make({{"file", options.file}}, 0)->Next(&step);
     if (!step.views.Offers(info.needs))
       throw std::invalid_argument("solve: the minibex-file problem offers no measurement-set view");
-    for (int r = 0; r < options.repeat; ++r) {
+    for (int r = 0; r < options.repeat && (r == 0 || !cancelled()); ++r) {
       std::unique_ptr<Estimator> estimator = info.make(params, 0);
       auto start = std::chrono::steady_clock::now();
       StepResult step_result = estimator->Step(step.views, limit());

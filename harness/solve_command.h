@@ -6,6 +6,7 @@
 #ifndef ICPBENCH_HARNESS_SOLVE_COMMAND_H_
 #define ICPBENCH_HARNESS_SOLVE_COMMAND_H_
 
+#include <atomic>
 #include <iosfwd>
 #include <memory>
 #include <string>
@@ -35,6 +36,9 @@ struct SolveOptions {
   // same system, algorithm and parameters built (SolveResult::contractor),
   // contracted again as `--repeat` does instead of being built anew.
   std::shared_ptr<Contractor> contractor;
+  // When set and raised, the solve stops as at its time limit and the
+  // repeats end (the Python module's Ctrl-C).
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 struct SolveResult {

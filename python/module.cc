@@ -5,8 +5,11 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <iterator>
 #include <map>
 #include <memory>
@@ -96,11 +99,27 @@ py::tuple SolveJson(const std::string& file, const std::string& algorithm, const
   options.format = "json";
   options.repeat = repeat;
   options.timeout_s = timeout_s;
+  // The solve runs in its own thread while this one, every 50 ms, lets
+  // Python see a Ctrl-C (its handler only flags the signal; the check needs
+  // the GIL): the solve is then cancelled and KeyboardInterrupt raised. A
+  // thread other than the main one sees no signal, as in Python itself.
+  std::atomic<bool> cancel{false};
+  options.cancel = &cancel;
   SolveResult result;
+  bool interrupted = false;
   {
     py::gil_scoped_release release;
-    result = Solve(options);
+    std::future<SolveResult> solving = std::async(std::launch::async, [&options] { return Solve(options); });
+    while (solving.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
+      py::gil_scoped_acquire gil;
+      if (!interrupted && PyErr_CheckSignals() != 0) {
+        interrupted = true;
+        cancel = true;
+      }
+    }
+    if (!interrupted) result = solving.get();
   }
+  if (interrupted) throw py::error_already_set();
   if (!key.empty()) {
     prepared.contractor = result.contractor;
     auto& cache = PreparedCache();

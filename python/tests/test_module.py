@@ -263,3 +263,22 @@ def test_a_version_one_store_has_no_properties_rather_than_an_error(tmp_path):
         assert store.schema_version == 1 and len(store.runs()) == 1
         assert len(store.step_properties()) == 0 and "step" in store.step_properties().columns
         assert len(store.run_properties(1)) == 0
+
+
+def test_ctrl_c_stops_a_long_solve():
+    # It was honoured only when the C++ call returned (10-15 s here).
+    import signal
+    import threading
+    import time
+    n = 60
+    text = "\n".join(["Variables"] + [f" x{i} in [-10,10];" for i in range(n)] + ["Constraints"]
+                     + [f" x{i}^2 + x{i+1}^2 = 2 + 0.0001*x{i}*x{i+1};" for i in range(n - 1)]
+                     + [f" x0 + x{n - 1} = 0.1;", "end"]) + "\n"
+    timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
+    start = time.monotonic()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        icpbench.solve(text, algorithm="3b-bc4", ratio=0, repeat=100000)
+    assert time.monotonic() - start < 5
+    # The system solves again afterwards.
+    assert icpbench.solve(text, algorithm="hc4")["status"] == "nonempty"
