@@ -7,12 +7,9 @@
 
 #include "algorithms/registry.h"
 #include "core/memory_budget.h"
-#include "harness/association_metrics.h"
-#include "harness/coverage.h"
 #include "harness/environment_error.h"
-#include "harness/guarantee.h"
-#include "harness/landmark_metrics.h"
 #include "harness/metrics.h"
+#include "harness/step_judges.h"
 #include "harness/sweep_recorder.h"
 #include "harness/worker_pool.h"
 #include "problems/registry.h"
@@ -57,11 +54,7 @@ RunRecord ExecuteRun(const RunSpec& spec) {
 RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
   RunRecord record;
   MetricsAccumulator metrics;
-  PostStateJudge post_states;
-  GuaranteeJudge guarantee;
-  CoverageCounter coverage;
-  LandmarkJudge landmarks;
-  AssociationJudge associations;
+  StepJudges judges;
   record.spec = spec;
   const auto start = Clock::now();
   int step_index = 0;
@@ -87,17 +80,9 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
       }
       step_index = step.views.step;
       TakenStep taken = TakeStep(*estimator, algorithm.needs, step, stop);
-      StepResult& result = taken.result;
-      StepRecord& r = taken.record;
-      post_states.Judge(step, &result.properties);
-      coverage.Add(step, *result.estimate, &result.properties);
-      landmarks.Judge(step, result.landmarks, &result.properties);
-      associations.Judge(step, result.associations, r.contained, &result.properties);
-      for (Property& p : result.properties) r.properties.push_back(std::move(p));
-      for (const Property& p : step.annotations) r.properties.push_back(p);
-      for (Property& p : result.estimate->Extras()) r.properties.push_back(std::move(p));
-      if (!result.summary.message.empty()) r.properties.push_back({"message", result.summary.message});
-      guarantee.Judge(&r);
+      judges.Judge(step, &taken);
+      const StepResult& result = taken.result;
+      const StepRecord& r = taken.record;
       sink(r);  // first: a step the sink could not take is not counted
       metrics.Add(r);
       if (stop.ShouldStop()) {
@@ -132,10 +117,7 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
     record.reason = "exception of unknown type";
   }
   if (estimator) record.properties = estimator->RunProperties();
-  for (Property& p : guarantee.RunProperties()) record.properties.push_back(std::move(p));
-  coverage.AppendRunProperties(&record.properties);
-  for (Property& p : landmarks.RunProperties()) record.properties.push_back(std::move(p));
-  for (Property& p : associations.RunProperties()) record.properties.push_back(std::move(p));
+  for (Property& p : judges.RunProperties()) record.properties.push_back(std::move(p));
   record.wall_time_s = Seconds(Clock::now() - start);
   record.metrics = metrics.Finish(spec.seed);
   return record;

@@ -15,6 +15,7 @@
 #include "algorithms/registry.h"
 #include "harness/metrics.h"
 #include "harness/runner.h"
+#include "harness/step_judges.h"
 #include "problems/registry.h"
 #include "core/params.h"
 #include "python/module_internal.h"
@@ -110,18 +111,24 @@ class PyEstimator {
                                    ? StopCondition::After(std::chrono::duration<double>(timeout_s))
                                    : StopCondition();
     TakenStep taken = TakeStep(*estimator_, info_->needs, *s.step, stop);
+    judges_.Judge(*s.step, &taken);  // the properties icpbench run stores
     taken.result.solve_time_s = taken.record.solve_time_s;
     out.result = std::make_shared<StepResult>(std::move(taken.result));
     out.record = std::move(taken.record);
     out.space = s.step->views.space;
     return out;
   }
-  py::dict RunProperties() const { return PropertiesToDict(estimator_->RunProperties()); }
+  py::dict RunProperties() const {
+    Properties properties = estimator_->RunProperties();
+    for (Property& p : judges_.RunProperties()) properties.push_back(std::move(p));
+    return PropertiesToDict(properties);
+  }
 
  private:
   const AlgorithmInfo* info_;
   ParamMap params_;
   std::unique_ptr<Estimator> estimator_;
+  StepJudges judges_;
 };
 
 const Estimate& EstimateOf(const PyEstimate& e) { return *e.result->estimate; }
@@ -184,10 +191,10 @@ void BindSteps(py::module_& m) {
         return out;
       }, "The reported variables' bounds, {name: (lo, hi)}, as the store's step_values.")
       .def_property_readonly("properties", [](const PyEstimate& e) {
-        Properties all = e.result->properties;
-        for (const Property& p : EstimateOf(e).Extras()) all.push_back(p);
-        return PropertiesToDict(all);
-      })
+        return PropertiesToDict(e.record.properties);
+      }, "The step's properties as the store's step_properties: the estimator's, the judges' "
+         "(assumption_held, covered_*, associations_*, post_*), the problem's annotations, the "
+         "estimate's extras")
       .def_property_readonly("boxes", [](const PyEstimate& e) -> py::object {
         const auto* paving = dynamic_cast<const PavingEstimate*>(e.result->estimate.get());
         if (!paving) return py::none();

@@ -282,3 +282,30 @@ def test_ctrl_c_stops_a_long_solve():
     assert time.monotonic() - start < 5
     # The system solves again afterwards.
     assert icpbench.solve(text, algorithm="hc4")["status"] == "nonempty"
+
+
+@pytest.mark.parametrize("algorithm,problem,params", [
+    ("q-relaxed", "line-intersection", {"lines": 10, "outliers": 2}),
+    ("landmark-tracking", "indoor-landmarks", {"steps": 4}),
+    ("particle-filter", "car-track", {"w": 5, "steps": 4}),
+])
+def test_stepping_by_hand_judges_each_step_as_icpbench_run(tmp_path, algorithm, problem, params):
+    # By hand, the guarantee, coverage and association properties were missing.
+    spec = {"name": "by-hand", "seeds": [2], "experiments": [
+        {"name": "e", "algorithms": [algorithm], "problems": [{"name": problem, "params": params}]}]}
+    assert icpbench.run(spec, out=tmp_path)["ok"] == 1
+    with icpbench.open(tmp_path) as store:
+        run_id = int(store.runs()["id"][0])
+        stored = store.step_properties(run_id)
+        stored_run = store.run_properties(run_id)
+    estimator = icpbench.estimator(algorithm, seed=2)
+    for step in icpbench.problem(problem, seed=2, **params):
+        got = estimator.step(step).properties
+        rows = stored[stored["step"] == step.index]
+        want = {r["name"]: r["value"] for _, r in rows.iterrows()}
+        assert set(got) == set(want), (step.index, set(got) ^ set(want))
+        for name, value in want.items():
+            if name not in ("time_s", "solve_time_s"):
+                assert got[name] == value or (isinstance(value, float) and math.isnan(value)), name
+    run_props = estimator.run_properties()
+    assert set(run_props) == set(stored_run["name"])
