@@ -32,8 +32,11 @@ ParamMap ToParamMap(const py::dict& params) {
   ParamMap map;
   for (const auto& [key, value] : params) {
     const std::string name = py::str(key);
-    if (py::isinstance<py::bool_>(value))
-      map[name] = value.cast<bool>() ? "true" : "false";
+    // NumPy's bool is a bool too (its text, "True", is not one).
+    const bool numpy_bool = py::hasattr(value, "dtype") &&
+                            py::str(value.attr("dtype").attr("kind")).cast<std::string>() == "b";
+    if (py::isinstance<py::bool_>(value) || numpy_bool)
+      map[name] = PyObject_IsTrue(value.ptr()) == 1 ? "true" : "false";
     else if (py::isinstance<py::float_>(value))
       map[name] = py::str(py::module_::import("builtins").attr("repr")(value));  // round-trips
     else

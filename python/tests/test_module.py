@@ -309,3 +309,9 @@ def test_stepping_by_hand_judges_each_step_as_icpbench_run(tmp_path, algorithm, 
                 assert got[name] == value or (isinstance(value, float) and math.isnan(value)), name
     run_props = estimator.run_properties()
     assert set(run_props) == set(stored_run["name"])
+
+
+def test_numpy_values_are_parameters_as_python_ones():
+    step = next(icpbench.problem("car-track", seed=1, w=np.int64(5), steps=3,
+                                 heading_known=np.bool_(True), gps_error=np.float32(2.5)))
+    assert step.index == 0
