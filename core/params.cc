@@ -32,9 +32,10 @@ std::string FormatDouble(double v) {
   return std::string(buf, end);
 }
 
-namespace {
 bool ParseDouble(const std::string& text, double* out) {
-  if (text.empty()) return false;
+  // Decimal only: strtod also reads hexadecimal (0x10 as 16, 0x0.1p0) and
+  // skips leading blanks, neither of which a spec means.
+  if (text.empty() || text.find_first_of("xX \t\n\r\f\v") != std::string::npos) return false;
   char* end = nullptr;
   errno = 0;
   double v = std::strtod(text.c_str(), &end);
@@ -42,6 +43,8 @@ bool ParseDouble(const std::string& text, double* out) {
   *out = v;
   return true;
 }
+
+namespace {
 
 // The integers a range allows, as an int parameter holds them: open ends
 // moved in to the next integer, ends beyond the int type (AtLeast's 1e308)

@@ -126,6 +126,10 @@ std::vector<ParamInfo> DefaultParams(const std::string& owner) {
 // Number formatting shared by parameter and result printing: the shortest
 // text that reads back to the same double.
 std::string FormatDouble(double v);
+// A decimal number (sign, fraction, exponent; inf and infinity too), as a
+// parameter's or a spec's text: false for anything else (NaN, hexadecimal,
+// blanks, trailing text).
+bool ParseDouble(const std::string& text, double* out);
 
 }  // namespace icp
 

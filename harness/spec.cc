@@ -4,6 +4,8 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -130,10 +132,8 @@ class Reader {
 
   double Positive(const YAML::Node& node, const std::string& key) const {
     const std::string text = Scalar(node, key);
-    char* end = nullptr;
-    double v = std::strtod(text.c_str(), &end);
-    if (end != text.c_str() + text.size() || !(v > 0))
-      Fail(node, key, "'" + text + "' is not a positive number");
+    double v = 0;
+    if (!ParseDouble(text, &v) || !(v > 0)) Fail(node, key, "'" + text + "' is not a positive number");
     return v;
   }
 
@@ -151,9 +151,14 @@ class Reader {
       } catch (const std::exception&) {
         used = 0;
       }
-      if (used != text.size() || text.empty() || text[0] == '-')
-        Fail(n, key, "'" + text + "' is not a non-negative integer");
-      return v;
+      if (used == text.size() && !text.empty() && text[0] != '-' && !std::isspace(static_cast<unsigned char>(text[0])))
+        return v;
+      // An integer spelt as integer parameters may be ("1.0", "1e3"), up to
+      // 2^53, where a double still holds every integer.
+      double d = 0;
+      if (ParseDouble(text, &d) && d >= 0 && d <= 9007199254740992.0 && d == std::floor(d))
+        return static_cast<std::uint64_t>(d);
+      Fail(n, key, "'" + text + "' is not a non-negative integer");
     };
     if (seeds) {
       std::vector<std::uint64_t> out;

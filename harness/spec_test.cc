@@ -278,6 +278,25 @@ TEST(SpecTest, MinusZeroIsZero) {
   EXPECT_EQ(spec.runs[0].spec.algorithm_params.at("ratio"), "0");
 }
 
+// Numbers are decimal: hexadecimal text (strtod's 0x10) is refused, and a
+// seed may be spelt as integer parameters are (1.0, 1e3).
+TEST(SpecTest, NumbersAreDecimalAndSeedsTakeIntegerSpellings) {
+  EXPECT_NE(ErrorOf("timeout_s: 0x10\nalgorithms: [hc4]\nproblems: [chain]\n")
+                .find("'0x10' is not a positive number"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("algorithms: [{name: hc4, params: {ratio: 0x0.1p0}}]\nproblems: [chain]\n")
+                .find("not a number"),
+            std::string::npos);
+  const Spec spec = ParseSpec("seeds: [1.0, 1, 1e3, 2]\nalgorithms: [hc4]\nproblems: [chain]\n", "s");
+  ASSERT_EQ(spec.runs.size(), 3u);  // 1.0 and 1 are one seed
+  EXPECT_EQ(spec.runs[1].spec.seed, 1000u);
+  for (const char* bad : {"1.5", "-1", "1e300", "x"})
+    EXPECT_NE(ErrorOf(std::string("seeds: [") + bad + "]\nalgorithms: [hc4]\nproblems: [chain]\n")
+                  .find("is not a non-negative integer"),
+              std::string::npos)
+        << bad;
+}
+
 // Aliases nest cheaply in YAML (each level naming the one before twice):
 // the duplicate-key check visits each node once, and grids are counted
 // against the run limit before they are resolved, so neither a deep nest
