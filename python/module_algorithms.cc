@@ -56,8 +56,10 @@ ParamSet Describe(const std::string& owner, Fields* f) {
   ParamSet set(owner);
   for (const ParamInfo& p : algorithm.declared) {
     if (p.type == "double") {
-      set.Add(p.name, &f->doubles.emplace_back(std::stod(p.default_value)), p.doc,
-              Range::Closed(-std::numeric_limits<double>::max(), std::numeric_limits<double>::max()));
+      // Any double, inf included (a Python float may default to math.inf).
+      double value = 0;
+      ParseDouble(p.default_value, &value);  // repr() of a float: always decimal
+      set.Add(p.name, &f->doubles.emplace_back(value), p.doc, Range::Closed(-kInf, kInf));
     } else if (p.type == "int") {
       set.Add(p.name, &f->ints.emplace_back(std::stoi(p.default_value)), p.doc,
               Range::Closed(std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));

@@ -138,6 +138,8 @@ def _declared(name, declaration):
     if kind == "bool":
         text = "true" if default else "false"
     elif kind == "double":
+        if math.isnan(default):
+            raise ValueError(f"parameter '{name}': default NaN is not a value (inf is)")
         text = repr(float(default))
     else:
         text = str(default)

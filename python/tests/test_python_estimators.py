@@ -313,3 +313,22 @@ def test_ctrl_c_in_a_python_estimator_stepped_by_hand_stays_ctrl_c():
     step = next(icpbench.problem("car-track", seed=1, w=5, steps=3))
     with pytest.raises(KeyboardInterrupt):
         icpbench.estimator("interrupted-python", seed=1).step(step)
+
+
+class Unbounded:
+    def __init__(self, limit):
+        self.limit = limit
+
+    def step(self, view):
+        return view.newest_state(*view.csp_domains)
+
+
+def test_a_float_parameter_may_default_to_inf_but_not_nan():
+    icpbench.register_algorithm("unbounded-python", Unbounded, params={"limit": (math.inf, "a bound")})
+    limit = [p for p in {a["name"]: a for a in icpbench.algorithms()}["unbounded-python"]["params"]
+             if p["name"] == "limit"][0]
+    assert limit["default"] == "+oo"  # as the command line lists an infinite default
+    step = next(icpbench.problem("car-track", seed=1, w=5, steps=2))
+    assert icpbench.estimator("unbounded-python", seed=1, limit=2.5).step(step).contained
+    with pytest.raises(ValueError, match="NaN"):
+        icpbench.register_algorithm("nan-python", Unbounded, params={"limit": (math.nan, "")})
