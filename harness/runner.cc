@@ -62,6 +62,7 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
   try {
     const AlgorithmInfo& algorithm = FindAlgorithm(spec.algorithm);
     std::unique_ptr<Problem> problem = FindProblem(spec.problem).make(spec.problem_params, spec.seed);
+    problem->ServeOnly(algorithm.needs);
     estimator = algorithm.make(spec.algorithm_params, spec.seed);
     StopCondition stop = spec.timeout_s > 0
                              ? StopCondition::After(std::chrono::duration<double>(spec.timeout_s))

@@ -58,6 +58,10 @@ class Problem {
   virtual bool Next(Step* step) = 0;
   // Number of steps the stream will yield, for progress reports.
   virtual int NumSteps() const = 0;
+  // A hint before the first step: the estimator reads only this view, so a
+  // problem may leave out the others where they cost (car-track's window CSP
+  // under a particle filter). Without it every view is made.
+  virtual void ServeOnly(View needed) { static_cast<void>(needed); }
 };
 
 // A static problem: one step, made when it is asked for.

@@ -136,13 +136,16 @@ RunFilter ParseRunFilter(const httplib::Request& req, const std::vector<std::str
         f.values.push_back(items[i]);
       }
       f.where += ")";
+    } else if (name == "key") {  // one run's identity (it holds commas: not a list)
+      f.where += " AND r.key = ?";
+      f.values.push_back(text);
     } else if (name.rfind("param.", 0) == 0) {
       const std::string path = ParamPath(name.substr(6));
       f.where += std::string(" AND ") + kParamValueSql + " = ?";
       f.values.insert(f.values.end(), {path, path, text});
     } else if (std::find(also_allowed.begin(), also_allowed.end(), name) == also_allowed.end()) {
       throw HttpError(400, "unknown query parameter '" + name +
-                               "' (filters: algorithm, problem, status, experiment, param.NAME)");
+                               "' (filters: algorithm, problem, status, experiment, key, param.NAME)");
     }
   }
   return f;

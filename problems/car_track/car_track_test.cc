@@ -115,6 +115,27 @@ TEST(CarTrackTest, TruthInsideEveryInitialBoxAndSatisfiesEveryConstraint) {
   }
 }
 
+// Served to a particle filter, no window is built (it cost O(w) a step,
+// unread); everything else of each step is the same.
+TEST(CarTrackTest, WithoutTheCspViewNoWindowIsBuiltAndTheRestIsTheSame) {
+  auto all = Make({{"w", "50"}, {"steps", "12"}}, 4);
+  auto filtered = Make({{"w", "50"}, {"steps", "12"}}, 4);
+  filtered->ServeOnly(View::kProbabilistic);
+  Step a, b;
+  while (all->Next(&a)) {
+    ASSERT_TRUE(filtered->Next(&b));
+    EXPECT_TRUE(a.views.csp);
+    EXPECT_FALSE(b.views.csp);
+    EXPECT_TRUE(b.csp_truth.empty());
+    EXPECT_EQ(a.truth, b.truth);
+    EXPECT_EQ(a.annotations.size(), b.annotations.size());
+    ASSERT_TRUE(b.views.probabilistic);
+    const std::vector<double> state = a.truth;
+    EXPECT_EQ(a.views.probabilistic->log_likelihood(state), b.views.probabilistic->log_likelihood(state));
+  }
+  EXPECT_FALSE(filtered->Next(&b));
+}
+
 TEST(CarTrackTest, WindowGrowsToWStepsThenSlides) {
   const int w = 4;
   auto problem = Make({{"w", std::to_string(w)}, {"steps", "10"}}, 3);

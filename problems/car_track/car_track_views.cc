@@ -78,6 +78,16 @@ ProbabilisticView CarProbabilisticView(const CarTrackMeasurement& m, const Box& 
 bool CarTrackProblem::Next(Step* step) {
   if (k_ >= num_steps_) return false;
   const int k = k_++;
+  *step = Step();
+  step->views.step = k;
+  step->views.space = CarStateSpace();
+  step->views.probabilistic = CarProbabilisticView(measurements_[k], prior_, k == 0, UsesSimulatorNoise(params_));
+  if (const CarTrackMeasurement& m = measurements_[k]; m.x.IsBounded() && m.y.IsBounded())
+    step->annotations = {{"gps_x_lo", m.x.lo()}, {"gps_x_hi", m.x.hi()},
+                         {"gps_y_lo", m.y.lo()}, {"gps_y_hi", m.y.hi()}};
+  const CarTrackRecord& newest = records_[k];
+  if (newest.has_truth) step->truth = {newest.truth_x, newest.truth_y, newest.truth_theta};
+  if (!build_window_) return true;
   const int oldest = std::max(0, k - params_.w);
   std::vector<CarWindowState> states;
   bool truth_known = true;
@@ -89,16 +99,7 @@ bool CarTrackProblem::Next(Step* step) {
     states.push_back({m.x, m.y, th, m.ds, m.dth});
     truth_known = truth_known && records_[j].has_truth;
   }
-  *step = Step();
-  step->views.step = k;
-  step->views.space = CarStateSpace();
   step->views.csp = BuildCarWindow(oldest, states);
-  step->views.probabilistic = CarProbabilisticView(measurements_[k], prior_, k == 0, UsesSimulatorNoise(params_));
-  if (const CarTrackMeasurement& m = measurements_[k]; m.x.IsBounded() && m.y.IsBounded())
-    step->annotations = {{"gps_x_lo", m.x.lo()}, {"gps_x_hi", m.x.hi()},
-                         {"gps_y_lo", m.y.lo()}, {"gps_y_hi", m.y.hi()}};
-  const CarTrackRecord& newest = records_[k];
-  if (newest.has_truth) step->truth = {newest.truth_x, newest.truth_y, newest.truth_theta};
   if (!truth_known) return true;
   // The window's frame: its oldest heading in [-pi, pi] (from step 0, the
   // drive's own frame).

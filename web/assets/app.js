@@ -132,7 +132,7 @@ async function drawRuns() {
             runs.map((r, i) => [r.id, r.experiment, r.algorithm, r.problem, params(i), r.seed, r.status,
                            r.reason, r.steps, num(r.mean_area), r.consistency_rate, r.centre_rmse,
                            r.time_mean_s, r.key]),
-            i => setState({view: 'run', id: runs[i].id, step: ''}),
+            i => setState({view: 'run', id: runs[i].id, key: runs[i].key, step: ''}),
             i => 'status-' + runs[i].status);
   document.getElementById('page').textContent =
     `${Math.min(offset + 1, summary.total)}–${offset + runs.length} of ${summary.total}`;
@@ -219,8 +219,14 @@ async function drawCompare() {
 // --- one run ---------------------------------------------------------------
 async function drawRun() {
   const s = state(), input = document.getElementById('run-id');
-  input.onchange = () => setState({id: input.value, step: ''});
+  input.onchange = () => setState({id: input.value, key: '', step: ''});
   let id = s.get('id');
+  // A link names the run by its key too: a retried, forced or merged run has
+  // a new id, and the key finds it.
+  if (s.get('key')) {
+    const found = await api('/api/runs?key=' + encodeURIComponent(s.get('key')));
+    if (found.length > 0) id = String(found[0].id);
+  }
   if (!id) {
     const first = await api('/api/runs?limit=1&' + filterQuery());
     if (first.length === 0) return;

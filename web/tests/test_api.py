@@ -8,6 +8,7 @@ import shutil
 import socket
 import statistics
 import time
+import urllib.parse
 
 import pytest
 
@@ -350,3 +351,11 @@ def test_a_runs_answers_take_no_query_and_other_methods_are_405(server, db):
         connection.close()
         assert response.status == 405 and response.getheader("Allow") == "GET, HEAD", method
         assert "only reads" in body["error"]
+
+
+def test_a_run_is_found_by_its_key(server, db):
+    """A link names the run by key: a retried, forced or merged run gets a new id."""
+    row = runs_where(db, "status = 'ok'")[0]
+    found = server.json("/api/runs?key=" + urllib.parse.quote(row["key"]))
+    assert [r["id"] for r in found] == [row["id"]]
+    assert server.json("/api/runs?key=no-such-run") == []
