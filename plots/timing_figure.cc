@@ -53,15 +53,20 @@ std::vector<const GroupSummary*> TimingGroups(const std::vector<GroupSummary>& g
   // (problem, problem params) -> (algorithms ok at default params, CSPs),
   // over the step rows stored: a merged store's configuration recorded with
   // `record: runs` has none to draw, and must not win over one that has.
+  // With no step rows anywhere, the choice is made over the runs' counts, so
+  // that the figure's skip can name the runs recorded without them.
   std::map<std::pair<std::string, ParamMap>, std::pair<int, std::size_t>> score;
-  for (const GroupSummary& g : groups) {
-    if (!g.algorithm_params.empty() || g.ok == 0) continue;
-    std::size_t stored = 0;
-    for (const RunRecord* r : g.ok_runs) stored += r->steps.size();
-    if (stored == 0) continue;
-    auto& [algorithms, steps] = score[{g.problem, g.problem_params}];
-    ++algorithms;
-    steps += stored;
+  for (const bool stored_only : {true, false}) {
+    for (const GroupSummary& g : groups) {
+      if (!g.algorithm_params.empty() || g.ok == 0) continue;
+      std::size_t stored = 0;
+      for (const RunRecord* r : g.ok_runs) stored += r->steps.size();
+      if (stored_only && stored == 0) continue;
+      auto& [algorithms, steps] = score[{g.problem, g.problem_params}];
+      ++algorithms;
+      steps += stored_only ? stored : static_cast<std::size_t>(g.metrics.steps);
+    }
+    if (!score.empty()) break;
   }
   const auto best = std::max_element(score.begin(), score.end(), [](const auto& a, const auto& b) {
     return a.second < b.second;
