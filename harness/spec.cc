@@ -463,6 +463,9 @@ Spec ParseSpecText(const std::string& text, const std::string& source) {
                         &seen);
     }
   } else {
+    if (!root["algorithms"] && !root["problems"])
+      reader.Fail(root, "", "a spec needs 'experiments' (a list of them), or 'algorithms' and "
+                            "'problems' for one experiment");
     const std::string name = root["name"] ? reader.ExperimentName(root["name"], "name") : "main";
     reader.Experiment(root, "", name, timeout, memory, record_steps, seeds, &spec, &seen);
   }

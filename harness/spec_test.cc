@@ -248,6 +248,13 @@ TEST(SpecTest, ALogLongerThanStepsIsNoted) {
   std::filesystem::remove(log);
 }
 
+// A spec with neither experiments nor algorithms says what it needs (it
+// named 'algorithms' only).
+TEST(SpecTest, ASpecWithoutExperimentsOrAlgorithmsSaysWhatItNeeds) {
+  EXPECT_NE(ErrorOf("{}\n").find("a spec needs 'experiments'"), std::string::npos) << ErrorOf("{}\n");
+  EXPECT_NE(ErrorOf("name: x\n").find("or 'algorithms' and 'problems'"), std::string::npos);
+}
+
 // A misspelt key or name is answered with the likely one.
 TEST(SpecTest, AMisspeltNameIsSuggested) {
   EXPECT_NE(ErrorOf("seed: [1]\nalgorithms: [hc4]\nproblems: [chain]\n")

@@ -112,7 +112,7 @@ def run(spec, out, jobs=1, force=False, no_retry=False, name="python"):
     are kept).
     """
     if isinstance(spec, dict):
-        summary = _icpbench.run_sweep(json.dumps(spec), False, name,  # YAML reads JSON
+        summary = _icpbench.run_sweep(json.dumps(spec, default=_json_value), False, name,  # YAML reads JSON
                                       os.fspath(out), jobs, force, no_retry)
     else:
         summary = _icpbench.run_sweep(os.fspath(spec), True, "", os.fspath(out), jobs, force,
@@ -126,10 +126,22 @@ def run(spec, out, jobs=1, force=False, no_retry=False, name="python"):
 _TYPES = {bool: "bool", int: "int", float: "double", str: "string"}
 
 
+def _json_value(value):
+    """NumPy values in a spec dict, as JSON reads them (np.arange seeds, say)."""
+    if isinstance(value, np.generic):
+        return value.item()
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    raise TypeError(f"a spec holds {type(value).__name__} {value!r}: not a YAML value")
+
+
 def _declared(name, declaration):
     """A parameter's declaration: default, (default, doc) or (default, doc, choices)."""
     default, doc, choices = declaration, "", None
     if isinstance(declaration, tuple):
+        if not 2 <= len(declaration) <= 3:
+            raise ValueError(f"parameter '{name}': declare it as default, (default, doc) or "
+                             f"(default, doc, [choices]), not a tuple of {len(declaration)}")
         default, doc, *rest = declaration
         choices = rest[0] if rest else None
     kind = _TYPES.get(type(default))
@@ -178,6 +190,9 @@ def register_algorithm(name, cls, needs="csp", params=None, description=""):
     plugin's. The runs' parameters include `python`, the class's import path.
     """
     params = params or {}
+    if not isinstance(params, dict):
+        raise ValueError(f"{name}: params must be a dict of name -> declaration, "
+                         f"not a {type(params).__name__}")
     declared = [_declared(k, v) for k, v in params.items()]
     kinds = {info.name: kind for info, kind, _ in declared}
     # What would fail every run in its worker is refused here.

@@ -315,3 +315,12 @@ def test_numpy_values_are_parameters_as_python_ones():
     step = next(icpbench.problem("car-track", seed=1, w=np.int64(5), steps=3,
                                  heading_known=np.bool_(True), gps_error=np.float32(2.5)))
     assert step.index == 0
+
+
+def test_a_spec_dict_may_hold_numpy_values_and_an_empty_one_says_what_it_needs(tmp_path):
+    spec = _car_spec(3)
+    spec["seeds"] = list(np.arange(3, 4))
+    spec["experiments"][0]["problems"][0]["params"]["w"] = np.int64(5)
+    assert icpbench.run(spec, out=tmp_path)["ok"] == 1
+    with pytest.raises(ValueError, match="a spec needs 'experiments'"):
+        icpbench.run({}, out=tmp_path / "empty")

@@ -332,3 +332,10 @@ def test_a_float_parameter_may_default_to_inf_but_not_nan():
     assert icpbench.estimator("unbounded-python", seed=1, limit=2.5).step(step).contained
     with pytest.raises(ValueError, match="NaN"):
         icpbench.register_algorithm("nan-python", Unbounded, params={"limit": (math.nan, "")})
+
+
+def test_a_malformed_parameter_declaration_says_how_to_declare():
+    with pytest.raises(ValueError, match=r"\(default, doc\)"):
+        icpbench.register_algorithm("one-tuple-python", Unbounded, params={"limit": (1.0,)})
+    with pytest.raises(ValueError, match="must be a dict"):
+        icpbench.register_algorithm("list-python", Unbounded, params=[("limit", 1.0)])
