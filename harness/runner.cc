@@ -69,14 +69,16 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
                              : StopCondition();
     Step step;
     int limit_reached_at = -1;  // the step after which the time limit had passed
+    auto timed_out = [&](const std::string& when) {
+      record.status = RunStatus::kTimeout;
+      record.reason = "time limit of " + FormatDouble(spec.timeout_s) + " s reached " + when;
+    };
     while (problem->Next(&step)) {
       // The limit is checked between steps too: an algorithm whose steps are
       // each short never sees it inside one. Only when a step is left to
       // do: a run whose last step ends past the limit is complete.
       if (limit_reached_at >= 0) {
-        record.status = RunStatus::kTimeout;
-        record.reason = "time limit of " + FormatDouble(spec.timeout_s) + " s reached at step " +
-                        std::to_string(limit_reached_at);
+        timed_out("at step " + std::to_string(limit_reached_at));
         break;
       }
       step_index = step.views.step;
@@ -90,9 +92,7 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
         limit_reached_at = step_index;
         // A step the limit cut short is incomplete, last or not.
         if (result.summary.status == ContractStatus::kStopped) {
-          record.status = RunStatus::kTimeout;
-          record.reason = "time limit of " + FormatDouble(spec.timeout_s) +
-                          " s reached during step " + std::to_string(step_index);
+          timed_out("during step " + std::to_string(step_index));
           break;
         }
       }

@@ -1,6 +1,5 @@
 #include "harness/spec.h"
 
-#include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -15,6 +14,7 @@
 
 #include "algorithms/registry.h"
 #include "core/near_names.h"
+#include "harness/yaml_documents.h"
 #include "problems/registry.h"
 
 namespace icp {
@@ -359,49 +359,6 @@ class Reader {
 
 namespace {
 
-// Where a second, non-empty YAML document starts, if there is one. Not
-// YAML::LoadAll: yaml-cpp 0.7's parser returns an endless run of empty
-// documents on a stray ',' (LoadAll never returns; found by the fuzzer), so
-// the parser is asked for two documents and no more.
-class SecondDocumentFinder : public YAML::EventHandler {
- public:
-  static std::optional<YAML::Mark> Find(const std::string& text) {
-    std::istringstream in(text);
-    YAML::Parser parser(in);
-    SecondDocumentFinder finder;
-    if (!parser.HandleNextDocument(finder)) return std::nullopt;
-    ++finder.document_;
-    if (!parser.HandleNextDocument(finder)) return std::nullopt;
-    return finder.second_;
-  }
-
-  void OnDocumentStart(const YAML::Mark&) override {}
-  void OnDocumentEnd() override {}
-  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}  // empty: harmless
-  void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override { Content(mark); }
-  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
-                const std::string&) override {
-    Content(mark);
-  }
-  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
-                       YAML::EmitterStyle::value) override {
-    Content(mark);
-  }
-  void OnSequenceEnd() override {}
-  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
-                  YAML::EmitterStyle::value) override {
-    Content(mark);
-  }
-  void OnMapEnd() override {}
-
- private:
-  void Content(const YAML::Mark& mark) {
-    if (document_ == 1 && !second_) second_ = mark;
-  }
-  int document_ = 0;
-  std::optional<YAML::Mark> second_;
-};
-
 Spec ParseSpecText(const std::string& text, const std::string& source) {
   Reader reader(source);
   YAML::Node root;
@@ -409,7 +366,7 @@ Spec ParseSpecText(const std::string& text, const std::string& source) {
     root = YAML::Load(text);
     // A second document ('---') is refused, not dropped (an empty one, as
     // a trailing '---' makes, is harmless).
-    if (const std::optional<YAML::Mark> second = SecondDocumentFinder::Find(text))
+    if (const std::optional<YAML::Mark> second = SecondDocumentMark(text))
       reader.Fail(*second, "",
                   "a second YAML document ('---'): a spec is one document (give its "
                   "experiments in one list, or one spec per file)");
