@@ -110,19 +110,28 @@ py::tuple SolveJson(const std::string& file, const std::string& algorithm, const
   options.cancel = &cancel;
   SolveResult result;
   bool interrupted = false;
+  bool exited = false;
   {
-    py::gil_scoped_release release;
+    WithoutGil release;
     std::future<SolveResult> solving = std::async(std::launch::async, [&options] { return Solve(options); });
     while (solving.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
+      if (Exiting()) {  // the interpreter's exit waits for this call
+        exited = cancel = true;
+        continue;
+      }
       py::gil_scoped_acquire gil;
       if (!interrupted && PyErr_CheckSignals() != 0) {
         interrupted = true;
         cancel = true;
       }
     }
-    if (!interrupted) result = solving.get();
+    if (!interrupted && !exited) result = solving.get();
   }
   if (interrupted) throw py::error_already_set();
+  if (exited) {
+    PyErr_SetString(PyExc_RuntimeError, "icpbench: solve cancelled, the interpreter is exiting");
+    throw py::error_already_set();
+  }
   if (!key.empty()) {
     prepared.contractor = result.contractor;
     auto& cache = PreparedCache();
@@ -173,6 +182,7 @@ PYBIND11_MODULE(_icpbench, m) {
   m.def("solve_json", &SolveJson, py::arg("file"), py::arg("algorithm"), py::arg("params"),
         py::arg("repeat"), py::arg("timeout_s"),
         "(solve --format json text, variable names) for a Minibex file.");
+  BindExit(m);
   BindViews(m);
   BindRuns(m);
   BindSteps(m);

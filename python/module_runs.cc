@@ -61,7 +61,7 @@ py::dict Run(const std::string& spec_or_path, bool is_path, const std::string& s
   std::ostream progress(&buffer);
   SweepSummary s;
   {
-    py::gil_scoped_release release;
+    WithoutGil release;
     s = RunSweep(spec, options, progress, terminal);
     progress.flush();
   }

@@ -71,7 +71,7 @@ class PyProblem {
     auto step = std::make_shared<Step>();
     bool more;
     {
-      py::gil_scoped_release release;
+      WithoutGil release;
       more = problem_->Next(step.get());
     }
     if (!more) throw py::stop_iteration();
@@ -106,10 +106,11 @@ class PyEstimator {
       throw py::value_error("timeout_s = " + FormatDouble(timeout_s) +
                             ": must be a number of seconds > 0 (inf: no limit)");
     PyEstimate out;
-    py::gil_scoped_release release;
-    const StopCondition stop = timeout_s < std::numeric_limits<double>::infinity()
-                                   ? StopCondition::After(std::chrono::duration<double>(timeout_s))
-                                   : StopCondition();
+    WithoutGil release;
+    StopCondition stop = timeout_s < std::numeric_limits<double>::infinity()
+                             ? StopCondition::After(std::chrono::duration<double>(timeout_s))
+                             : StopCondition();
+    stop.WithCancelFlag(&Exiting());
     TakenStep taken = TakeStep(*estimator_, info_->needs, *s.step, stop);
     judges_.Judge(*s.step, &taken);  // the properties icpbench run stores
     taken.result.solve_time_s = taken.record.solve_time_s;

@@ -83,9 +83,9 @@ py::tuple ContractCsp(const PyView& v, const py::handle& lo, const py::handle& h
   Box box = BoxFromBounds(lo, hi, static_cast<std::size_t>(view.csp.num_variables()));
   const ParamMap contractor_params = ContractorParams(ToParamMap(params));
   {
-    py::gil_scoped_release release;
+    WithoutGil release;
     std::unique_ptr<Contractor> contractor = info.contractor(contractor_params, view.csp);
-    ContractContext context;
+    ContractContext context(StopCondition().WithCancelFlag(&Exiting()));
     if (!box.IsEmpty()) contractor->Contract(box, context);
   }
   return BoundsOf(box);
@@ -168,8 +168,8 @@ py::tuple ContractSighting(const PyView& v, std::size_t i, int landmark, const p
   Box box = BoxFromBounds(lo, hi, 3);
   if (!box.IsEmpty()) {
     const ConstraintSystem csp = PoseSighting(l->x, l->y, view.observations[i], box);
-    py::gil_scoped_release release;
-    ContractContext context;
+    WithoutGil release;
+    ContractContext context(StopCondition().WithCancelFlag(&Exiting()));
     info.contractor({}, csp)->Contract(box, context);
   }
   return BoundsOf(box);

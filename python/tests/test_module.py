@@ -284,6 +284,38 @@ def test_ctrl_c_stops_a_long_solve():
     assert icpbench.solve(text, algorithm="hc4")["status"] == "nonempty"
 
 
+@pytest.mark.parametrize("work", ["solve", "python-estimator"])
+def test_exiting_with_a_daemon_thread_inside_icpbench_is_clean(source_dir, work):
+    # The thread retook the GIL as Python finalized: "terminate called
+    # without an active exception", exit 134 (or 139 with a Python estimator).
+    script = f"""
+import icpbench, threading, time
+window = {os.path.join(source_dir, "examples", "car_window.bch")!r}
+class Slow:
+    def step(self, view):
+        time.sleep(0.01)
+        return view.newest_state(*view.contract(*view.csp_domains))
+icpbench.register_algorithm("slow-exit", Slow)
+steps = list(icpbench.problem("car-track", seed=1, steps=200, w=5))
+def loop():
+    while True:
+        if {work!r} == "solve":
+            icpbench.solve(window, algorithm="3b-bc4", repeat=50)
+        else:
+            estimator = icpbench.estimator("slow-exit")
+            for s in steps:
+                estimator.step(s)
+threading.Thread(target=loop, daemon=True).start()
+time.sleep(0.3)
+print("main thread done")
+"""
+    for _ in range(3):
+        done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120)
+        assert done.returncode == 0, done.stderr[-2000:]
+        assert "main thread done" in done.stdout
+        assert "terminate called" not in done.stderr
+
+
 @pytest.mark.parametrize("algorithm,problem,params", [
     ("q-relaxed", "line-intersection", {"lines": 10, "outliers": 2}),
     ("landmark-tracking", "indoor-landmarks", {"steps": 4}),
