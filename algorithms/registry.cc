@@ -109,6 +109,12 @@ ContractorFactory InnerContractorFactory(const std::string& owner, const std::st
   return factory;
 }
 
+void DescribeAlgorithm(const std::string& name, std::string description) {
+  FindAlgorithm(name);  // the error for an unknown name
+  for (AlgorithmInfo& a : Table())
+    if (a.name == name) a.description = std::move(description);
+}
+
 void RegisterAlgorithm(AlgorithmInfo info) {
   for (const AlgorithmInfo& a : Algorithms())
     if (a.name == info.name)

@@ -67,6 +67,9 @@ const AlgorithmInfo& FindAlgorithm(const std::string& name);
 ContractorFactory InnerContractorFactory(const std::string& owner, const std::string& inner);
 // Adds a plugin's algorithm; throws std::invalid_argument if the name is taken.
 void RegisterAlgorithm(AlgorithmInfo info);
+// A registered algorithm's new one-line description (a Python class
+// registered again under its name); throws as FindAlgorithm.
+void DescribeAlgorithm(const std::string& name, std::string description);
 
 }  // namespace icp
 

@@ -262,9 +262,12 @@ void Register(const std::string& name, py::object factory, const std::string& cl
     else Registered().erase(name);
     throw py::value_error(name + ": " + e.what());
   }
-  if (redefinition) return;
-  RegisterAlgorithm({name, description.empty() ? class_path + " (Python)" : description,
-                     &MakePythonEstimator, &ListParams, &ResolvePythonParams, view, {name, 5000, ""}});
+  const std::string line = description.empty() ? class_path + " (Python)" : description;
+  if (redefinition) {
+    DescribeAlgorithm(name, line);
+    return;
+  }
+  RegisterAlgorithm({name, line, &MakePythonEstimator, &ListParams, &ResolvePythonParams, view, {name, 5000, ""}});
   InstallForkHooks();
 }
 

@@ -246,8 +246,8 @@ def _versioned(version, needs_csp=True):
 
 
 def test_a_class_redefined_under_its_name_replaces_the_old_one(tmp_path):
-    icpbench.register_algorithm("edited-python", _versioned(1))
-    icpbench.register_algorithm("edited-python", _versioned(2))  # the cell run again
+    icpbench.register_algorithm("edited-python", _versioned(1), description="first")
+    icpbench.register_algorithm("edited-python", _versioned(2), description="second")  # the cell run again
     assert icpbench.run(_spec("edited-python"), out=tmp_path)["ok"] == 1
     with icpbench.open(tmp_path) as store:
         props = store.step_properties(int(store.runs().iloc[0]["id"]))
@@ -261,6 +261,7 @@ def test_a_class_redefined_under_its_name_replaces_the_old_one(tmp_path):
                                     params={"mode": ("x", "a mode", ["a", "b"])})
     listed = {a["name"]: a for a in icpbench.algorithms()}["edited-python"]
     assert [p["name"] for p in listed["params"]] == ["python"]
+    assert listed["description"] == "second"  # it kept the first
 
 
 def test_an_estimator_made_before_many_registrations_still_steps():
