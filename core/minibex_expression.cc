@@ -56,8 +56,11 @@ Value Parser::ParseUnary() {
   return ParsePower();
 }
 
-// '^' binds tighter than unary minus (-x^2 is -(x^2)) and takes an integer
-// constant exponent. It is left-associative, as in IBEX's parser.yc (%left
+// '^' binds tighter than unary minus (-x^2 is -(x^2)). An integer constant
+// exponent is a power; any other exponent (a real constant, an interval, an
+// expression) reads as IBEX reads it (ibex_P_ExprGenerator.cpp,
+// visit(P_ExprPower)): e1^e2 is exp(e2 * ln(e1)), defined for e1 > 0 only.
+// It is left-associative, as in IBEX's parser.yc (%left
 // '^'): x^2^3 is (x^2)^3, as IBEX reads a benchmark file. A signed exponent
 // (x^-1) is a unary minus, which binds looser than '^' and so takes the
 // rest of the chain: x^-2^3 is x^(-(2^3)), again as in IBEX.
@@ -68,7 +71,12 @@ Value Parser::ParsePower() {
     Next();
     const Token& start = Peek();
     const Value e = IsPunct("-") || IsPunct("+") ? ParseUnary() : ParsePrimary();
-    if (!e.is_constant()) Fail(start, "the exponent must be an integer constant");
+    if (!e.is_constant() || !e.constant.IsPoint() || std::floor(e.constant.lo()) != e.constant.lo()) {
+      const Value log = base.is_constant() ? Const(Log(base.constant)) : Node(Log(*base.expr));
+      const Value product = Arithmetic('*', e, log);
+      base = product.is_constant() ? Const(Exp(product.constant)) : Node(Exp(*product.expr));
+      continue;
+    }
     const int n = static_cast<int>(ToInteger(e.constant, start, {"the exponent"}, kMaxExponent));
     base = base.is_constant() ? Const(Pow(base.constant, n)) : Node(Pow(*base.expr, n));
   }

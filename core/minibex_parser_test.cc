@@ -296,6 +296,42 @@ TEST(MinibexParserTest, PowersAndUnaryMinus) {
   EXPECT_EQ(Eval(csp, 2, csp.domains()), Interval(-9, -1));
 }
 
+// Any exponent other than an integer constant reads as IBEX reads it:
+// e1^e2 = exp(e2 * ln(e1)), so it encloses the real power where e1 > 0
+// and is undefined (an empty enclosure) where e1 <= 0.
+TEST(MinibexParserTest, ARealOrVariableExponentIsExpOfTheProductWithTheLog) {
+  ConstraintSystem csp = ParseMinibex(R"(
+    Variables x in [1, 3]; y in [0.5, 2];
+    Constraints
+      x^0.5 = 0;
+      x^y = 0;
+      2^0.5 * x = 0;
+      x^[2, 3] = 0;
+      x^(y + 1)^2 = 0;  // left-associative: (x^(y + 1))^2
+      x^2.0 = 0;        // an integer: a power
+    end)");
+  ASSERT_EQ(csp.constraints().size(), 6u);
+  EXPECT_EQ(csp.graph().node(csp.constraints()[0].root).op, Op::kExp);
+  EXPECT_EQ(csp.graph().node(csp.constraints()[5].root).op, Op::kSqr);
+  const Box point = PointBox({2, 1.5});
+  auto encloses = [](const Interval& x, double v, double tolerance) {
+    return x.Contains(v) && x.Width() < tolerance;
+  };
+  EXPECT_TRUE(encloses(Eval(csp, 0, point), std::sqrt(2.0), 1e-14)) << Eval(csp, 0, point);
+  EXPECT_TRUE(encloses(Eval(csp, 1, point), std::pow(2.0, 1.5), 1e-14)) << Eval(csp, 1, point);
+  EXPECT_TRUE(encloses(Eval(csp, 2, point), 2 * std::sqrt(2.0), 1e-14)) << Eval(csp, 2, point);
+  EXPECT_TRUE(encloses(Eval(csp, 4, point), std::pow(2.0, 5.0), 1e-12)) << Eval(csp, 4, point);
+  const Interval thick = Eval(csp, 3, point);  // [2^2, 2^3]
+  EXPECT_TRUE(thick.Contains(4) && thick.Contains(8) && thick.Width() < 4 + 1e-12) << thick;
+  // On the whole domain: every real power of the box is inside.
+  const Interval whole = Eval(csp, 1, csp.domains());
+  for (double x : {1.0, 1.7, 3.0})
+    for (double y : {0.5, 1.2, 2.0}) EXPECT_TRUE(whole.Contains(std::pow(x, y))) << x << "^" << y;
+  // A base that is never positive leaves nothing.
+  const ConstraintSystem negative = ParseMinibex("Variables x in [-3, -1]; Constraints x^0.5 = 0; end");
+  EXPECT_TRUE(Eval(negative, 0, negative.domains()).IsEmpty());
+}
+
 TEST(MinibexParserTest, LnIsLog) {
   ConstraintSystem csp = ParseMinibex(
       "Variables x in [1, 2]; Constraints ln(x) = 0; log(x) = 0; end");
