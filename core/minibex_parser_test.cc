@@ -332,6 +332,39 @@ TEST(MinibexParserTest, ARealOrVariableExponentIsExpOfTheProductWithTheLog) {
   EXPECT_TRUE(Eval(negative, 0, negative.domains()).IsEmpty());
 }
 
+// IBEX's inverse trigonometric and hyperbolic functions: at points their
+// enclosures hold libm's values (to a few ulps, which the tolerance allows
+// for), over intervals every sampled value, and outside the domain nothing.
+TEST(MinibexParserTest, InverseTrigonometricAndHyperbolicFunctionsEncloseTheirValues) {
+  struct Case {
+    const char* name;
+    double (*f)(double);
+    double lo, hi;  // inside the domain
+    double outside;
+  };
+  const Case cases[] = {{"asin", std::asin, -1, 1, 1.5},      {"acos", std::acos, -1, 1, -1.5},
+                        {"asinh", std::asinh, -30, 40, NAN},  {"acosh", std::acosh, 1, 50, 0.5},
+                        {"atanh", std::atanh, -0.99, 0.99, 2}};
+  for (const Case& c : cases) {
+    const ConstraintSystem csp = ParseMinibex(std::string("Variables x in [") + std::to_string(c.lo) + ", " +
+                                              std::to_string(c.hi) + "]; Constraints " + c.name +
+                                              "(x) = 0; end");
+    const Interval whole = Eval(csp, 0, csp.domains());
+    for (int i = 0; i <= 40; ++i) {
+      const double x = c.lo + (c.hi - c.lo) * i / 40;
+      const double v = c.f(x);
+      const Interval at = Eval(csp, 0, PointBox({x}));
+      const double slack = 4e-15 * std::max(1.0, std::fabs(v));
+      EXPECT_TRUE(at.lo() <= v + slack && v - slack <= at.hi()) << c.name << "(" << x << ") = " << v << ": " << at;
+      EXPECT_LT(at.Width(), 1e-7 * std::max(1.0, std::fabs(v))) << c.name << "(" << x << "): " << at;
+      EXPECT_TRUE(whole.lo() <= v + slack && v - slack <= whole.hi()) << c.name << " over the domain";
+    }
+    if (!std::isnan(c.outside)) {
+      EXPECT_TRUE(Eval(csp, 0, PointBox({c.outside})).IsEmpty()) << c.name << "(" << c.outside << ")";
+    }
+  }
+}
+
 TEST(MinibexParserTest, LnIsLog) {
   ConstraintSystem csp = ParseMinibex(
       "Variables x in [1, 2]; Constraints ln(x) = 0; log(x) = 0; end");

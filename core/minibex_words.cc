@@ -15,14 +15,36 @@ constexpr std::string_view kKeywords[] = {"for", "begin", "return"};
 // Words IBEX reserves for functions this reader does not support: calling one
 // is a clear "not supported" error rather than "unknown identifier".
 constexpr std::string_view kUnsupportedFunctions[] = {
-    "acos", "asin", "acosh", "asinh", "atanh", "sign", "floor", "ceil",
-    "integer", "chi", "diff", "inf", "mid", "sup", "sum"};
+    "sign", "floor", "ceil", "integer", "chi", "diff", "inf", "mid", "sup", "sum"};
+
+// IBEX's inverse trigonometric and hyperbolic functions, written with the
+// operations a tape has (for an interval constant and for an expression
+// alike): each identity holds on the function's domain, and the domains of
+// sqrt and log cut the rest, so the enclosures are sound; x occurring twice
+// makes them wider than a dedicated operation's would be.
+template <class T>
+T AsinOf(const T& x) { return Atan2(x, Sqrt(1.0 - Sqr(x))); }  // in [-pi/2, pi/2]
+template <class T>
+T AcosOf(const T& x) {  // in [0, pi]; both arguments >= 0, away from atan2's cut at pi
+  return 2.0 * Atan2(Sqrt(1.0 - x), Sqrt(1.0 + x));
+}
+template <class T>
+T AsinhOf(const T& x) { return Log(x + Sqrt(Sqr(x) + 1.0)); }
+template <class T>
+T AcoshOf(const T& x) { return Log(x + Sqrt(Sqr(x) - 1.0)); }  // x <= -1 leaves a negative log argument
+template <class T>
+T AtanhOf(const T& x) { return 0.5 * Log((1.0 + x) / (1.0 - x)); }
 
 const UnaryFunction kUnaryFunctions[] = {
     {"sqr", Sqr, Sqr},     {"sqrt", Sqrt, Sqrt}, {"exp", Exp, Exp},    {"log", Log, Log},
     {"ln", Log, Log},      {"sin", Sin, Sin},    {"cos", Cos, Cos},    {"tan", Tan, Tan},
     {"atan", Atan, Atan},  {"sinh", Sinh, Sinh}, {"cosh", Cosh, Cosh}, {"tanh", Tanh, Tanh},
     {"abs", Abs, Abs},
+    {"asin", AsinOf<Interval>, [](Expr x) { return AsinOf(x); }},
+    {"acos", AcosOf<Interval>, [](Expr x) { return AcosOf(x); }},
+    {"asinh", AsinhOf<Interval>, [](Expr x) { return AsinhOf(x); }},
+    {"acosh", AcoshOf<Interval>, [](Expr x) { return AcoshOf(x); }},
+    {"atanh", AtanhOf<Interval>, [](Expr x) { return AtanhOf(x); }},
 };
 
 const BinaryFunction kBinaryFunctions[] = {
