@@ -11,7 +11,8 @@
 //   cst_decl   := NAME ('=' | 'in') expr                  (constant expr)
 //   var_decl   := NAME ['[' expr ']'] ['in' expr]         (constant exprs)
 //   block      := for NAME '=' expr ':' expr ';' block {';' block} [';'] end
-//               | expr ('=' | 'in' | '<=' | '>=' | '<' | '>') expr
+//               | ctr
+//   ctr        := expr ('=' | 'in' | '<=' | '>=' | '<' | '>') expr | '(' ctr ')'
 //   expr       := term {('+' | '-') term}
 //   term       := unary {('*' | '/') unary}
 //   unary      := ('-' | '+') unary | power
@@ -240,7 +241,46 @@ void Parser::SkipLoopBody(const std::string& what) {
   }
 }
 
+// IBEX's '(' ctr ')': a constraint in parentheses, told apart from a
+// parenthesised expression ('(x + 1)^2 <= 3') by where its relation is: in
+// the group the opening parenthesis starts, at a depth d reached by d
+// opening parentheses in a row ('((y >= 2))'; '((x) + 1 <= 2)' has d = 1).
+bool Parser::ParenthesisedConstraintAhead() const {
+  if (!IsPunct("(")) return false;
+  int depth = 0, leading = 0, relation_depth = kMaxDepth + 1;
+  bool opening_run = true;
+  for (int k = 0;; ++k) {
+    const Token& t = Peek(k);
+    if (t.kind == TokKind::kEnd) return false;
+    const bool open = IsPunct("(", k) || IsPunct("[", k);
+    opening_run = opening_run && IsPunct("(", k);
+    if (opening_run) ++leading;
+    const bool relation = (t.kind == TokKind::kIdent && t.text == "in") ||
+                          (t.kind == TokKind::kPunct && (t.text == "=" || t.text == "<=" || t.text == ">=" ||
+                                                         t.text == "<" || t.text == ">"));
+    if (open) {
+      ++depth;
+    } else if (IsPunct(")", k) || IsPunct("]", k)) {
+      if (--depth == 0) return relation_depth <= leading;
+    } else if (IsPunct(";", k)) {
+      return false;
+    } else if (relation) {
+      relation_depth = std::min(relation_depth, depth);
+    }
+  }
+}
+
 void Parser::ParseConstraint() {
+  if (ParenthesisedConstraintAhead()) {
+    DepthGuard guard(this);
+    const Token& open = Next();
+    ParseConstraint();
+    if (!IsPunct(")"))
+      Fail(Peek(), "expected ')' to close the '(' at line ", open.line, ", column ", open.column, ", found ",
+           Peek());
+    Next();
+    return;
+  }
   Value lhs = ParseExpr();
   Relation rel;
   // e in X is IBEX's thick constraint: e takes a value of X, as e = X does

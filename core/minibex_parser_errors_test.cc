@@ -153,6 +153,10 @@ TEST(MinibexParserTest, DeepNestingIsAnErrorNotACrash) {
   std::string deep_loops = "Variables x; Constraints ";
   for (int i = 0; i < 5000; ++i) deep_loops += "for i" + std::to_string(i) + "=1:1; ";
   EXPECT_THROW(ParseMinibex(deep_loops + "x = 0;"), MinibexError);
+  // Parenthesised constraints nest too.
+  const std::string deep_constraint =
+      "Variables x; Constraints " + std::string(100000, '(') + "x <= 1" + std::string(100000, ')') + "; end";
+  EXPECT_THROW(ParseMinibex(deep_constraint), MinibexError);
 }
 
 TEST(MinibexParserTest, HugeLoopIsAnErrorNotAHang) {

@@ -234,6 +234,7 @@ class Parser {
   void ParseLoop();
   void SkipLoopBody(const std::string& what);
   void ParseConstraint();
+  bool ParenthesisedConstraintAhead() const;
 
   // ---- Expressions (minibex_expression.cc) --------------------------------
 

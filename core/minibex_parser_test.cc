@@ -365,6 +365,30 @@ TEST(MinibexParserTest, InverseTrigonometricAndHyperbolicFunctionsEncloseTheirVa
   }
 }
 
+// IBEX's '(' ctr ')': a constraint may stand in parentheses, which a
+// parenthesised expression on the left of a relation is not.
+TEST(MinibexParserTest, AConstraintMayStandInParentheses) {
+  const ConstraintSystem csp = ParseMinibex(R"(
+    Variables x in [0, 3]; y in [0, 3];
+    Constraints
+      (x <= 1);
+      ((y >= 2));
+      (x + 1)^2 <= 3;
+      (x in [0.5, 2]);
+      ((x) + (y) = 2);
+      (max(x, y) < 2.5);
+    end)");
+  ASSERT_EQ(csp.constraints().size(), 6u);
+  EXPECT_EQ(csp.constraints()[0].range, Interval(-kInf, 1));
+  EXPECT_EQ(csp.constraints()[1].range, Interval(2, kInf));
+  EXPECT_EQ(csp.constraints()[2].range, Interval(-kInf, 3));
+  EXPECT_EQ(Eval(csp, 2, PointBox({1, 0})), Interval(4.0));  // (x + 1)^2
+  EXPECT_EQ(csp.constraints()[3].range, Interval(0.5, 2));
+  EXPECT_EQ(Eval(csp, 4, PointBox({0.5, 1})), Interval(1.5));
+  EXPECT_EQ(csp.constraints()[5].range, Interval(-kInf, 2.5));
+  EXPECT_THROW(ParseMinibex("Variables x; Constraints (x <= 1; end"), MinibexError);
+}
+
 TEST(MinibexParserTest, LnIsLog) {
   ConstraintSystem csp = ParseMinibex(
       "Variables x in [1, 2]; Constraints ln(x) = 0; log(x) = 0; end");
