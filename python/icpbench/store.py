@@ -8,6 +8,7 @@ reading creates no -wal/-shm files and needs no write permission.
 
 import os
 import sqlite3
+import threading
 from urllib.parse import quote
 
 try:
@@ -28,6 +29,9 @@ class Store:
                              f"{os.fspath(directory)}` first)")
         self.path = path
         self._db = None
+        # One connection, any thread (a thread pool, a widget's callback):
+        # its use is serialized here instead of refused by sqlite3.
+        self._lock = threading.Lock()
         self._connect()
         try:
             version = self._db.execute(
@@ -57,7 +61,7 @@ class Store:
         # before a write it then refuses, and every later read would stay in
         # that snapshot, blind to new runs.
         self._db = sqlite3.connect(f"file:{quote(os.path.abspath(self.path))}?{mode}", uri=True,
-                                   isolation_level=None)
+                                   isolation_level=None, check_same_thread=False)
         # Read-only also for ATTACH, which would create the file it names.
         self._db.set_authorizer(
             lambda action, *_: sqlite3.SQLITE_DENY if action == sqlite3.SQLITE_ATTACH else sqlite3.SQLITE_OK)
@@ -76,19 +80,21 @@ class Store:
         self.close()
 
     def close(self):
-        self._db.close()
+        with self._lock:
+            self._db.close()
 
     def query(self, sql, params=()):
         """Any SELECT on the store, as a DataFrame (or records). Raises ValueError
         on a bad query (and on any that would write)."""
-        try:
-            cursor = self._fresh().execute(sql, params)
-        except (sqlite3.Error, sqlite3.Warning) as e:
-            raise ValueError(f"{self.path}: query {sql!r}: {e}") from None
-        if cursor.description is None:
-            raise ValueError(f"{self.path}: query {sql!r} returns no columns (not a SELECT)")
-        columns = [d[0] for d in cursor.description]
-        rows = cursor.fetchall()
+        with self._lock:
+            try:
+                cursor = self._fresh().execute(sql, params)
+                if cursor.description is None:
+                    raise ValueError(f"{self.path}: query {sql!r} returns no columns (not a SELECT)")
+                columns = [d[0] for d in cursor.description]
+                rows = cursor.fetchall()
+            except (sqlite3.Error, sqlite3.Warning) as e:
+                raise ValueError(f"{self.path}: query {sql!r}: {e}") from None
         if _pd is not None:
             return _pd.DataFrame.from_records(rows, columns=columns)
         return [dict(zip(columns, row)) for row in rows]

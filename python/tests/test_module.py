@@ -253,6 +253,18 @@ def test_a_sweep_runs_without_a_stderr(tmp_path, monkeypatch):
     assert icpbench.run(_car_spec(3), out=tmp_path)["ok"] == 1
 
 
+def test_a_store_is_read_from_other_threads(tmp_path):
+    # sqlite3 refused a connection made in another thread: a thread pool or a
+    # widget's callback got "SQLite objects created in a thread ..." as a bad query.
+    from concurrent.futures import ThreadPoolExecutor
+    icpbench.run(_car_spec(3), out=tmp_path)
+    with icpbench.open(tmp_path) as store:
+        expected = len(store.steps())
+        with ThreadPoolExecutor(max_workers=4) as pool:
+            counts = list(pool.map(lambda _: len(store.steps()) + len(store.runs()), range(40)))
+    assert counts == [expected + 1] * 40
+
+
 def test_a_version_one_store_has_no_properties_rather_than_an_error(tmp_path):
     import sqlite3
     icpbench.run(_car_spec(3), out=tmp_path)
