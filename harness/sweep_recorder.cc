@@ -51,6 +51,8 @@ StopSignals::~StopSignals() {
 
 int StopSignals::Caught() { return g_stop_signal; }
 
+void StopSignals::Request(int signal) { g_stop_signal = signal; }
+
 SweepRecorder::SweepRecorder(const Spec& spec, const RunnerOptions& options, std::ostream& progress,
                              bool terminal)
     : out_dir_(CreatedDirectory(options.out_dir)),

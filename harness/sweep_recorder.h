@@ -31,6 +31,10 @@ class StopSignals {
   StopSignals(const StopSignals&) = delete;
   StopSignals& operator=(const StopSignals&) = delete;
   static int Caught();
+  // Stops the sweeps in progress as if signal had come (the Python module's
+  // exit stops those of its daemon threads); a sweep that starts later
+  // begins with none caught.
+  static void Request(int signal);
 
  private:
   struct sigaction old_int_ {}, old_term_ {}, old_hup_ {}, old_pipe_ {};

@@ -1,6 +1,8 @@
+#include <csignal>
 #include <chrono>
 #include <thread>
 
+#include "harness/sweep_recorder.h"
 #include "python/module_internal.h"
 
 namespace icp::python {
@@ -34,8 +36,10 @@ void BindExit(py::module_& m) {
     exiting = true;
     py::gil_scoped_release release;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
-    while (in_flight > 0 && std::chrono::steady_clock::now() < deadline)
+    while (in_flight > 0 && std::chrono::steady_clock::now() < deadline) {
+      StopSignals::Request(SIGTERM);  // again: a sweep that just began reset it
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
   };
   py::module_::import("atexit").attr("register")(py::cpp_function(hook));
 }

@@ -23,8 +23,9 @@ ParamMap ToParamMap(const py::dict& params);
 // finalizes is killed as it retakes the GIL (CPython pthread_exit()s it, and
 // the forced unwind through a noexcept destructor aborts the process, exit
 // 134). So an atexit hook (BindExit) raises Exiting(), which the work polls
-// where it can stop early, and waits up to a minute for the count to reach
-// 0; from then on, entering raises RuntimeError without releasing the GIL.
+// where it can stop early, stops sweeps as SIGTERM would, and waits up to a
+// minute for the count to reach 0; from then on, entering raises
+// RuntimeError without releasing the GIL.
 class WithoutGil {
  public:
   WithoutGil();  // called with the GIL held

@@ -296,8 +296,8 @@ def test_ctrl_c_stops_a_long_solve():
     assert icpbench.solve(text, algorithm="hc4")["status"] == "nonempty"
 
 
-@pytest.mark.parametrize("work", ["solve", "python-estimator"])
-def test_exiting_with_a_daemon_thread_inside_icpbench_is_clean(source_dir, work):
+@pytest.mark.parametrize("work", ["solve", "python-estimator", "run"])
+def test_exiting_with_a_daemon_thread_inside_icpbench_is_clean(source_dir, tmp_path, work):
     # The thread retook the GIL as Python finalized: "terminate called
     # without an active exception", exit 134 (or 139 with a Python estimator).
     script = f"""
@@ -309,10 +309,14 @@ class Slow:
         return view.newest_state(*view.contract(*view.csp_domains))
 icpbench.register_algorithm("slow-exit", Slow)
 steps = list(icpbench.problem("car-track", seed=1, steps=200, w=5))
+sweep = {{"name": "long", "seeds": list(range(1, 41)), "experiments": [{{"name": "e",
+         "algorithms": ["3b-bc4"], "problems": [{{"name": "car-track", "params": {{"w": 20, "steps": 2000}}}}]}}]}}
 def loop():
     while True:
         if {work!r} == "solve":
             icpbench.solve(window, algorithm="3b-bc4", repeat=50)
+        elif {work!r} == "run":  # minutes of runs: the exit stops the sweep
+            icpbench.run(sweep, out={str(tmp_path)!r})
         else:
             estimator = icpbench.estimator("slow-exit")
             for s in steps:
@@ -321,9 +325,12 @@ threading.Thread(target=loop, daemon=True).start()
 time.sleep(0.3)
 print("main thread done")
 """
-    for _ in range(3):
+    import time
+    for _ in range(3 if work != "run" else 1):
+        start = time.monotonic()
         done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120)
         assert done.returncode == 0, done.stderr[-2000:]
+        assert time.monotonic() - start < 30
         assert "main thread done" in done.stdout
         assert "terminate called" not in done.stderr
 
