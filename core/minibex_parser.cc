@@ -307,7 +307,7 @@ ConstraintSystem ParseMinibex(const std::string& text, const std::string& source
   return Parser(Tokenize(text, source), source).Run();
 }
 
-ConstraintSystem ParseMinibexFile(const std::string& path) {
+std::string ReadMinibexFile(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw MinibexError(path, 0, 0, "cannot read '" + path + "': it is a directory");
@@ -318,7 +318,9 @@ ConstraintSystem ParseMinibexFile(const std::string& path) {
   if (!in) throw MinibexError(path, 0, 0, "cannot open '" + path + "'");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (in.bad()) throw MinibexError(path, 0, 0, "error while reading '" + path + "'");
-  return ParseMinibex(text, path);
+  return text;
 }
+
+ConstraintSystem ParseMinibexFile(const std::string& path) { return ParseMinibex(ReadMinibexFile(path), path); }
 
 }  // namespace icp

@@ -36,7 +36,10 @@ class MinibexError : public std::runtime_error {
 
 // Parses Minibex text; source names the input in error messages.
 ConstraintSystem ParseMinibex(const std::string& text, const std::string& source = "<input>");
-// Reads and parses a file; an unreadable file is a MinibexError at line 0.
+// The text of a Minibex file; an unreadable one (missing, a directory, a
+// pipe or a device, a read error) is a MinibexError at line 0.
+std::string ReadMinibexFile(const std::string& path);
+// ParseMinibex(ReadMinibexFile(path), path).
 ConstraintSystem ParseMinibexFile(const std::string& path);
 
 }  // namespace icp

@@ -8,12 +8,9 @@
 #include <atomic>
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <future>
-#include <iterator>
 #include <map>
 #include <memory>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -62,41 +59,27 @@ std::map<std::string, Prepared>& PreparedCache() {
   static std::map<std::string, Prepared> cache;
   return cache;
 }
-// The file's text, or nullopt when it cannot be read as a regular file
-// (Solve reads it then, and says why).
-std::optional<std::string> FileText(const std::string& file) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(file, error)) return std::nullopt;
-  std::ifstream in(file, std::ios::binary);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in && !in.eof()) return std::nullopt;
-  return text;
-}
-
 // `solve`: the JSON the command line prints (solve --format json) and the
 // variables' names in order.
 py::tuple SolveJson(const std::string& file, const std::string& algorithm, const py::dict& params,
                     int repeat, double timeout_s) {
   SolveOptions options;
   options.file = file;
-  const std::optional<std::string> text = FileText(file);
-  std::string key;
+  std::string text = ReadMinibexFile(file);
+  std::string key = file + "|" + algorithm;
+  for (const auto& [name, value] : ToParamMap(params)) key += "|" + name + "=" + value;
   // Taken out of the cache while in use (the GIL, held here, orders the
   // cache's changes): a contractor serves one contraction at a time, so a
   // thread solving the same file meanwhile builds its own.
   Prepared prepared;
-  if (text) {
-    key = file + "|" + algorithm;
-    for (const auto& [name, value] : ToParamMap(params)) key += "|" + name + "=" + value;
-    if (auto entry = PreparedCache().extract(key); entry && entry.mapped().text == *text)
-      prepared = std::move(entry.mapped());
-    if (!prepared.system) {
-      prepared.text = *text;
-      prepared.system = std::make_shared<const ConstraintSystem>(ParseMinibex(*text, file));
-    }
-    options.parsed = prepared.system;
-    options.contractor = prepared.contractor;
+  if (auto entry = PreparedCache().extract(key); entry && entry.mapped().text == text)
+    prepared = std::move(entry.mapped());
+  if (!prepared.system) {
+    prepared.system = std::make_shared<const ConstraintSystem>(ParseMinibex(text, file));
+    prepared.text = std::move(text);
   }
+  options.parsed = prepared.system;
+  options.contractor = prepared.contractor;
   options.algorithm = algorithm;
   for (const auto& [key, value] : ToParamMap(params)) options.params.push_back(key + "=" + value);
   options.format = "json";
@@ -132,12 +115,10 @@ py::tuple SolveJson(const std::string& file, const std::string& algorithm, const
     PyErr_SetString(PyExc_RuntimeError, "icpbench: solve cancelled, the interpreter is exiting");
     throw py::error_already_set();
   }
-  if (!key.empty()) {
-    prepared.contractor = result.contractor;
-    auto& cache = PreparedCache();
-    if (cache.size() >= 16) cache.clear();
-    cache[key] = std::move(prepared);
-  }
+  prepared.contractor = result.contractor;
+  auto& cache = PreparedCache();
+  if (cache.size() >= 16) cache.clear();
+  cache[key] = std::move(prepared);
   return py::make_tuple(SolveResultToJson(result), result.csp.names());
 }
 
