@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <string_view>
 
 #include "core/near_names.h"
 
@@ -180,10 +181,26 @@ void ParamSet::Add(const std::string& name, bool* field, const std::string& doc)
   entries_.push_back(std::move(e));
 }
 
+namespace {
+constexpr std::string_view kOneOf = "one of ";
+}  // namespace
+
+std::vector<std::string> ChoicesOf(const ParamInfo& info) {
+  std::vector<std::string> choices;
+  if (info.range.rfind(kOneOf, 0) != 0) return choices;
+  const std::string list = info.range.substr(kOneOf.size());
+  for (std::size_t start = 0;;) {
+    const std::size_t bar = list.find('|', start);
+    choices.push_back(list.substr(start, bar - start));
+    if (bar == std::string::npos) return choices;
+    start = bar + 1;
+  }
+}
+
 void ParamSet::Add(const std::string& name, std::string* field, const std::string& doc,
                    std::vector<std::string> choices) {
   std::string range;
-  for (const auto& c : choices) range += (range.empty() ? "one of " : "|") + c;
+  for (const auto& c : choices) range += (range.empty() ? std::string(kOneOf) : "|") + c;
   Entry e;
   e.info = {name, "string", *field, range, doc};
   e.get = [field] { return *field; };

@@ -49,6 +49,9 @@ struct ParamInfo {
   std::string range;          // "[0, 1)", "one of a|b", "" when free
   std::string doc;
 };
+// The choices a string parameter's range lists ("one of a|b": a and b);
+// empty for any other range (a free string, a number's interval).
+std::vector<std::string> ChoicesOf(const ParamInfo& info);
 
 class ParamSet {
  public:

@@ -42,6 +42,8 @@ TEST(ParamsTest, DefaultsComeFromTheStruct) {
   EXPECT_EQ(info[1].type, "int");
   EXPECT_EQ(info[2].default_value, "false");
   EXPECT_EQ(info[3].range, "one of fast|slow");
+  EXPECT_EQ(ChoicesOf(info[3]), (std::vector<std::string>{"fast", "slow"}));  // read back
+  EXPECT_TRUE(ChoicesOf(info[0]).empty());
   EXPECT_EQ(info[4].name, "inner.ratio");
   EXPECT_EQ(info[4].default_value, "0.1");
 }

@@ -17,7 +17,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "algorithms/registry.h"
@@ -66,20 +65,9 @@ ParamSet Describe(const std::string& owner, Fields* f) {
     } else if (p.type == "bool") {
       set.Add(p.name, &f->bools.emplace_back(p.default_value == "true"), p.doc);
     } else {
-      // Choices arrive as ParamInfo writes them ("one of a|b"), so that the
-      // spec is checked before any run, as a C++ plugin's is.
-      std::vector<std::string> choices;
-      constexpr std::string_view kOneOf = "one of ";
-      if (p.range.rfind(kOneOf, 0) == 0) {
-        const std::string list = p.range.substr(kOneOf.size());
-        for (std::size_t start = 0;;) {
-          const std::size_t bar = list.find('|', start);
-          choices.push_back(list.substr(start, bar - start));
-          if (bar == std::string::npos) break;
-          start = bar + 1;
-        }
-      }
-      set.Add(p.name, &f->strings.emplace_back(p.default_value), p.doc, std::move(choices));
+      // Its choices, so that the spec is checked before any run, as a C++
+      // plugin's is.
+      set.Add(p.name, &f->strings.emplace_back(p.default_value), p.doc, ChoicesOf(p));
     }
   }
   set.Add("python", &f->strings.emplace_back(algorithm.class_path),
