@@ -136,7 +136,8 @@ def _json_value(value):
 
 
 def _declared(name, declaration):
-    """A parameter's declaration: default, (default, doc) or (default, doc, choices)."""
+    """A parameter's declaration (default, (default, doc) or (default, doc, choices)) as
+    the registry's ParamInfo, and its type."""
     default, doc, choices = declaration, "", None
     if isinstance(declaration, tuple):
         if not 2 <= len(declaration) <= 3:
@@ -171,7 +172,7 @@ def _declared(name, declaration):
     # Written as the registry lists choices ("one of a|b"): a spec is checked
     # before any run, as for a C++ plugin.
     allowed = "one of " + "|".join(choices) if choices is not None else ""
-    return _icpbench.ParamInfo(name, kind, text, allowed, doc), kind, choices
+    return _icpbench.ParamInfo(name, kind, text, allowed, doc), kind
 
 
 def register_algorithm(name, cls, needs="csp", params=None, description=""):
@@ -194,7 +195,7 @@ def register_algorithm(name, cls, needs="csp", params=None, description=""):
         raise ValueError(f"{name}: params must be a dict of name -> declaration, "
                          f"not a {type(params).__name__}")
     declared = [_declared(k, v) for k, v in params.items()]
-    kinds = {info.name: kind for info, kind, _ in declared}
+    kinds = {info.name: kind for info, kind in declared}
     # What would fail every run in its worker is refused here.
     if not callable(getattr(cls, "step", None)):
         raise ValueError(f"{name}: {cls.__qualname__} has no step(view) method")
@@ -219,4 +220,4 @@ def register_algorithm(name, cls, needs="csp", params=None, description=""):
 
     class_path = f"{cls.__module__}.{cls.__qualname__}"
     _icpbench.register_python_algorithm(name, factory, class_path, needs,
-                                        [info for info, _, _ in declared], description)
+                                        [info for info, _ in declared], description)
