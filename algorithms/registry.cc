@@ -119,6 +119,9 @@ void RegisterAlgorithm(AlgorithmInfo info) {
   for (const AlgorithmInfo& a : Algorithms())
     if (a.name == info.name)
       throw std::invalid_argument("algorithm '" + info.name + "' is already registered");
+  // Its parameters are declared now, so that a name declared twice or one
+  // that cannot be written (ParamError) refuses the algorithm, not every run.
+  if (info.params != nullptr) info.params(info.name);
   Table().push_back(std::move(info));
 }
 

@@ -197,6 +197,7 @@ int main(int argc, char** argv) {
   try {
     for (const std::string& plugin : plugins) icp::LoadPlugin(plugin);
     if (*solve_cmd) {
+      solve.kill_grace_s = 2;  // as `run` kills a worker 2 s past its limit
       icp::SolveResult result = icp::Solve(solve);
       std::cout << (solve.format == "json" ? icp::SolveResultToJson(result) + "\n"
                                            : icp::SolveResultToText(result));
@@ -316,11 +317,17 @@ int main(int argc, char** argv) {
   } catch (const std::invalid_argument& e) {  // ParamError, unknown names, options
     std::cerr << "icpbench: " << e.what() << "\n";
     return kUsageError;
+  } catch (const icp::AlgorithmFault& e) {  // a plugin's bug, or ours; named
+    std::cerr << "icpbench: " << e.what() << "\n";
+    return 1;
   } catch (const std::runtime_error& e) {  // MinibexError: unreadable or malformed file
     std::cerr << "icpbench: " << e.what() << "\n";
     return kUsageError;
   } catch (const std::exception& e) {
     std::cerr << "icpbench: internal error: " << e.what() << "\n";
+    return 1;
+  } catch (...) {  // a plugin's throw of a non-exception
+    std::cerr << "icpbench: internal error: an exception of unknown type\n";
     return 1;
   }
   return 0;

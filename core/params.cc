@@ -117,6 +117,37 @@ IntegerText ReadInteger(const std::string& text, long long* out) {
   *out = negative ? -v : v;
   return IntegerText::kInteger;
 }
+
+// A parameter's name must be writable as `--param NAME=VALUE`, as a spec's
+// key and in a run key: '.'-separated words (a nested set's prefix), each a
+// letter or digit, then letters, digits, '_' or '-'.
+bool ValidParamName(const std::string& name) {
+  bool word_start = true;
+  for (char c : name) {
+    const bool alphanumeric = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+    if (word_start) {
+      if (!alphanumeric) return false;
+      word_start = false;
+    } else if (c == '.') {
+      word_start = true;
+    } else if (!alphanumeric && c != '_' && c != '-') {
+      return false;
+    }
+  }
+  return !word_start;
+}
+
+// Two fields of one name would be one key for two values: the run key would
+// show one, the algorithm read the other.
+template <class Entries>
+void CheckNewName(const std::string& owner, const std::string& name, const Entries& entries) {
+  if (!ValidParamName(name))
+    throw ParamError(owner + ": parameter '" + name +
+                     "' is not a valid name: a letter or digit, then letters, digits, '_' or '-' "
+                     "(a nested set adds 'prefix.')");
+  for (const auto& e : entries)
+    if (e.info.name == name) throw ParamError(owner + ": parameter '" + name + "' is declared twice");
+}
 }  // namespace
 
 std::function<std::string(const std::string&)> ParamSet::Where(const std::string& name) const {
@@ -140,6 +171,7 @@ void ParamSet::Add(const std::string& name, double* field, const std::string& do
     if (!range.Contains(v)) throw ParamError(where(text) + ": must be in " + range.ToString());
     *field = v == 0 ? 0.0 : v;  // -0 is 0: one spelling, one run key
   };
+  CheckNewName(owner_, e.info.name, entries_);
   entries_.push_back(std::move(e));
 }
 
@@ -161,6 +193,7 @@ void ParamSet::Add(const std::string& name, int* field, const std::string& doc, 
       throw ParamError(where(text) + ": must be in " + integers.ToString());
     *field = static_cast<int>(v);
   };
+  CheckNewName(owner_, e.info.name, entries_);
   entries_.push_back(std::move(e));
 }
 
@@ -178,6 +211,7 @@ void ParamSet::Add(const std::string& name, bool* field, const std::string& doc)
       throw ParamError(where(text) + ": must be true or false");
     }
   };
+  CheckNewName(owner_, e.info.name, entries_);
   entries_.push_back(std::move(e));
 }
 
@@ -215,6 +249,7 @@ void ParamSet::Add(const std::string& name, std::string* field, const std::strin
     check(text);
     *field = text;
   };
+  CheckNewName(owner_, e.info.name, entries_);
   entries_.push_back(std::move(e));
 }
 
@@ -223,6 +258,7 @@ void ParamSet::Nest(const std::string& prefix, const std::function<void(ParamSet
   describe(inner);
   for (Entry& e : inner.entries_) {
     e.info.name = prefix + "." + e.info.name;
+    CheckNewName(owner_, e.info.name, entries_);
     entries_.push_back(std::move(e));
   }
 }

@@ -87,6 +87,33 @@ TEST(ParamsTest, RejectsBadInputWithFieldValueAndRule) {
 }
 
 // A likely misspelling is named; a far or ambiguous name is not guessed.
+// Two fields of one name would be one key for two values; a name that
+// `--param NAME=VALUE` or a spec cannot write could never be set.
+TEST(ParamsTest, ANameDeclaredTwiceOrUnwritableIsRefused) {
+  double a = 0, b = 0;
+  ParamSet set("example");
+  set.Add("ratio", &a, "", Range::Closed(0, 1));
+  try {
+    set.Add("ratio", &b, "", Range::Closed(0, 1));
+    ADD_FAILURE() << "a second 'ratio' was accepted";
+  } catch (const ParamError& e) {
+    EXPECT_STREQ(e.what(), "example: parameter 'ratio' is declared twice");
+  }
+  for (const std::string bad : {"", "a=b", "a b", "_a", "a.", ".a", "a..b", "a,b", "a|b", "\u00e9"}) {
+    ParamSet fresh("example");
+    EXPECT_THROW(fresh.Add(bad, &a, "", Range::Closed(0, 1)), ParamError) << bad;
+  }
+  for (const std::string good : {"x", "max_revise_calls", "inner.epsilon", "3b", "a-b", "Max"}) {
+    ParamSet fresh("example");
+    EXPECT_NO_THROW(fresh.Add(good, &a, "", Range::Closed(0, 1))) << good;
+  }
+  // A nested name that meets an outer one is a duplicate too.
+  ParamSet outer("example");
+  outer.Add("inner.epsilon", &a, "", Range::Closed(0, 1));
+  EXPECT_THROW(outer.Nest("inner", [&b](ParamSet& s) { s.Add("epsilon", &b, "", Range::Closed(0, 1)); }),
+               ParamError);
+}
+
 TEST(NearNamesTest, SuggestsOnlyALikelyMisspelling) {
   const std::vector<std::string> keys = {"seeds", "name", "timeout_s", "algorithms", "problems"};
   EXPECT_EQ(DidYouMean("seed", keys), "; did you mean 'seeds'?");

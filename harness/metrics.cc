@@ -221,11 +221,13 @@ std::string InvalidEstimateReason(const Views& views, const Estimate& estimate) 
   if (static_cast<int>(hull.size()) != views.space.size())
     return "the estimate has " + std::to_string(hull.size()) + " components, the state " +
            std::to_string(views.space.size());
+  // Before emptiness: a NaN bound reads as an empty component (!(lo <= hi)).
+  for (int c = 0; c < views.space.size(); ++c)
+    if (std::isnan(hull[c].lo()) || std::isnan(hull[c].hi())) return views.space.names[c] + " has a NaN bound";
   if (hull.IsEmpty()) return "";
   const Box domains = Domains(views);
   for (int c = 0; c < views.space.size(); ++c) {
     const std::string& name = views.space.names[c];
-    if (std::isnan(hull[c].lo()) || std::isnan(hull[c].hi())) return name + " has a NaN bound";
     const double period = views.space.Period(c);
     if (period > 0 && !(domains[c].Width() < period)) continue;  // any frame is fine
     if (!hull[c].IsSubsetOf(domains[c]))

@@ -121,6 +121,9 @@ RunRecord ExecuteRun(const RunSpec& spec, const StepSink& sink) {
   for (Property& p : judges.RunProperties()) record.properties.push_back(std::move(p));
   record.wall_time_s = Seconds(Clock::now() - start);
   record.metrics = metrics.Finish(spec.seed);
+  // As a worker that died says (WorkerPool): what failed did not lose the steps before it.
+  if (record.status == RunStatus::kFailed && spec.record_steps && record.metrics.steps > 0)
+    record.reason += "; the " + std::to_string(record.metrics.steps) + " steps finished before are kept";
   return record;
 }
 

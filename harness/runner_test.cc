@@ -141,23 +141,32 @@ problems: [chain]
   EXPECT_FALSE(by_mode["hc4"].provenance.date.empty());
 }
 
-// A worker that crashes, or hangs and is killed, after some good steps:
-// its run is recorded as failed or timed out with those steps and their
-// metrics (they reached the step file one by one), not with none.
+// A worker that crashes, hangs and is killed, throws, exits or returns a
+// broken box after some good steps: its run is recorded as failed or timed
+// out with those steps and their metrics (they reached the step file one by
+// one), not with none, and its reason says why and that they are kept.
 TEST(RunnerTest, ARunThatDiesKeepsTheStepsItFinished) {
   const std::string dir = FreshDir("dies_mid_run");
   Sweep(R"(
 timeout_s: 1
 algorithms:
-  - {name: fault, params: {mode: [segfault, hang], after_calls: 3}}
+  - {name: fault, params: {mode: [segfault, hang, throw, exit, garbage, nan], after_calls: 3}}
 problems: [{name: car-track, params: {steps: 10}}]
 )", dir);
   ResultsStore store(StorePath(dir));
   std::map<std::string, RunRecord> by_mode;
   for (RunRecord& r : store.LoadRuns(true)) by_mode[r.spec.algorithm_params.at("mode")] = r;
-  ASSERT_EQ(by_mode.size(), 2u);
+  ASSERT_EQ(by_mode.size(), 6u);
   EXPECT_EQ(by_mode["segfault"].status, RunStatus::kFailed);
   EXPECT_EQ(by_mode["hang"].status, RunStatus::kTimeout);
+  EXPECT_EQ(by_mode["throw"].reason.rfind("exception: injected fault;", 0), 0u) << by_mode["throw"].reason;
+  EXPECT_EQ(by_mode["exit"].reason.rfind("worker exited with code 0 before sending its result;", 0), 0u)
+      << by_mode["exit"].reason;
+  EXPECT_NE(by_mode["garbage"].reason.find("is not inside its domain"), std::string::npos) << by_mode["garbage"].reason;
+  // A NaN bound reads as an empty interval: it must not pass as an empty box.
+  EXPECT_EQ(by_mode["nan"].reason.rfind("invalid result at step 3: x has a NaN bound;", 0), 0u)
+      << by_mode["nan"].reason;
+  for (const char* mode : {"throw", "exit", "garbage", "nan"}) EXPECT_EQ(by_mode[mode].status, RunStatus::kFailed) << mode;
   for (const auto& [mode, r] : by_mode) {
     EXPECT_EQ(r.metrics.steps, 3) << mode << ": " << r.reason;
     EXPECT_EQ(r.steps.size(), 3u) << mode;

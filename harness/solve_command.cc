@@ -2,14 +2,22 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <condition_variable>
 #include <cstdio>
+#include <cstdlib>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <thread>
 #include <type_traits>
 #include <variant>
 
+#include "algorithms/contraction_check.h"
 #include "algorithms/registry.h"
 #include "core/minibex_parser.h"
+#include "harness/environment_error.h"
+#include "harness/metrics.h"
 #include "problems/registry.h"
 
 namespace icp {
@@ -24,6 +32,60 @@ ParamMap ParseKeyValues(const std::vector<std::string>& items) {
     map[item.substr(0, eq)] = item.substr(eq + 1);
   }
   return map;
+}
+
+// With SolveOptions::kill_grace_s: ends the process if the work it watches
+// (one contraction or solve) is still running that long past its limit.
+class Watchdog {
+ public:
+  Watchdog(const SolveOptions& options, const std::string& algorithm) {
+    if (options.kill_grace_s < 0 || !std::isfinite(options.timeout_s)) return;
+    const auto after = std::chrono::duration<double>(options.timeout_s + options.kill_grace_s);
+    const std::string message = "icpbench: algorithm '" + algorithm + "' did not stop within " +
+                                FormatDouble(options.kill_grace_s) + " s past --timeout " +
+                                FormatDouble(options.timeout_s) + " (it does not check its stop condition)\n";
+    thread_ = std::thread([this, after, message] {
+      std::unique_lock<std::mutex> lock(mutex_);
+      if (done_changed_.wait_for(lock, after, [this] { return done_; })) return;
+      std::fputs(message.c_str(), stderr);
+      std::_Exit(1);
+    });
+  }
+  ~Watchdog() {
+    if (!thread_.joinable()) return;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      done_ = true;
+    }
+    done_changed_.notify_all();
+    thread_.join();
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable done_changed_;
+  bool done_ = false;
+  std::thread thread_;
+};
+
+// Work of `algorithm` (building it, a contraction, a solve): its own
+// failures become AlgorithmFault; usage, memory and environment errors
+// pass as they are.
+template <class Work>
+auto Guarded(const std::string& algorithm, Work&& work) {
+  try {
+    return work();
+  } catch (const std::invalid_argument&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const EnvironmentError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw AlgorithmFault("algorithm '" + algorithm + "' failed: " + e.what());
+  } catch (...) {
+    throw AlgorithmFault("algorithm '" + algorithm + "' threw an exception of unknown type");
+  }
 }
 
 // %.17g reads back to the same double, so the printed box still encloses.
@@ -58,15 +120,22 @@ SolveResult Solve(const SolveOptions& options) {
   if (info.contractor != nullptr) {
     std::shared_ptr<Contractor> contractor =
         options.contractor && options.parsed ? options.contractor
-                                             : info.contractor(ContractorParams(params), result.csp);
+                                             : Guarded(info.name, [&] {
+                                                 return std::shared_ptr<Contractor>(
+                                                     info.contractor(ContractorParams(params), result.csp));
+                                               });
+    if (!contractor) throw AlgorithmFault("algorithm '" + info.name + "' made no contractor");
     result.contractor = contractor;
     for (int r = 0; r < options.repeat && (r == 0 || !cancelled()); ++r) {
       Box box = result.csp.domains();
       const StopCondition stop = limit();
       ContractContext context(stop);
       auto start = std::chrono::steady_clock::now();
-      ContractSummary summary = contractor->Contract(box, context);
+      const Watchdog watchdog(options, info.name);
+      ContractSummary summary = Guarded(info.name, [&] { return contractor->Contract(box, context); });
       times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      if (std::string why = InvalidContractionReason(result.csp.domains(), box, result.csp.names()); !why.empty())
+        throw AlgorithmFault("algorithm '" + info.name + "' returned an invalid box: " + why);
       result.box = box;
       result.summary = summary;
     }
@@ -77,10 +146,14 @@ SolveResult Solve(const SolveOptions& options) {
     if (!step.views.Offers(info.needs))
       throw std::invalid_argument("solve: the minibex-file problem offers no measurement-set view");
     for (int r = 0; r < options.repeat && (r == 0 || !cancelled()); ++r) {
-      std::unique_ptr<Estimator> estimator = info.make(params, 0);
+      std::unique_ptr<Estimator> estimator = Guarded(info.name, [&] { return info.make(params, 0); });
       auto start = std::chrono::steady_clock::now();
-      StepResult step_result = estimator->Step(step.views, limit());
+      const Watchdog watchdog(options, info.name);
+      StepResult step_result = Guarded(info.name, [&] { return estimator->Step(step.views, limit()); });
       times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      if (!step_result.estimate) throw AlgorithmFault("algorithm '" + info.name + "' returned no estimate");
+      if (std::string why = InvalidEstimateReason(step.views, *step_result.estimate); !why.empty())
+        throw AlgorithmFault("algorithm '" + info.name + "' returned an invalid estimate: " + why);
       result.box = step_result.estimate->Hull();
       result.summary = step_result.summary;
       result.relaxed = true;

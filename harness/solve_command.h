@@ -9,6 +9,7 @@
 #include <atomic>
 #include <iosfwd>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,19 @@ struct SolveOptions {
   // When set and raised, the solve stops as at its time limit and the
   // repeats end (the Python module's Ctrl-C).
   const std::atomic<bool>* cancel = nullptr;
+  // When >= 0 (the command line) and the limit is finite: a contraction or
+  // solve still running this many seconds past its limit ends the process
+  // (exit 1, the message names the algorithm), as `run` kills such a run's
+  // worker; one that never checks its stop condition would hang otherwise.
+  double kill_grace_s = -1;
+};
+
+// An algorithm that failed inside Solve: it threw (anything but a usage,
+// memory or environment error), returned no estimate or an invalid box, or
+// ran past its limit. A bug of that algorithm (exit 1); the message names it.
+class AlgorithmFault : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 struct SolveResult {
@@ -60,7 +74,8 @@ struct SolveResult {
 };
 
 // Runs the contraction. Throws std::invalid_argument (bad algorithm,
-// parameter or option), ParamError or MinibexError: all are usage errors.
+// parameter or option), ParamError or MinibexError: all are usage errors;
+// AlgorithmFault: the algorithm's own failure.
 SolveResult Solve(const SolveOptions& options);
 
 // The JSON contract: {"algorithm", "status": "empty"|"nonempty", "box":

@@ -267,6 +267,10 @@ FinishedRun WorkerPool::Finish(Worker& w, int wait_status) {
   } else if (!WIFEXITED(wait_status) || WEXITSTATUS(wait_status) != 0) {
     r.status = RunStatus::kFailed;
     r.reason = "worker exited with code " + std::to_string(WEXITSTATUS(wait_status));
+  } else if (w.output.empty()) {
+    // exit(0) inside the run (a plugin's, or a library's it calls).
+    r.status = RunStatus::kFailed;
+    r.reason = "worker exited with code 0 before sending its result";
   } else {
     try {
       r = DeserializeSummary(w.output, w.run.spec);

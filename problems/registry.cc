@@ -75,6 +75,9 @@ void RegisterProblem(ProblemInfo info) {
   for (const ProblemInfo& p : Problems())
     if (p.name == info.name)
       throw std::invalid_argument("problem '" + info.name + "' is already registered");
+  // Its parameters are declared now, so that a name declared twice or one
+  // that cannot be written (ParamError) refuses the problem, not every run.
+  if (info.params != nullptr) info.params(info.name);
   Table().push_back(std::move(info));
 }
 

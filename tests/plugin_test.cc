@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -206,6 +207,65 @@ TEST(PluginTest, TheTreesNamesFollowTheNamingRule) {
     for (const nlohmann::json& entry : nlohmann::json::parse(r.out))
       EXPECT_TRUE(std::regex_match(entry["name"].get<std::string>(), rule)) << entry["name"];
   }
+}
+
+// A parameter declared twice would be one key for two fields (the run key
+// showing one value, the algorithm reading another), and one the command
+// line cannot write could never be set: loading refuses both.
+TEST(PluginTest, AParameterDeclaredTwiceOrUnwritableIsAnError) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"fault", "faulty: parameter 'fault' is declared twice"},
+      {"carry", "faulty: parameter 'carry' is declared twice"},  // the window adapter's
+      {"my weird=key", "faulty: parameter 'my weird=key' is not a valid name"},
+      {"", "faulty: parameter '' is not a valid name"},
+  };
+  for (const auto& [name, message] : cases) {
+    setenv("ICPBENCH_TEST_PLUGIN_PARAM", name.c_str(), 1);
+    Result r = Icpbench("--plugin " PLUGIN_FAULTY_CONTRACTOR " list algorithms");
+    EXPECT_EQ(r.exit_code, 2) << name << ": " << r.out;
+    EXPECT_NE(r.out.find("icpbench: plugin " PLUGIN_FAULTY_CONTRACTOR ": " + message), std::string::npos)
+        << name << ": " << r.out;
+  }
+  setenv("ICPBENCH_TEST_PLUGIN_PARAM", "max_boxes-2", 1);
+  Result r = Icpbench("--plugin " PLUGIN_FAULTY_CONTRACTOR " list algorithms");
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  unsetenv("ICPBENCH_TEST_PLUGIN_PARAM");
+}
+
+// `solve` checks what a plugin's contractor returns, as `run` does: a NaN
+// bound (which would read as an empty box, "no solution"), a box wider than
+// its domains, another size, no contractor, an exception of any type; each
+// exits 1 naming the algorithm instead of printing a wrong box or crashing.
+TEST(PluginTest, SolveRefusesAnInvalidResultNamingTheAlgorithm) {
+  const std::string file = std::string(ICPBENCH_EXAMPLES) + "/paper002_sum.bch";
+  const std::pair<std::string, std::string> cases[] = {
+      {"nan", "algorithm 'faulty' returned an invalid box: x1 has a NaN bound"},
+      {"outside", "algorithm 'faulty' returned an invalid box: x1 grew beyond its initial domain"},
+      {"extra", "algorithm 'faulty' returned an invalid box: the box has 4 components, the CSP 3"},
+      {"null", "algorithm 'faulty' made no contractor"},
+      {"throw", "algorithm 'faulty' failed: faulty: deliberate failure"},
+      {"throw-int", "algorithm 'faulty' threw an exception of unknown type"},
+  };
+  for (const auto& [fault, message] : cases) {
+    Result r = Icpbench("solve " + file + " -a faulty -p fault=" + fault + " -f json --plugin " PLUGIN_FAULTY_CONTRACTOR);
+    EXPECT_EQ(r.exit_code, 1) << fault << ": " << r.out;
+    EXPECT_NE(r.out.find("icpbench: " + message), std::string::npos) << fault << ": " << r.out;
+  }
+  Result good = Icpbench("solve " + file + " -a faulty -f json --plugin " PLUGIN_FAULTY_CONTRACTOR);
+  EXPECT_EQ(good.exit_code, 0) << good.out;
+}
+
+// A contraction that never checks its stop condition cannot hang `solve
+// --timeout`: 2 s past the limit the command ends, naming the algorithm.
+TEST(PluginTest, SolveEndsAContractionThatOutlivesItsTimeout) {
+  const auto start = std::chrono::steady_clock::now();
+  Result r = Icpbench("solve " + std::string(ICPBENCH_EXAMPLES) +
+                      "/paper002_sum.bch -a faulty -p fault=hang --timeout 0.5 --plugin " PLUGIN_FAULTY_CONTRACTOR);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("icpbench: algorithm 'faulty' did not stop within 2 s past --timeout 0.5"), std::string::npos)
+      << r.out;
+  EXPECT_LT(seconds, 30);
 }
 
 }  // namespace

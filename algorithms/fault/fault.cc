@@ -16,7 +16,7 @@ namespace icp {
 
 void Describe(FaultParams& p, ParamSet& set) {
   set.Add("mode", &p.mode, "the fault to inject",
-          {"none", "segfault", "abort", "hang", "spin", "throw", "allocate", "garbage", "slow"});
+          {"none", "segfault", "abort", "hang", "spin", "throw", "allocate", "garbage", "nan", "exit", "slow"});
   set.Add("after_calls", &p.after_calls, "good steps before the fault", Range::AtLeast(0));
   set.Add("slow_ms", &p.slow_ms, "mode slow: milliseconds added to every step", Range::AtLeast(0));
 }
@@ -42,6 +42,7 @@ class FaultEstimator : public Estimator {
     if (params_.mode == "segfault") std::raise(SIGSEGV);
     if (params_.mode == "abort") std::abort();
     if (params_.mode == "throw") throw std::runtime_error("injected fault");
+    if (params_.mode == "exit") std::exit(0);  // a library that ends the process, successfully
     if (params_.mode == "allocate") {
       // Blocks touched once cost little memory but count whole against
       // RLIMIT_DATA: under a limit the allocation fails long before the
@@ -62,11 +63,16 @@ class FaultEstimator : public Estimator {
       for (unsigned i = 1; i < threads; ++i) std::thread(Spin).detach();
       Spin();
     }
-    // garbage: a box reaching outside the step's domains.
+    // garbage: a box reaching outside the step's domains; nan: one NaN
+    // bound (a box that reads as empty).
     StepResult result = hc4_.Step(views, stop);
     Box box = result.estimate->Hull();
     for (std::size_t i = 0; i < box.size(); ++i)
       box[i] = Interval(box[i].lo() - 1, std::numeric_limits<double>::infinity());
+    if (params_.mode == "nan") {
+      box = result.estimate->Hull();
+      box[0] = Interval(box[0].lo(), std::numeric_limits<double>::quiet_NaN(), Interval::kOrdered);
+    }
     result.estimate = std::make_unique<BoxEstimate>(box);
     return result;
   }

@@ -6,6 +6,8 @@
 #include <map>
 #include <string>
 
+#include "algorithms/contraction_check.h"
+
 namespace icp {
 
 void DescribeCarry(std::string* carry, ParamSet& set) {
@@ -192,15 +194,8 @@ StepResult WindowEstimator::Step(const Views& views, const StopCondition& stop) 
   result.summary = contractor->Contract(box, context);
   result.solve_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  for (std::size_t i = 0; i < box.size() && !box.IsEmpty(); ++i) {
-    if (std::isnan(box[i].lo()) || std::isnan(box[i].hi()))
-      throw InvalidResult(view.csp.names()[i] + " has a NaN bound");
-    if (!box[i].IsSubsetOf(initial[i]))
-      throw InvalidResult(view.csp.names()[i] + " grew beyond its initial domain");
-  }
-  if (box.size() != initial.size())
-    throw InvalidResult("the box has " + std::to_string(box.size()) + " components, the CSP " +
-                        std::to_string(initial.size()));
+  if (std::string why = InvalidContractionReason(initial, box, view.csp.names()); !why.empty())
+    throw InvalidResult(why);
   total_work_ += result.summary.work;
   result.properties = WorkProperties(result.summary.work);
   ReportWindowStates(view, views.space, box, &result.properties);
