@@ -5,7 +5,9 @@
 // for `paper`, a port `serve` cannot bind), 130/143 `run`
 // stopped by SIGINT/SIGTERM, 1 an unexpected internal error.
 #include <CLI/CLI.hpp>
+#include <cerrno>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -13,6 +15,7 @@
 #include <new>
 #include <system_error>
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -56,9 +59,22 @@ CLI::Validator SecondsIn(double lo, double hi) {
       },
       "SECONDS in " + range);
 }
+
+// What the process must hold before it opens anything. Descriptors 0-2 that
+// were closed (2>&-, a daemon) would be taken by the first files opened (the
+// output's lock, a worker's step file), which a message meant for stderr
+// would then corrupt: they are /dev/null instead. A file-size limit
+// (ulimit -f) makes a write fail with EFBIG, an error reported like a full
+// disk (exit 3), instead of SIGXFSZ ending the process without a word.
+void SetUpProcess() {
+  for (int fd = 0; fd <= 2; ++fd)
+    if (fcntl(fd, F_GETFD) < 0 && errno == EBADF && open("/dev/null", O_RDWR) < 0) break;
+  std::signal(SIGXFSZ, SIG_IGN);
+}
 }  // namespace
 
 int main(int argc, char** argv) {
+  SetUpProcess();
   CLI::App app{"icpbench: interval constraint propagation benchmarks"};
   app.require_subcommand(1);
 

@@ -101,6 +101,11 @@ sqlite3* OpenExistingReadOnly(const std::string& path) {
 ResultsStore::ResultsStore(const std::string& path) : path_(path) {
   db_ = Open(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
   try {
+    // SQLite opens a file it may not write read-only without a word, and an
+    // empty transaction below writes nothing: asked now, before any run.
+    if (sqlite3_db_readonly(db_, "main") == 1)
+      throw EnvironmentError("results store '" + path_ +
+                             "': the file cannot be written (check the permissions of the store)");
     Exec(db_, path_, "PRAGMA foreign_keys=ON");
     // The schema first: a database that is not a store is refused before
     // anything in it changes (switching to WAL rewrites its header).

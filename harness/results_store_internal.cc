@@ -22,9 +22,12 @@ namespace icp::detail {
   switch (db != nullptr ? sqlite3_errcode(db) & 0xff : SQLITE_OK) {
     case SQLITE_FULL: throw EnvironmentError(message + " (free disk space and rerun)");
     case SQLITE_CANTOPEN:
-      throw EnvironmentError(message + " (check permissions; raise ulimit -n or reduce --jobs)");
+      throw EnvironmentError(message +
+                             " (check the permissions of the store's directory and files; or too many open "
+                             "files: raise ulimit -n, or reduce run's --jobs)");
     case SQLITE_READONLY: throw EnvironmentError(message + " (check the permissions of the store)");
-    case SQLITE_IOERR: throw EnvironmentError(message + " (check the disk and its free space)");
+    case SQLITE_IOERR:
+      throw EnvironmentError(message + " (check the disk, its free space and the file-size limit, ulimit -f)");
     case SQLITE_NOMEM: throw EnvironmentError(message + " (out of memory: reduce --jobs)");
     default: break;
   }

@@ -133,6 +133,7 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
   std::deque<PlannedRun>& queue = recorder.queue();
   WorkerPool pool(options.out_dir, options.jobs, options.kill_grace_s, {recorder.lock_fd()});
   const StopSignals signals;
+  auto record = [&](FinishedRun& f) { recorder.Record(f.record, f.run.experiment, f.step_file); };
   bool start_failed = false;  // pipe() or fork() failed: start nothing more
   while ((!queue.empty() && !start_failed) || pool.Running() > 0) {
     if (StopSignals::Caught() != 0) break;
@@ -145,8 +146,10 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
       }
       queue.pop_front();
     }
-    pool.Poll(100, [&](FinishedRun& f) { recorder.Record(f.record, f.run.experiment, f.step_file); });
+    pool.Poll(100, record);
   }
+  // A run that finished before the stop is kept, not counted as in flight.
+  if (StopSignals::Caught() != 0) pool.CollectExited(record);
   SweepSummary summary = recorder.summary();
   if (StopSignals::Caught() != 0) {
     summary.interrupted_by = StopSignals::Caught();

@@ -185,6 +185,35 @@ experiments:
       << "the lock file still names a holder";
 }
 
+// A worker that finished while its parent could not read it (stopped by
+// Ctrl-Z, or busy storing another run) has finished: a stop that comes
+// then keeps its run instead of counting it as in flight.
+TEST(RunnerProcessTest, ARunThatFinishedBeforeTheStopIsKept) {
+  const std::string dir = FreshDir("finished_before_stop");
+  int result_fd = -1;
+  const pid_t sweep = StartSweep(R"(
+seeds: [1, 2]
+algorithms: [{name: fault, params: {mode: slow, slow_ms: 100}}]
+problems: [{name: car-track, params: {steps: 5}}]
+)",
+                                 dir, 2, 2, &result_fd);
+  ASSERT_GT(sweep, 0);
+  std::vector<pid_t> workers;
+  ASSERT_TRUE(WaitFor([&] { return (workers = LiveChildrenOf(sweep)).size() == 2; }, 5));
+  kill(sweep, SIGSTOP);
+  // The workers are in process groups of their own: they finish meanwhile.
+  ASSERT_TRUE(WaitFor([&] { return !Alive(workers[0]) && !Alive(workers[1]); }, 10));
+  kill(sweep, SIGTERM);
+  kill(sweep, SIGCONT);
+  const std::string result = ReadAll(result_fd);
+  waitpid(sweep, nullptr, 0);
+  EXPECT_EQ(result, std::to_string(SIGTERM) + " 0 2");
+  ResultsStore store(StorePath(dir));
+  const std::vector<RunRecord> runs = store.LoadRuns(false);
+  ASSERT_EQ(runs.size(), 2u);
+  for (const RunRecord& r : runs) EXPECT_EQ(r.status, RunStatus::kOk) << r.reason;
+}
+
 SweepSummary QuickSweep(const std::string& dir, std::string* progress_text = nullptr,
                         const std::string& timeout = "10") {
   RunnerOptions options;

@@ -480,6 +480,12 @@ std::string ReadSpecText(const std::string& path) {
   // An ifstream opens a directory and then reads nothing ("empty spec").
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw SpecError(path + ": is a directory");
+  // A device (/dev/zero) would be read until memory runs out; a pipe ends
+  // (`run <(make-spec)`), so it is read.
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (std::filesystem::is_character_file(status) || std::filesystem::is_block_file(status) ||
+      std::filesystem::is_socket(status))
+    throw SpecError(path + ": is a device or a socket, not a spec file");
   std::ifstream in(path);
   if (!in) throw SpecError(path + ": cannot read the spec file");
   std::stringstream text;

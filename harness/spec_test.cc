@@ -177,6 +177,13 @@ TEST(SpecTest, MissingFileIsASpecError) {
   } catch (const SpecError& e) {
     EXPECT_EQ(std::string(e.what()), "/tmp: is a directory");
   }
+  // /dev/zero never ends: read, it would fill memory.
+  try {
+    LoadSpec("/dev/zero");
+    ADD_FAILURE() << "a device was read as a spec";
+  } catch (const SpecError& e) {
+    EXPECT_EQ(std::string(e.what()), "/dev/zero: is a device or a socket, not a spec file");
+  }
 }
 
 }  // namespace

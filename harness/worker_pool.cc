@@ -214,22 +214,49 @@ void WorkerPool::Poll(int timeout_ms, const std::function<void(FinishedRun&)>& o
       ++i;
       continue;
     }
-    close(w.fd);
     int status = 0;
     while (waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {
     }
-    FinishedRun finished = Finish(w, status);
-    const std::string step_file = w.step_file;
     fds.erase(fds.begin() + static_cast<std::ptrdiff_t>(i));
-    workers_.erase(workers_.begin() + static_cast<std::ptrdiff_t>(i));
-    try {
-      on_finished(finished);
-    } catch (...) {
-      unlink(step_file.c_str());
-      throw;
-    }
-    unlink(step_file.c_str());
+    Hand(i, status, on_finished);
   }
+}
+
+void WorkerPool::CollectExited(const std::function<void(FinishedRun&)>& on_finished) {
+  for (std::size_t i = 0; i < workers_.size();) {
+    Worker& w = workers_[i];
+    int status = 0;
+    if (waitpid(w.pid, &status, WNOHANG) != w.pid) {
+      ++i;
+      continue;
+    }
+    // It has exited: its end of the pipe is closed, so this read ends.
+    char buf[65536];
+    for (;;) {
+      const ssize_t n = read(w.fd, buf, sizeof buf);
+      if (n > 0) {
+        w.output.append(buf, static_cast<std::size_t>(n));
+      } else if (n == 0 || errno != EINTR) {
+        break;
+      }
+    }
+    Hand(i, status, on_finished);
+  }
+}
+
+void WorkerPool::Hand(std::size_t i, int wait_status, const std::function<void(FinishedRun&)>& on_finished) {
+  Worker& w = workers_[i];
+  close(w.fd);
+  FinishedRun finished = Finish(w, wait_status);
+  const std::string step_file = w.step_file;
+  workers_.erase(workers_.begin() + static_cast<std::ptrdiff_t>(i));
+  try {
+    on_finished(finished);
+  } catch (...) {
+    unlink(step_file.c_str());
+    throw;
+  }
+  unlink(step_file.c_str());
 }
 
 void WorkerPool::Stop() {

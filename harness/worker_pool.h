@@ -54,6 +54,12 @@ class WorkerPool {
   // removed after the call). Returns at once when no worker runs.
   void Poll(int timeout_ms, const std::function<void(FinishedRun&)>& on_finished);
 
+  // Hands each worker that has already exited to on_finished, with what its
+  // pipe still holds, without waiting for the others: before a Stop, so that
+  // a run that finished while the parent was busy (storing another, or
+  // stopped by Ctrl-Z) is kept, not killed as if it were in flight.
+  void CollectExited(const std::function<void(FinishedRun&)>& on_finished);
+
   // Kills and reaps every worker: their runs are lost.
   void Stop();
 
@@ -71,6 +77,9 @@ class WorkerPool {
     std::string step_file;
   };
   FinishedRun Finish(Worker& w, int wait_status);
+  // Finishes workers_[i], reaped with wait_status and its pipe read to the
+  // end: removes it, calls on_finished, then removes its step file.
+  void Hand(std::size_t i, int wait_status, const std::function<void(FinishedRun&)>& on_finished);
 
   std::string step_dir_;
   int jobs_;

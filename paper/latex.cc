@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -53,11 +54,17 @@ void RequireLatex() {
 
 void RunLatexmk(const std::string& dir, const std::string& name) {
   const std::string log = dir + "/latexmk.log";
+  // Fonts LaTeX makes on the fly (mktexpk) are cached under HOME: without a
+  // writable one (env -i, cron), under the paper's directory.
+  const char* home = std::getenv("HOME");
+  const bool home_writable = home != nullptr && *home != '\0' && access(home, W_OK) == 0;
+  const std::string font_cache = std::filesystem::absolute(dir + "/.texmf-var").string();
   const pid_t pid = fork();
   if (pid < 0) ThrowErrno("cannot start latexmk", errno);
   if (pid == 0) {
     // The child: in dir, output to the log, no terminal input.
     if (chdir(dir.c_str()) != 0) _exit(127);
+    if (!home_writable) setenv("TEXMFVAR", font_cache.c_str(), 1);
     const int fd = open("latexmk.log", O_WRONLY | O_CREAT | O_TRUNC, 0644);
     const int null = open("/dev/null", O_RDONLY);
     if (fd < 0 || null < 0) _exit(127);
@@ -87,6 +94,9 @@ void RunLatexmk(const std::string& dir, const std::string& name) {
     throw EnvironmentError("LaTeX misses " + file + " (see " + dir + "/" + name +
                            ".log): " + kInstall);
   }
+  if (tex_log.find("not found") != std::string::npos && tex_log.find("Font ") != std::string::npos)
+    throw EnvironmentError("LaTeX could not make a font (see " + dir + "/" + name +
+                           ".log): give it a writable HOME, or install cm-super");
   std::string first_error = "see the log";
   std::istringstream lines(tex_log);
   for (std::string line; std::getline(lines, line);) {

@@ -255,6 +255,23 @@ TEST(PluginTest, SolveRefusesAnInvalidResultNamingTheAlgorithm) {
   EXPECT_EQ(good.exit_code, 0) << good.out;
 }
 
+// With stdout and stderr closed (a daemon, 2>&-), the files a sweep opens
+// must not become descriptors 1 and 2: an algorithm's debug print would
+// then land in its worker's step file and fail the run.
+TEST(PluginTest, ARunWithClosedOutputsKeepsAChattyAlgorithmsSteps) {
+  const std::string spec = WriteFile("chatty_spec.yaml",
+                                     "algorithms: [{name: faulty, params: {fault: chatty}}]\n"
+                                     "problems: [{name: car-track, params: {steps: 5}}]\n");
+  const std::string out = ::testing::TempDir() + "chatty_run";
+  std::filesystem::remove_all(out);
+  Result run = icp::testing::RunCommand(
+      "sh", "-c '" ICPBENCH_BINARY " --plugin " PLUGIN_FAULTY_CONTRACTOR " run " + spec + " --out " + out +
+                " --jobs 1 >&- 2>&-; echo exit=$?'");
+  EXPECT_NE(run.out.find("exit=0"), std::string::npos) << run.out;
+  Result runs = icp::testing::RunCommand("sqlite3", out + "/results.sqlite \"SELECT status, steps FROM runs\"");
+  EXPECT_EQ(runs.out, "ok|5\n");
+}
+
 // A contraction that never checks its stop condition cannot hang `solve
 // --timeout`: 2 s past the limit the command ends, naming the algorithm.
 TEST(PluginTest, SolveEndsAContractionThatOutlivesItsTimeout) {

@@ -3,6 +3,7 @@
 // broken result). With ICPBENCH_TEST_PLUGIN_PARAM set, it also declares a
 // parameter of that name: `fault` again, `carry` (which the window adapter
 // adds) or a name that cannot be written; loading must refuse each.
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <memory>
@@ -22,7 +23,7 @@ struct FaultyParams {
 
 void Describe(FaultyParams& p, icp::ParamSet& set) {
   set.Add("fault", &p.fault, "what the contraction does wrong",
-          {"none", "nan", "outside", "extra", "throw", "throw-int", "hang", "null"});
+          {"none", "chatty", "nan", "outside", "extra", "throw", "throw-int", "hang", "null"});
   static std::string extra;
   if (const char* name = std::getenv("ICPBENCH_TEST_PLUGIN_PARAM")) set.Add(name, &extra, "an extra parameter");
 }
@@ -37,6 +38,11 @@ class FaultyContractor : public icp::Contractor {
     if (fault_ == "throw-int") throw 42;
     if (fault_ == "hang")
       for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));  // never checks its stop condition
+    if (fault_ == "chatty") {  // a debug print, on both streams
+      std::fputs("faulty: contracting\n", stderr);
+      std::fputs("faulty: contracting\n", stdout);
+      std::fflush(nullptr);
+    }
     icp::ContractSummary summary = hc4_->Contract(box, context);
     if (fault_ == "nan")
       box[0] = icp::Interval(box[0].lo(), std::numeric_limits<double>::quiet_NaN(), icp::Interval::kOrdered);
