@@ -477,5 +477,23 @@ TEST(RunnerProcessTest, CliDescriptorExhaustionIsTheEnvironmentAndLeavesNoWorker
   }
 }
 
+// A file-size limit (ulimit -f, set by some batch systems) stops a sweep as
+// a full disk does: exit 3 with advice, the runs stored before kept; not
+// SIGXFSZ's silent exit 153.
+TEST(RunnerProcessTest, CliAFileSizeLimitIsTheEnvironment) {
+  const std::string dir = FreshDir("cli_fsize");
+  const std::string spec = testing::WriteFile(
+      "process_fsize.yaml", "repetitions: 8\nalgorithms: [hc4]\nproblems: [{name: car-track, params: {steps: 400}}]\n");
+  const testing::Result r = testing::RunCommand(
+      "ulimit -f 1000 && " + std::string(ICPBENCH_BINARY), "run " + spec + " --out " + dir + " --jobs 1");
+  EXPECT_EQ(r.exit_code, 3) << r.out;
+  EXPECT_NE(r.out.find("ulimit -f"), std::string::npos) << r.out;
+  ResultsStore store(StorePath(dir));
+  const std::vector<RunRecord> runs = store.LoadRuns(false);
+  EXPECT_GE(runs.size(), 1u);
+  EXPECT_LT(runs.size(), 8u);
+  for (const RunRecord& run : runs) EXPECT_EQ(run.status, RunStatus::kOk) << run.reason;
+}
+
 }  // namespace
 }  // namespace icp
