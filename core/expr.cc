@@ -67,6 +67,16 @@ int ExprGraph::Constant(const Interval& value) {
   ExprNode node;
   node.op = Op::kConst;
   node.value = value;
+  // A point is one real: its occurrences may share a node. An interval is
+  // an enclosure of some real (a decimal such as 0.1, a measurement such as
+  // a step's [ds]): two equal enclosures may hold different reals (0.1 and
+  // 0.100000000000000002, two steps' equal tick intervals), so each call
+  // makes a node of its own, which the contractors narrow apart. A caller
+  // that means one quantity reuses its node.
+  if (!(value.lo() == value.hi())) {
+    nodes_.push_back(node);
+    return size() - 1;
+  }
   return Intern(node);
 }
 

@@ -1,6 +1,7 @@
 // The expression DAG: constraints are data. Nodes are hash-consed, so equal
 // sub-expressions are shared, and a node's children always have smaller ids
-// (the node vector is a topological order).
+// (the node vector is a topological order). Interval (non-point) constants
+// are not: each stands for a real of its own (ExprGraph::Constant).
 #ifndef ICPBENCH_CORE_EXPR_H_
 #define ICPBENCH_CORE_EXPR_H_
 

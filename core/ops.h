@@ -90,17 +90,30 @@ inline bool MayJump(Op op, const Interval& a, const Interval& b, const Interval&
   }
 }
 
+// Whether a may reach outside the domain of op (sqrt below 0, log at or
+// below 0): there f holds values for some points of the box and none for
+// others, and the mean-value form that BC3's Newton step rests on (f(t) -
+// f(m) = f'(xi) (t - m)) relates no two of them.
+inline bool MayLeaveDomain(Op op, const Interval& a) {
+  switch (op) {
+    case Op::kSqrt: return a.lo() < 0;
+    case Op::kLog: return a.lo() <= 0;
+    default: return false;
+  }
+}
+
 // Forward-mode interval differentiation: the derivative of z = op(a, b)
 // given the operands' derivatives da, db. At the kinks of abs, min and max
 // the result is the hull of the one-sided derivatives, which still bounds
 // every slope (what the interval Newton step of BC3 needs). Where z may
-// jump (MayJump) and depends on the variable, any slope is possible: the
-// result is the whole line, so that a mean-value step removes nothing.
+// jump (MayJump) or leave its domain (MayLeaveDomain) and depends on the
+// variable, any slope is possible: the result is the whole line, so that a
+// mean-value step removes nothing.
 // (A unary op gets db = da.)
 inline Interval RawDerivOp(Op op, const Interval& a, const Interval& b, const Interval& z,
                         const Interval& da, const Interval& db, int n) {
   static const Interval kZero(0.0);
-  if (MayJump(op, a, b, z, n) && !(da == kZero && db == kZero)) return Interval();
+  if ((MayJump(op, a, b, z, n) || MayLeaveDomain(op, a)) && !(da == kZero && db == kZero)) return Interval();
   switch (op) {
     case Op::kAdd: return da + db;
     case Op::kSub: return da - db;
