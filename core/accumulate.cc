@@ -30,8 +30,7 @@ struct Raster {
   Box box;  // the block being contracted; the other components are the search box's
 
   void Count(int r0, int r1, int c0, int c1) {
-    for (int r = r0; r < r1; ++r)
-      for (int c = c0; c < c1; ++c) ++counts.at<std::int32_t>(r, c);
+    counts(cv::Range(r0, r1), cv::Range(c0, c1)) += cv::Scalar(1);
   }
 
   // Contracts the block [r0, r1) x [c0, c1) into box; false when the
@@ -106,8 +105,17 @@ cv::Mat Accumulate(const Grid& grid, const SharedContractors& measurements,
     threads = std::min(threads, (budget->available - bytes) / std::max<std::size_t>(bytes, 1));
   WorkCounters total;
   std::atomic<bool> any_stopped = false;
+  // Measurements not begun when the stop came: they count in every cell,
+  // added once at the end (cell by cell, a fine grid took longer to stop
+  // than to finish).
+  std::atomic<int> unstarted = 0;
   // Adds one measurement's cells to `into`; returns its work.
   auto rasterise = [&](Contractor& measurement, cv::Mat& into) {
+    if (stop.ShouldStop()) {
+      any_stopped = true;
+      ++unstarted;
+      return WorkCounters();
+    }
     Raster raster(grid, measurement, stop, into);
     raster.Mark(0, grid.rows(), 0, grid.cols());
     if (raster.stopped) any_stopped = true;
@@ -136,6 +144,7 @@ cv::Mat Accumulate(const Grid& grid, const SharedContractors& measurements,
       count();
     for (const cv::Mat& p : partial) counts += p;
   }
+  if (unstarted > 0) counts += cv::Scalar(unstarted.load());
   if (work) *work += total;
   if (stopped) *stopped = any_stopped;
   return counts;

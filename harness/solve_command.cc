@@ -43,7 +43,7 @@ class Watchdog {
     const auto after = std::chrono::duration<double>(options.timeout_s + options.kill_grace_s);
     const std::string message = "icpbench: algorithm '" + algorithm + "' did not stop within " +
                                 FormatDouble(options.kill_grace_s) + " s past --timeout " +
-                                FormatDouble(options.timeout_s) + " (it does not check its stop condition)\n";
+                                FormatDouble(options.timeout_s) + "\n";
     thread_ = std::thread([this, after, message] {
       std::unique_lock<std::mutex> lock(mutex_);
       if (done_changed_.wait_for(lock, after, [this] { return done_; })) return;

@@ -273,14 +273,14 @@ TEST(PluginTest, ARunWithClosedOutputsKeepsAChattyAlgorithmsSteps) {
 }
 
 // A contraction that never checks its stop condition cannot hang `solve
-// --timeout`: 2 s past the limit the command ends, naming the algorithm.
+// --timeout`: 5 s past the limit the command ends, naming the algorithm.
 TEST(PluginTest, SolveEndsAContractionThatOutlivesItsTimeout) {
   const auto start = std::chrono::steady_clock::now();
   Result r = Icpbench("solve " + std::string(ICPBENCH_EXAMPLES) +
                       "/paper002_sum.bch -a faulty -p fault=hang --timeout 0.5 --plugin " PLUGIN_FAULTY_CONTRACTOR);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_EQ(r.exit_code, 1) << r.out;
-  EXPECT_NE(r.out.find("icpbench: algorithm 'faulty' did not stop within 2 s past --timeout 0.5"), std::string::npos)
+  EXPECT_NE(r.out.find("icpbench: algorithm 'faulty' did not stop within 5 s past --timeout 0.5"), std::string::npos)
       << r.out;
   EXPECT_LT(seconds, 30);
 }
