@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "algorithms/contraction_check.h"
 #include "core/random.h"
 
 namespace icp {
@@ -221,9 +222,7 @@ std::string InvalidEstimateReason(const Views& views, const Estimate& estimate) 
   if (static_cast<int>(hull.size()) != views.space.size())
     return "the estimate has " + std::to_string(hull.size()) + " components, the state " +
            std::to_string(views.space.size());
-  // Before emptiness: a NaN bound reads as an empty component (!(lo <= hi)).
-  for (int c = 0; c < views.space.size(); ++c)
-    if (std::isnan(hull[c].lo()) || std::isnan(hull[c].hi())) return views.space.names[c] + " has a NaN bound";
+  if (const int nan = FirstNaNComponent(hull); nan >= 0) return views.space.names[nan] + " has a NaN bound";
   if (hull.IsEmpty()) return "";
   const Box domains = Domains(views);
   for (int c = 0; c < views.space.size(); ++c) {

@@ -126,15 +126,16 @@ SolveResult Solve(const SolveOptions& options) {
                                                });
     if (!contractor) throw AlgorithmFault("algorithm '" + info.name + "' made no contractor");
     result.contractor = contractor;
+    const Box domains = result.csp.domains();
     for (int r = 0; r < options.repeat && (r == 0 || !cancelled()); ++r) {
-      Box box = result.csp.domains();
+      Box box = domains;
       const StopCondition stop = limit();
       ContractContext context(stop);
       auto start = std::chrono::steady_clock::now();
       const Watchdog watchdog(options, info.name);
       ContractSummary summary = Guarded(info.name, [&] { return contractor->Contract(box, context); });
       times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-      if (std::string why = InvalidContractionReason(result.csp.domains(), box, result.csp.names()); !why.empty())
+      if (std::string why = InvalidContractionReason(domains, box, result.csp.names()); !why.empty())
         throw AlgorithmFault("algorithm '" + info.name + "' returned an invalid box: " + why);
       result.box = box;
       result.summary = summary;

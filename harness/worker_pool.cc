@@ -197,15 +197,7 @@ void WorkerPool::Poll(int timeout_ms, const std::function<void(FinishedRun&)>& o
   for (std::size_t i = 0; i < workers_.size();) {
     Worker& w = workers_[i];
     bool eof = false;
-    if (fds[i].revents & (POLLIN | POLLHUP | POLLERR)) {
-      char buf[65536];
-      ssize_t n = read(w.fd, buf, sizeof buf);
-      if (n > 0) {
-        w.output.append(buf, static_cast<std::size_t>(n));
-      } else if (n == 0 || errno != EINTR) {
-        eof = true;
-      }
-    }
+    if (fds[i].revents & (POLLIN | POLLHUP | POLLERR)) eof = ReadSome(w);
     if (!eof && !w.killed && w.kill_after_s > 0 && Seconds(Clock::now() - w.started) > w.kill_after_s) {
       kill(w.pid, SIGKILL);
       w.killed = true;
@@ -222,6 +214,16 @@ void WorkerPool::Poll(int timeout_ms, const std::function<void(FinishedRun&)>& o
   }
 }
 
+bool WorkerPool::ReadSome(Worker& w) {
+  char buf[65536];
+  const ssize_t n = read(w.fd, buf, sizeof buf);
+  if (n > 0) {
+    w.output.append(buf, static_cast<std::size_t>(n));
+    return false;
+  }
+  return n == 0 || errno != EINTR;
+}
+
 void WorkerPool::CollectExited(const std::function<void(FinishedRun&)>& on_finished) {
   for (std::size_t i = 0; i < workers_.size();) {
     Worker& w = workers_[i];
@@ -231,14 +233,7 @@ void WorkerPool::CollectExited(const std::function<void(FinishedRun&)>& on_finis
       continue;
     }
     // It has exited: its end of the pipe is closed, so this read ends.
-    char buf[65536];
-    for (;;) {
-      const ssize_t n = read(w.fd, buf, sizeof buf);
-      if (n > 0) {
-        w.output.append(buf, static_cast<std::size_t>(n));
-      } else if (n == 0 || errno != EINTR) {
-        break;
-      }
+    while (!ReadSome(w)) {
     }
     Hand(i, status, on_finished);
   }

@@ -77,6 +77,8 @@ class WorkerPool {
     std::string step_file;
   };
   FinishedRun Finish(Worker& w, int wait_status);
+  // One read of w's pipe into its output; true at its end (or an error).
+  static bool ReadSome(Worker& w);
   // Finishes workers_[i], reaped with wait_status and its pipe read to the
   // end: removes it, calls on_finished, then removes its step file.
   void Hand(std::size_t i, int wait_status, const std::function<void(FinishedRun&)>& on_finished);
