@@ -76,6 +76,11 @@ class Estimate {
   // mass (core/credible_box.h), whose coverage of the truth the harness
   // measures; nullopt for a set, which claims no level.
   virtual std::optional<Box> CredibleRegion(double /*level*/) const { return std::nullopt; }
+  // Why the estimate's parts cannot describe states of its dimension (named
+  // by names, one per component): a paving box or a particle of another
+  // size, a NaN bound, coordinate or weight, which the queries above would
+  // skip as empty; "" when they can. The harness refuses such a result.
+  virtual std::string Malformed(const std::vector<std::string>& /*names*/) const { return ""; }
 };
 
 class BoxEstimate : public Estimate {
@@ -105,6 +110,7 @@ class PavingEstimate : public Estimate {
   // The summed x-y areas of all boxes (assumed not to overlap).
   double Area(int x, int y) const override;
   Properties Extras() const override;
+  std::string Malformed(const std::vector<std::string>& names) const override;
   const std::vector<Box>& inner() const { return inner_; }
   const std::vector<Box>& boundary() const { return boundary_; }
 
@@ -162,6 +168,7 @@ class ParticleEstimate : public Estimate {
   Properties Extras() const override;
   // CredibleBox of the particles; an empty box when no weight is positive.
   std::optional<Box> CredibleRegion(double level) const override;
+  std::string Malformed(const std::vector<std::string>& names) const override;
   const cv::Mat& particles() const { return particles_; }
   const std::vector<double>& weights() const { return weights_; }
   // The box hull of the particles with positive weight, whatever the region.

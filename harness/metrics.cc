@@ -218,6 +218,7 @@ std::vector<StepRecord> PostLocalizedStates(const std::vector<StepRecord>& steps
 }
 
 std::string InvalidEstimateReason(const Views& views, const Estimate& estimate) {
+  if (std::string why = estimate.Malformed(views.space.names); !why.empty()) return why;
   const Box hull = estimate.Hull();
   if (static_cast<int>(hull.size()) != views.space.size())
     return "the estimate has " + std::to_string(hull.size()) + " components, the state " +

@@ -35,7 +35,7 @@ inline constexpr int kCoverageLevels[] = {50, 90, 95};
 Properties CoverageProperties(const Step& step, const Estimate& estimate);
 
 // Why an estimate cannot be the answer to the step, or "" when it can: a
-// hull of the wrong dimension, a NaN bound, or a component outside the
+// malformed part (Estimate::Malformed), a hull of the wrong dimension, a NaN bound, or a component outside the
 // step's domains (the CSP view's newest state, the measurement set's prior;
 // a periodic component is compared modulo its period).
 std::string InvalidEstimateReason(const Views& views, const Estimate& estimate);

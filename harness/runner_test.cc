@@ -150,13 +150,13 @@ TEST(RunnerTest, ARunThatDiesKeepsTheStepsItFinished) {
   Sweep(R"(
 timeout_s: 1
 algorithms:
-  - {name: fault, params: {mode: [segfault, hang, throw, exit, garbage, nan], after_calls: 3}}
+  - {name: fault, params: {mode: [segfault, hang, throw, exit, garbage, nan, paving-nan, particles-nan], after_calls: 3}}
 problems: [{name: car-track, params: {steps: 10}}]
 )", dir);
   ResultsStore store(StorePath(dir));
   std::map<std::string, RunRecord> by_mode;
   for (RunRecord& r : store.LoadRuns(true)) by_mode[r.spec.algorithm_params.at("mode")] = r;
-  ASSERT_EQ(by_mode.size(), 6u);
+  ASSERT_EQ(by_mode.size(), 8u);
   EXPECT_EQ(by_mode["segfault"].status, RunStatus::kFailed);
   EXPECT_EQ(by_mode["hang"].status, RunStatus::kTimeout);
   EXPECT_EQ(by_mode["throw"].reason.rfind("exception: injected fault;", 0), 0u) << by_mode["throw"].reason;
@@ -166,7 +166,14 @@ problems: [{name: car-track, params: {steps: 10}}]
   // A NaN bound reads as an empty interval: it must not pass as an empty box.
   EXPECT_EQ(by_mode["nan"].reason.rfind("invalid result at step 3: x has a NaN bound;", 0), 0u)
       << by_mode["nan"].reason;
-  for (const char* mode : {"throw", "exit", "garbage", "nan"}) EXPECT_EQ(by_mode[mode].status, RunStatus::kFailed) << mode;
+  // So must a NaN in one part of a paving or a cloud, which their hull skips.
+  EXPECT_EQ(by_mode["paving-nan"].reason.rfind(
+                "invalid result at step 3: the paving's boundary box 0: x has a NaN bound;", 0),
+            0u)
+      << by_mode["paving-nan"].reason;
+  EXPECT_EQ(by_mode["particles-nan"].reason.rfind("invalid result at step 3: particle 1: x is NaN;", 0), 0u)
+      << by_mode["particles-nan"].reason;
+  for (const char* mode : {"throw", "exit", "garbage", "nan", "paving-nan", "particles-nan"}) EXPECT_EQ(by_mode[mode].status, RunStatus::kFailed) << mode;
   for (const auto& [mode, r] : by_mode) {
     EXPECT_EQ(r.metrics.steps, 3) << mode << ": " << r.reason;
     EXPECT_EQ(r.steps.size(), 3u) << mode;

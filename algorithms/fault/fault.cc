@@ -16,7 +16,8 @@ namespace icp {
 
 void Describe(FaultParams& p, ParamSet& set) {
   set.Add("mode", &p.mode, "the fault to inject",
-          {"none", "segfault", "abort", "hang", "spin", "throw", "allocate", "garbage", "nan", "exit", "slow"});
+          {"none", "segfault", "abort", "hang", "spin", "throw", "allocate", "garbage", "nan", "paving-nan",
+           "particles-nan", "exit", "slow"});
   set.Add("after_calls", &p.after_calls, "good steps before the fault", Range::AtLeast(0));
   set.Add("slow_ms", &p.slow_ms, "mode slow: milliseconds added to every step", Range::AtLeast(0));
 }
@@ -64,8 +65,24 @@ class FaultEstimator : public Estimator {
       Spin();
     }
     // garbage: a box reaching outside the step's domains; nan: one NaN
-    // bound (a box that reads as empty).
+    // bound (a box that reads as empty); paving-nan, particles-nan: a
+    // paving or a cloud whose one part has one (the hull would drop it).
     StepResult result = hc4_.Step(views, stop);
+    if (params_.mode == "paving-nan" || params_.mode == "particles-nan") {
+      const Box hull = result.estimate->Hull();
+      Box broken = hull;
+      broken[0] = Interval(hull[0].lo(), std::numeric_limits<double>::quiet_NaN(), Interval::kOrdered);
+      if (params_.mode == "paving-nan") {
+        result.estimate = std::make_unique<PavingEstimate>(hull.size(), std::vector<Box>{hull},
+                                                           std::vector<Box>{broken});
+      } else {
+        cv::Mat particles(2, static_cast<int>(hull.size()), CV_64F);
+        for (int c = 0; c < particles.cols; ++c) particles.at<double>(0, c) = particles.at<double>(1, c) = hull[c].Mid();
+        particles.at<double>(1, 0) = std::numeric_limits<double>::quiet_NaN();
+        result.estimate = std::make_unique<ParticleEstimate>(particles, std::vector<double>{1, 1});
+      }
+      return result;
+    }
     Box box = result.estimate->Hull();
     for (std::size_t i = 0; i < box.size(); ++i)
       box[i] = Interval(box[i].lo() - 1, std::numeric_limits<double>::infinity());
