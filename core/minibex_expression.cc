@@ -1,7 +1,9 @@
 // Minibex expressions: arithmetic, powers, functions, names and interval
 // literals, with sub-expressions without variables folded to enclosures
 // (the grammar is at the top of minibex_parser.cc).
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 #include "core/minibex_parser_internal.h"
@@ -87,8 +89,7 @@ Value Parser::ParsePrimary() {
   const Token& t = Peek();
   switch (t.kind) {
     case TokKind::kNumber: {
-      Interval x;
-      if (!ParseDecimal(t.text, &x)) Fail(t, "bad number ", t);
+      const Interval x = ParseNumber(t);
       Next();
       return Const(x);
     }
@@ -98,7 +99,10 @@ Value Parser::ParsePrimary() {
         Value v = ParseExpr();
         if (!IsPunct(")"))
           Fail(Peek(), "expected ')' to close the '(' at line ", t.line, ", column ",
-               t.column, ", found ", Peek());
+               t.column, ", found ", Peek(),
+               IsPunct(";") || IsPunct(",")
+                   ? " (an array such as (a; b) is only a constant's value or a function's argument)"
+                   : "");
         Next();
         return v;
       }
@@ -116,8 +120,13 @@ Value Parser::ParseName() {
   const Token& t = Peek();
   const std::string& name = t.text;
   // Declared names first: they are the common case and are never reserved.
-  auto it = symbols_.find(name);
-  if (it != symbols_.end()) return ParseSymbol(it->second);
+  if (Symbol* s = Lookup(name)) return ParseSymbol(*s);
+  if (auto f = functions_.find(name); f != functions_.end()) return ParseCall(name, f->second);
+  if (name == function_being_defined_)
+    Fail(t, "function '", name, "' calls itself: recursion is not supported");
+  if (scope_ > 0 && symbols_.count(name))
+    Fail(t, "'", name, "' is not visible in a function body (only parameters, temporaries and "
+         "constants are)");
   if (name == "pi") {
     Next();
     return Const(Pi());
@@ -154,35 +163,31 @@ Value Parser::ParseName() {
   Fail(t, What{"unknown identifier", name});
 }
 
-// A constant, loop index, variable or indexed vector component.
-Value Parser::ParseSymbol(const Symbol& s) {
+// A constant, loop index, variable, bound name, or a component of a vector
+// or matrix one.
+Value Parser::ParseSymbol(Symbol& s) {
   const Token& name_token = Next();
-  const std::string& name = name_token.text;
-  switch (s.kind) {
-    case Symbol::kConstant:
-    case Symbol::kLoopIndex:
-      return Const(s.value);
-    case Symbol::kScalarVariable:
-      if (IsPunct("(") || IsPunct("["))
-        Fail(Peek(), "'", name, "' is a scalar variable and cannot be indexed");
-      return Node(csp_.Var(s.first));
-    case Symbol::kVectorVariable:
-      break;
+  if (s.shape.is_scalar()) {
+    if (IsPunct("(") || IsPunct("["))
+      Fail(Peek(), "'", name_token.text, "' is a scalar and cannot be indexed");
+    return Component(s, 0);
   }
-  // x(i) counts from 1 as in IBEX, x[i] from 0.
-  const bool one_based = IsPunct("(");
-  if (!one_based && !IsPunct("["))
-    Fail(name_token, "vector '", name, "' must be indexed, as in ", name, "(1) or ", name,
-         "[0]");
-  Next();
-  const Token& start = Peek();
-  const long long i = ParseInteger({"the index of", name});
-  const long long base = one_based ? 1 : 0;
-  if (i < base || i >= s.size + base)
-    Fail(start, "index ", i, " out of range for '", name, "' (", name,
-         one_based ? "(i) takes 1.." : "[i] takes 0..", one_based ? s.size : s.size - 1, ")");
-  Expect(one_based ? ")" : "]", {"after the index of", name});
-  return Node(csp_.Var(s.first + static_cast<int>(i - base)));
+  return Component(s, ParseComponentIndex(s, name_token));
+}
+
+// A decimal, enclosed (ParseDecimal), or IBEX's '#' and 16 hexadecimal
+// digits: the bits of a double, which is that double exactly.
+Interval Parser::ParseNumber(const Token& t) {
+  if (t.text[0] != '#') {
+    Interval x;
+    if (!ParseDecimal(t.text, &x)) Fail(t, "bad number ", t);
+    return x;
+  }
+  if (t.text.size() > 17) Fail(t, "bad number ", t, ": more than 16 hexadecimal digits");
+  const std::uint64_t bits = std::stoull(t.text.substr(1), nullptr, 16);
+  const double x = std::bit_cast<double>(bits);
+  if (!std::isfinite(x)) Fail(t, "bad number ", t, ": not the bits of a finite double");
+  return Interval(x);
 }
 
 // [a, b] with a lower bound from a's enclosure and an upper one from b's,

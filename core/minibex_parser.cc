@@ -4,13 +4,17 @@
 // minibex_tokenizer.cc, minibex_words.cc and minibex_expression.cc.
 // Grammar (IBEX's parser.yc, reduced):
 //
-//   system     := [Constants {cst_decl ';'}]
-//                 Variables var_decl {(';'|',') var_decl} ';'
+//   system     := [Constants {cst_decl ';'}] {function}
+//                 Variables var_decl {(';'|',') var_decl} ';' {function}
 //                 [Minimize expr [';']]
-//                 [Constraints block {';' block} [';']] end [';']
-//   cst_decl   := NAME ('=' | 'in') expr                  (constant expr)
-//   var_decl   := NAME ['[' expr ']'] ['in' expr]         (constant exprs)
+//                 [Constraints block {';' block} [';'] end | end] [';']
+//   cst_decl   := NAME [shape] ('=' | 'in') (expr | array)    (constants)
+//   var_decl   := NAME [shape] ['in' expr]                    (constant expr)
+//   shape      := '[' expr ']' ['[' expr ']']                 (constant exprs)
+//   function   := function NAME '(' NAME [shape] {',' NAME [shape]} ')'
+//                 {NAME '=' expr ';'} return expr [';'] end
 //   block      := for NAME '=' expr ':' expr ';' block {';' block} [';'] end
+//               | NAME '=' expr                     (a temporary, then a ctr)
 //               | ctr
 //   ctr        := expr ('=' | 'in' | '<=' | '>=' | '<' | '>') expr | '(' ctr ')'
 //   expr       := term {('+' | '-') term}
@@ -18,12 +22,17 @@
 //   unary      := ('-' | '+') unary | power
 //   power      := primary {'^' (primary | ('-' | '+') unary)}  (left-assoc.)
 //   primary    := NUMBER | '(' expr ')' | '[' bound ',' bound ']' | pi
-//               | FUNC '(' expr {',' expr} ')' | NAME | NAME '(' expr ')'
-//               | NAME '[' expr ']'
+//               | FUNC '(' expr {',' expr} ')' | NAME '(' arg {',' arg} ')'
+//               | NAME | NAME '(' expr [',' expr] ')' | NAME '[' expr ']' ['[' expr ']']
+//   arg        := expr | NAME | array                 (a NAME or array: a vector)
+//   array      := '(' item {';' item} ')' | '(' item {',' item} ')'
+//   item       := expr | array
 //   bound      := ['+' | '-'] oo | expr
 //
 // Sub-expressions without variables are folded in interval arithmetic, so
-// constants stay enclosures. Loops re-parse their body once per index value.
+// constants stay enclosures. Loops re-parse their body once per index value;
+// a function call re-parses the function's body with its parameters bound to
+// the arguments (minibex_functions.cc).
 #include "core/minibex_parser.h"
 
 #include <algorithm>
@@ -74,12 +83,14 @@ void Parser::ParseSystem() {
     // IBEX allows the section empty (files converted from COCONUT have it).
     if (!AtEnd() && !IsSectionWord(Peek().text)) ParseConstants();
   }
+  ParseFunctions();
   if (!IsWord("variables")) {
     RejectUnsupportedSection();
     Fail(Peek(), "expected 'Variables', found ", Peek());
   }
   Next();
   ParseVariables();
+  ParseFunctions();
   RejectUnsupportedSection();
   if (IsWord("minimize")) {
     // The goal of an optimisation file is read (so its errors are reported)
@@ -90,58 +101,58 @@ void Parser::ParseSystem() {
     Accept(";");
     RejectUnsupportedSection();
   }
+  ParseEnding();
+}
+
+// IBEX's functions come after the constants, the variables, or both.
+void Parser::ParseFunctions() {
+  while (IsWord("function")) ParseFunctionDefinition();
+}
+
+// Constraints ... end, or a bare 'end', or (as IBEX writes a system without
+// constraints) nothing at all.
+void Parser::ParseEnding() {
   if (IsWord("constraints")) {
     Next();
     ParseBlockList("Constraints section");  // reads the final 'end' too
-  } else {
-    if (AtEnd()) Fail(Peek(), "missing 'end' at the end of the system");
-    if (!IsWord("end"))
-      Fail(Peek(), "expected 'Constraints' or 'end', found ", Peek());
+  } else if (IsWord("end")) {
     Next();
+  } else if (!AtEnd()) {
+    Fail(Peek(), "expected 'Constraints' or 'end', found ", Peek());
   }
   Accept(";");
   if (!AtEnd()) Fail(Peek(), "unexpected ", Peek(), " after the final 'end'");
 }
 
 void Parser::RejectUnsupportedSection() {
-  for (std::string_view w : {"parameters", "function"})
-    if (IsWord(w)) Fail(Peek(), "the '", Peek().text, "' section is not supported");
+  if (IsWord("parameters")) Fail(Peek(), "the '", Peek().text, "' section is not supported");
+  if (IsWord("function"))
+    Fail(Peek(), "a function must come before 'Minimize' and 'Constraints'");
 }
 
-// Constants: NAME ('=' | 'in') constant-expression ';' ...
+// Constants: NAME [shape] ('=' | 'in') value ';' ...
 void Parser::ParseConstants() {
   do {
     const Token& name = NewName("constant");
-    if (IsPunct("[")) Fail(Peek(), "vector constants are not supported");
+    const Shape shape = ParseShape(name, "constant");
     if (IsPunct("=") || IsIn()) {
       Next();
     } else {
       Fail(Peek(), "expected '=' or 'in' after constant '", name.text, "', found ", Peek());
     }
-    const Token& start = Peek();
-    const Interval value = ParseConstant({"the value of constant", name.text});
-    if (value.IsEmpty()) Fail(start, "constant '", name.text, "' is the empty set");
-    symbols_[name.text] = Symbol{Symbol::kConstant, value};
+    Symbol s{Symbol::kConstant, shape};
+    s.values = ParseConstantValue(name, shape);
+    symbols_[name.text] = std::move(s);
     Expect(";", {"after the declaration of constant", name.text});
   } while (!AtEnd() && !IsSectionWord(Peek().text));
 }
 
-// Variables: NAME ['[' n ']'] ['in' domain], separated by ';' or ',' (as in
+// Variables: NAME [shape] ['in' domain], separated by ';' or ',' (as in
 // IBEX, where "x, y in [0,1]" leaves x unbounded), ending with ';'.
 void Parser::ParseVariables() {
   while (true) {
     const Token& name = NewName("variable");
-    int size = 0;  // 0: scalar
-    if (IsPunct("[")) {
-      const Token& open = Next();
-      const Token& start = Peek();
-      const long long n = ParseInteger({"the size of vector", name.text});
-      if (n < 1) Fail(start, "vector '", name.text, "' must have a positive size");
-      if (n > kMaxVariables) Fail(start, "vector '", name.text, "' is too large");
-      Expect("]", {"after the size of vector", name.text});
-      if (IsPunct("[")) Fail(open, "matrix variables are not supported");
-      size = static_cast<int>(n);
-    }
+    const Shape shape = ParseShape(name, "variable");
     Interval domain;
     if (IsIn()) {
       Next();
@@ -149,36 +160,65 @@ void Parser::ParseVariables() {
       domain = ParseConstant({"the domain of", name.text});
       if (domain.IsEmpty()) Fail(start, What{"empty domain for", name.text});
     }
-    Declare(name, size, domain);
+    Declare(name, shape, domain);
     if (Accept(",")) continue;
     Expect(";", {"after the declaration of", name.text});
     if (AtEnd() || (Peek().kind == TokKind::kIdent && IsSectionWord(Peek().text))) return;
   }
 }
 
-void Parser::Declare(const Token& name, int size, const Interval& domain) {
-  if (csp_.num_variables() + std::max(size, 1) > kMaxVariables)
-    Fail(name, "too many variables (more than ", kMaxVariables, ")");
-  Symbol s{size == 0 ? Symbol::kScalarVariable : Symbol::kVectorVariable, Interval()};
-  s.first = csp_.num_variables();
-  s.size = std::max(size, 1);
-  if (size == 0) {
-    csp_.AddVariable(name.text, domain);
-  } else {
-    for (int i = 0; i < size; ++i)
-      csp_.AddVariable(name.text + "[" + std::to_string(i) + "]", domain);
+// ['[' n ']' ['[' m ']']]: a scalar, a vector of n, or an n x m matrix.
+Shape Parser::ParseShape(const Token& name, const char* what) {
+  Shape shape;
+  for (int dimension = 0; dimension < 2 && IsPunct("["); ++dimension) {
+    Next();
+    const Token& start = Peek();
+    const long long n = ParseInteger({"a dimension of", name.text});
+    if (n < 1) Fail(start, what, " '", name.text, "' must have positive dimensions");
+    if (n > kMaxVariables) Fail(start, what, " '", name.text, "' is too large");
+    Expect("]", {"after a dimension of", name.text});
+    (dimension == 0 ? shape.rows : shape.cols) = static_cast<int>(n);
   }
-  symbols_[name.text] = s;
+  if (static_cast<long long>(std::max(shape.rows, 1)) * std::max(shape.cols, 1) > kMaxVariables)
+    Fail(name, what, " '", name.text, "' is too large");
+  if (IsPunct("["))
+    Fail(Peek(), "arrays of matrices (three dimensions) are not supported");
+  return shape;
 }
 
-// A name being declared: an identifier, not reserved, not yet used.
+// A vector x[n] becomes the variables "x[0]" .. "x[n-1]", a matrix x[m][n]
+// "x[0][0]", "x[0][1]" .. "x[m-1][n-1]", row by row (0-based, as written
+// with []).
+void Parser::Declare(const Token& name, const Shape& shape, const Interval& domain) {
+  if (static_cast<long long>(csp_.num_variables()) + shape.size() > kMaxVariables)
+    Fail(name, "too many variables (more than ", kMaxVariables, ")");
+  Symbol s{Symbol::kVariable, shape};
+  s.first = csp_.num_variables();
+  if (shape.is_scalar()) {
+    csp_.AddVariable(name.text, domain);
+  } else if (!shape.is_matrix()) {
+    for (int i = 0; i < shape.rows; ++i)
+      csp_.AddVariable(name.text + "[" + std::to_string(i) + "]", domain);
+  } else {
+    for (int i = 0; i < shape.rows; ++i)
+      for (int j = 0; j < shape.cols; ++j)
+        csp_.AddVariable(name.text + "[" + std::to_string(i) + "][" + std::to_string(j) + "]",
+                         domain);
+  }
+  symbols_[name.text] = std::move(s);
+}
+
+// A name being declared: an identifier, not reserved, not yet used here (in
+// a function body, global variables are out of sight and may be reused).
 const Token& Parser::NewName(const std::string& what) {
   const Token& t = Peek();
   if (t.kind != TokKind::kIdent)
     Fail(t, "expected a ", what, " name, found ", t);
   if (IsReserved(t.text))
     Fail(t, "'", t.text, "' is a reserved word and cannot name a ", what);
-  if (symbols_.count(t.text)) Fail(t, "duplicate name '", t.text, "'");
+  if (Lookup(t.text) || (scope_ == 0 && symbols_.count(t.text)) || functions_.count(t.text) ||
+      t.text == function_being_defined_)
+    Fail(t, "duplicate name '", t.text, "'");
   return Next();
 }
 
@@ -195,6 +235,9 @@ void Parser::ParseBlockList(const std::string& what) {
     }
     if (IsWord("for")) {
       ParseLoop();
+    } else if (AssignmentAhead()) {
+      ParseAssignment(what);
+      continue;
     } else {
       ParseConstraint();
     }
@@ -204,6 +247,28 @@ void Parser::ParseBlockList(const std::string& what) {
     if (!IsWord("end"))
       Fail(Peek(), "expected ';' after the constraint, found ", Peek());
   }
+}
+
+// IBEX's ctr_assign: a new name followed by '=' binds the name to an
+// expression (an unknown name in a constraint would be an error anyway).
+bool Parser::AssignmentAhead() const {
+  const Token& t = Peek();
+  return t.kind == TokKind::kIdent && IsPunct("=", 1) && !IsReserved(t.text) &&
+         !symbols_.count(t.text) && !functions_.count(t.text);
+}
+
+// NAME = expr ';' then a constraint: the name stands for the expression in
+// the constraints that follow, up to the end of the enclosing loop body.
+void Parser::ParseAssignment(const std::string& what) {
+  const Token& name = NewName("temporary");
+  Next();  // '='
+  Symbol s{Symbol::kBound};
+  s.bindings.push_back(BindExpression());
+  symbols_[name.text] = std::move(s);
+  temporaries_.push_back(name.text);
+  Expect(";", {"after the expression of", name.text});
+  if (IsWord("end") || AtEnd())
+    Fail(Peek(), "expected a constraint after the temporary '", name.text, "' in the ", what);
 }
 
 // for NAME = lo : hi ; body end. The body is re-read for each index value.
@@ -221,11 +286,16 @@ void Parser::ParseLoop() {
     return;
   }
   const std::size_t body = pos_;
-  symbols_[name.text] = Symbol{Symbol::kLoopIndex, Interval()};
+  symbols_[name.text] = Symbol{Symbol::kLoopIndex};
+  const std::size_t outer_temporaries = temporaries_.size();
   for (long long i = lo; i <= hi; ++i) {
-    symbols_[name.text].value = Interval(static_cast<double>(i));
+    symbols_[name.text].values = {Interval(static_cast<double>(i))};
     pos_ = body;
     ParseBlockList(what);
+    // The body's temporaries are its own, new at each iteration.
+    for (std::size_t k = outer_temporaries; k < temporaries_.size(); ++k)
+      symbols_.erase(temporaries_[k]);
+    temporaries_.resize(outer_temporaries);
   }
   symbols_.erase(name.text);
 }

@@ -5,6 +5,7 @@
 
 #include <cctype>
 #include <cstddef>
+#include <deque>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -86,7 +87,7 @@ bool IsSectionWord(const std::string& text);
 // A word that cannot name a constant, variable or loop index.
 bool IsReserved(const std::string& name);
 
-// ---- Parser (minibex_parser.cc, minibex_expression.cc) ----------------------
+// ---- Parser (minibex_parser.cc and the files named below) ------------------
 
 // What a token or expression is for, in error messages: text, then 'name'
 // if there is one. Assembled only when an error is reported, as the parser
@@ -110,11 +111,54 @@ struct Value {
   bool is_constant() const { return !expr.has_value(); }
 };
 
+// The shape of a declared name: rows = 0 for a scalar, cols = 0 for a
+// vector of rows components, both positive for a rows x cols matrix.
+struct Shape {
+  int rows = 0;
+  int cols = 0;
+  bool is_scalar() const { return rows == 0; }
+  bool is_matrix() const { return cols > 0; }
+  int size() const { return is_scalar() ? 1 : is_matrix() ? rows * cols : rows; }
+  bool operator==(const Shape&) const = default;
+  // "x", "x[3]" or "x[2][3]", for messages.
+  std::string Describe(const std::string& name) const;
+};
+
+// A name bound to an expression (a function argument, a temporary): the
+// tokens [begin, end) read in function scope `scope` (0: the system's) at
+// each use, as if written there, so an interval constant in it stays a real
+// of its own at each occurrence. value caches the result once it is known
+// to hold no interval constant (then every reading gives the same node).
+struct Binding {
+  std::optional<Value> value;
+  std::size_t begin = 0;
+  std::size_t end = 0;
+  int scope = 0;
+};
+
 struct Symbol {
-  enum Kind { kConstant, kScalarVariable, kVectorVariable, kLoopIndex } kind;
-  Interval value;  // kConstant and kLoopIndex
-  int first = 0;   // variable index (of component 0 for vectors)
-  int size = 1;    // vector length
+  enum Kind { kConstant, kVariable, kLoopIndex, kBound };
+  explicit Symbol(Kind kind = kConstant, Shape shape = {}) : kind(kind), shape(shape) {}
+  Kind kind;
+  Shape shape;
+  std::vector<Interval> values;   // kConstant (row by row), kLoopIndex (one)
+  int first = 0;                  // kVariable: the variable index of component 0
+  std::vector<Binding> bindings;  // kBound: one per component
+};
+
+// A user function: its parameters and where its body starts (the token
+// after the closing parenthesis of the parameter list).
+struct Function {
+  std::vector<std::pair<std::string, Shape>> parameters;
+  std::size_t body = 0;
+};
+
+// A parenthesised list: (e1; e2) a column, (e1, e2) a row, ((a, b); (c, d))
+// a matrix by rows; its components row by row.
+struct Array {
+  Shape shape;
+  std::vector<Binding> components;
+  std::vector<const Token*> starts;  // where each component starts, for messages
 };
 
 // %.17g, for doubles in error messages.
@@ -225,16 +269,46 @@ class Parser {
   // ---- Sections, declarations, loops (minibex_parser.cc) ------------------
 
   void ParseSystem();
+  void ParseFunctions();
+  void ParseEnding();
   void RejectUnsupportedSection();
   void ParseConstants();
   void ParseVariables();
-  void Declare(const Token& name, int size, const Interval& domain);
+  Shape ParseShape(const Token& name, const char* what);
+  void Declare(const Token& name, const Shape& shape, const Interval& domain);
   const Token& NewName(const std::string& what);
   void ParseBlockList(const std::string& what);
   void ParseLoop();
   void SkipLoopBody(const std::string& what);
+  bool AssignmentAhead() const;
+  void ParseAssignment(const std::string& what);
   void ParseConstraint();
   bool ParenthesisedConstraintAhead() const;
+
+  // ---- Names, indices, constant arrays (minibex_symbols.cc) ---------------
+
+  // The symbol name denotes here: in a function body its parameters and
+  // temporaries, then the system's constants; elsewhere the system's names.
+  Symbol* Lookup(const std::string& name);
+  Value Component(Symbol& s, int k);
+  int ParseComponentIndex(const Symbol& s, const Token& name_token);
+  int ParseIndex(const std::string& name, bool one_based, int size);
+  std::vector<Interval> ParseConstantValue(const Token& name, const Shape& shape);
+  bool ListAhead() const;
+  Array ParseArray();
+  Array ParseArrayItem();
+  Binding BindExpression();
+  Value Resolve(Binding& b);
+  bool HoldsNoIntervalConstant(const Value& v) const;
+
+  // ---- User functions (minibex_functions.cc) ------------------------------
+
+  void ParseFunctionDefinition();
+  Value ParseFunctionBody(const std::string& name);
+  Value ParseCall(const std::string& name, const Function& f);
+  std::vector<Binding> ParseArgument(const std::string& function, std::size_t k,
+                                     const std::string& parameter, const Shape& shape);
+  std::vector<Binding> WholeSymbolArgument(Symbol& s);
 
   // ---- Expressions (minibex_expression.cc) --------------------------------
 
@@ -252,8 +326,9 @@ class Parser {
   Value ParseUnary();
   Value ParsePower();
   [[gnu::noinline]] Value ParseName();
-  [[gnu::noinline]] Value ParseSymbol(const Symbol& s);
+  [[gnu::noinline]] Value ParseSymbol(Symbol& s);
   [[gnu::noinline]] Interval ParseIntervalLiteral();
+  Interval ParseNumber(const Token& t);
   double ParseBound(bool lower);
   Interval ParseConstant(const What& what);
   long long ParseInteger(const What& what);
@@ -265,6 +340,16 @@ class Parser {
   long long work_ = 0;
   int depth_ = 0;
   std::unordered_map<std::string, Symbol> symbols_;
+  std::unordered_map<std::string, Function> functions_;
+  // The scopes of the function calls being read, innermost last (a deque:
+  // pushing keeps references to the others' symbols valid); scope_ is the
+  // one names are looked up in, 1-based, 0 for the system's names.
+  std::deque<std::unordered_map<std::string, Symbol>> function_scopes_;
+  int scope_ = 0;
+  std::string function_being_defined_;  // to report recursion
+  // Temporaries of the Constraints section, in order, so that a loop
+  // iteration drops its own.
+  std::vector<std::string> temporaries_;
   ConstraintSystem csp_;
 };
 

@@ -37,6 +37,8 @@ class Tokenizer {
       } else if (std::isdigit(static_cast<unsigned char>(c)) ||
                  (c == '.' && std::isdigit(static_cast<unsigned char>(next)))) {
         out.push_back(Take(TokKind::kNumber, NumberLength()));
+      } else if (c == '#' && std::isxdigit(static_cast<unsigned char>(next))) {
+        out.push_back(Take(TokKind::kNumber, HexLength()));
       } else if ((c == '<' || c == '>') && next == '=') {
         out.push_back(Take(TokKind::kPunct, 2));
       } else if (std::string_view("+-*/^()[],;:=<>").find(c) != std::string_view::npos) {
@@ -119,6 +121,20 @@ class Tokenizer {
       while (IsIdentChar(end) || (end < s_.size() && s_[end] == '.')) ++end;
       const std::size_t shown = std::min<std::size_t>(end - i_, 40);
       throw MinibexError(source_, line_, column_, "bad number '" + s_.substr(i_, shown) + "'");
+    }
+    return k - i_;
+  }
+
+  // '#' and hexadecimal digits (IBEX's exact double); a letter or digit
+  // glued to the end makes it a bad number.
+  std::size_t HexLength() const {
+    std::size_t k = i_ + 1;
+    while (k < s_.size() && std::isxdigit(static_cast<unsigned char>(s_[k]))) ++k;
+    if (IsIdentChar(k)) {
+      std::size_t end = k;
+      while (IsIdentChar(end)) ++end;
+      throw MinibexError(source_, line_, column_,
+                         "bad number '" + s_.substr(i_, std::min<std::size_t>(end - i_, 40)) + "'");
     }
     return k - i_;
   }
