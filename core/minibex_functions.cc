@@ -49,7 +49,8 @@ void Parser::ParseFunctionDefinition() {
 // {NAME '=' expr ';'} return expr [';'] end, in the current function scope.
 Value Parser::ParseFunctionBody(const std::string& name) {
   while (!IsWord("return")) {
-    if (AtEnd()) Fail(Peek(), "unterminated function '", name, "': missing 'return'");
+    if (AtEnd() || IsSectionWord(Peek().text))
+      Fail(Peek(), "expected 'return' in function '", name, "', found ", Peek());
     const Token& temporary = NewName("temporary");
     Expect("=", {"after the temporary", temporary.text});
     Symbol s{Symbol::kBound};
