@@ -149,7 +149,5 @@ TEST(MinibexParserTest, LnIsLog) {
   EXPECT_EQ(csp.graph().node(csp.constraints()[0].root).op, Op::kLog);
 }
 
-
-
 }  // namespace
 }  // namespace icp

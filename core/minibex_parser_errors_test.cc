@@ -12,22 +12,16 @@
 #include <string>
 #include <vector>
 
+#include "core/minibex_parser_testing.h"
 #include "core/random.h"
 #include "core/tape.h"
 
 namespace icp {
 namespace {
 
-// Parses text that must be rejected; returns the error.
-MinibexError ErrorOf(const std::string& text) {
-  try {
-    ParseMinibex(text, "t.mbx");
-  } catch (const MinibexError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "accepted: " << text;
-  return MinibexError("t.mbx", -1, -1, "accepted");
-}
+using testing::BadInput;
+using testing::ErrorOf;
+using testing::ExpectRejected;
 
 TEST(MinibexParserTest, ErrorMessageFormat) {
   const MinibexError e = ErrorOf("Variables x in [0,1];\nConstraints\n  x + q = 0;\nend");
@@ -35,13 +29,6 @@ TEST(MinibexParserTest, ErrorMessageFormat) {
   EXPECT_EQ(e.column(), 7);
   EXPECT_EQ(std::string(e.what()), "t.mbx:3:7: unknown identifier 'q'");
 }
-
-struct BadInput {
-  std::string text;
-  int line;    // 0: do not check the position
-  int column;
-  std::string message_part;
-};
 
 TEST(MinibexParserTest, RejectsBadInputWithPosition) {
   const std::vector<BadInput> cases = {
@@ -110,15 +97,7 @@ TEST(MinibexParserTest, RejectsBadInputWithPosition) {
       {"Variables x in [0,1]; Constraints x = [1, 2; end", 1, 44, "expected ']'"},
       {"Variables x in [0,1]; Constraints x = 2^40000000000; end", 1, 41, "too large"},
   };
-  for (const BadInput& c : cases) {
-    SCOPED_TRACE(c.text);
-    const MinibexError e = ErrorOf(c.text);
-    EXPECT_NE(std::string(e.what()).find(c.message_part), std::string::npos) << e.what();
-    if (c.line > 0) {
-      EXPECT_EQ(e.line(), c.line) << e.what();
-      EXPECT_EQ(e.column(), c.column) << e.what();
-    }
-  }
+  ExpectRejected(cases);
 }
 
 TEST(MinibexParserTest, DeepNestingIsAnErrorNotACrash) {

@@ -17,14 +17,9 @@
 namespace icp {
 namespace {
 
+using testing::Decimal;
 using testing::Eval;
 using testing::PointBox;
-
-Interval Decimal(const std::string& text) {
-  Interval x;
-  EXPECT_TRUE(ParseDecimal(text, &x)) << text;
-  return x;
-}
 
 std::vector<int> VariablesOf(const ConstraintSystem& csp, int c) {
   return Tape(csp.graph(), csp.constraints()[c]).variables();
