@@ -100,6 +100,30 @@ TEST(MinibexParserTest, RejectsBadInputWithPosition) {
   ExpectRejected(cases);
 }
 
+// Loops, temporaries and calls that double at each level expand
+// exponentially: past a bound on the tokens read, the parse stops with an
+// error (in about a second) instead of running for hours.
+TEST(MinibexParserTest, AnExpansionPastTheTokenBoundIsAnError) {
+  std::string temporaries = "Variables x; Constraints t0 = x + [1, 2];\n";
+  for (int i = 1; i < 40; ++i)
+    temporaries += "t" + std::to_string(i) + " = t" + std::to_string(i - 1) + " - t" + std::to_string(i - 1) + ";\n";
+  auto calls = [](int levels) {  // f_i calls f_(i-1) twice
+    std::string text = "function f0(a) return a + [1, 2]; end\n";
+    for (int i = 1; i < levels; ++i)
+      text += "function f" + std::to_string(i) + "(a) return f" + std::to_string(i - 1) + "(a) * f" +
+              std::to_string(i - 1) + "(a); end\n";
+    return text + "Variables x; Constraints f" + std::to_string(levels - 1) + "(x) <= 1; end";
+  };
+  const std::vector<BadInput> cases = {
+      {temporaries + "t39 <= 1; end", 0, 0, "input too large"},
+      {calls(40), 0, 0, "input too large"},
+      {"Variables x; Constraints for i = 1:1e9; x <= i; end; end", 0, 0, "input too large"},
+  };
+  ExpectRejected(cases);
+  // Ten levels are fine.
+  EXPECT_EQ(ParseMinibex(calls(10)).constraints().size(), 1u);
+}
+
 TEST(MinibexParserTest, DeepNestingIsAnErrorNotACrash) {
   auto nested = [](int depth) {
     return "Variables x in [0,1]; Constraints " + std::string(depth, '(') + "x" +
