@@ -81,6 +81,11 @@ class Estimate {
   // size, a NaN bound, coordinate or weight, which the queries above would
   // skip as empty; "" when they can. The harness refuses such a result.
   virtual std::string Malformed(const std::vector<std::string>& /*names*/) const { return ""; }
+  // Whether the estimate claims to hold every state the data allow (a box,
+  // a paving, an accumulator), which the harness checks against the step's
+  // domains, or weighs states by a model that may place them anywhere (a
+  // particle cloud, whose containment is measured instead).
+  virtual bool ClaimsEnclosure() const { return true; }
 };
 
 class BoxEstimate : public Estimate {
@@ -169,6 +174,7 @@ class ParticleEstimate : public Estimate {
   // CredibleBox of the particles; an empty box when no weight is positive.
   std::optional<Box> CredibleRegion(double level) const override;
   std::string Malformed(const std::vector<std::string>& names) const override;
+  bool ClaimsEnclosure() const override { return false; }
   const cv::Mat& particles() const { return particles_; }
   const std::vector<double>& weights() const { return weights_; }
   // The box hull of the particles with positive weight, whatever the region.

@@ -224,7 +224,7 @@ std::string InvalidEstimateReason(const Views& views, const Estimate& estimate) 
     return "the estimate has " + std::to_string(hull.size()) + " components, the state " +
            std::to_string(views.space.size());
   if (const int nan = FirstNaNComponent(hull); nan >= 0) return views.space.names[nan] + " has a NaN bound";
-  if (hull.IsEmpty()) return "";
+  if (hull.IsEmpty() || !estimate.ClaimsEnclosure()) return "";
   const Box domains = Domains(views);
   for (int c = 0; c < views.space.size(); ++c) {
     const std::string& name = views.space.names[c];

@@ -35,9 +35,11 @@ inline constexpr int kCoverageLevels[] = {50, 90, 95};
 Properties CoverageProperties(const Step& step, const Estimate& estimate);
 
 // Why an estimate cannot be the answer to the step, or "" when it can: a
-// malformed part (Estimate::Malformed), a hull of the wrong dimension, a NaN bound, or a component outside the
-// step's domains (the CSP view's newest state, the measurement set's prior;
-// a periodic component is compared modulo its period).
+// malformed part (Estimate::Malformed), a hull of the wrong dimension, a
+// NaN bound, or, for an estimate that claims an enclosure (not a particle
+// cloud), a component outside the step's domains (the CSP view's newest
+// state, the measurement set's prior; a periodic component is compared
+// modulo its period).
 std::string InvalidEstimateReason(const Views& views, const Estimate& estimate);
 
 // Judges the post-localized state an estimator reports (the properties

@@ -274,5 +274,30 @@ TEST(PostLocalizedStatesTest, EachStateKeepsItsLastReport) {
   EXPECT_TRUE(PostLocalizedStates(HandSteps()).empty());
 }
 
+// A set estimate must lie within the step's domains; a particle cloud, whose
+// model may place states anywhere (a start off the map, a re-draw over the
+// whole map), need not; neither may hold a NaN, which its hull would skip.
+TEST(InvalidEstimateReasonTest, DomainsBindSetsNotParticleClouds) {
+  Views views;
+  views.space.names = {"x", "y"};
+  views.measurement_set.emplace();
+  views.measurement_set->prior = Box({Interval(0, 10), Interval(0, 10)});
+  const Box outside({Interval(-5, 3), Interval(1, 2)});
+  EXPECT_NE(InvalidEstimateReason(views, BoxEstimate(outside)).find("x = [-5, 3] is not inside its domain"),
+            std::string::npos);
+  EXPECT_NE(InvalidEstimateReason(views, PavingEstimate(2, {}, {outside})), "");
+  cv::Mat particles = (cv::Mat_<double>(2, 2) << -5, 1, 3, 2);
+  EXPECT_EQ(InvalidEstimateReason(views, ParticleEstimate(particles, {1, 1})), "");
+  particles.at<double>(1, 1) = kNaN;
+  EXPECT_EQ(InvalidEstimateReason(views, ParticleEstimate(particles, {1, 1})), "particle 1: y is NaN");
+  const cv::Mat one = (cv::Mat_<double>(1, 2) << 1, 1);
+  EXPECT_EQ(InvalidEstimateReason(views, ParticleEstimate(one, {kNaN})), "particle 0's weight is NaN or negative");
+  const Box with_nan({Interval(1, 2), Interval(1, kNaN, Interval::kOrdered)});
+  EXPECT_EQ(InvalidEstimateReason(views, PavingEstimate(2, {}, {Box({Interval(1, 2), Interval(1, 2)}), with_nan})),
+            "the paving's boundary box 1: y has a NaN bound");
+  EXPECT_EQ(InvalidEstimateReason(views, PavingEstimate(2, {Box({Interval(1, 2)})}, {})),
+            "the paving's inner box 0 has 1 components, not 2");
+}
+
 }  // namespace
 }  // namespace icp

@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <sstream>
 
@@ -424,6 +424,14 @@ TEST(MarinaSonarViewsTest, AWildReturnNeverZeroesThePosition) {
   EXPECT_LT(MarinaLogLikelihood(Shipped(), r, p.max_range, 1e-12, x, y) -
                 MarinaLogLikelihood(Shipped(), without, p.max_range, 1e-12, x, y),
             4 * kSonarTemper * std::log(0.1 / p.max_range));
+  // At the smallest floor the parameter accepts, floor / max_range
+  // underflows to 0, and so does the Gaussian far from the walls: the cost
+  // stays the floor's, finite (it was log 0 = -inf, and every particle fell).
+  const double tiniest = std::numeric_limits<double>::denorm_min();
+  const double cost = MarinaLogLikelihood(Shipped(), r, p.max_range, tiniest, x, y) -
+                      MarinaLogLikelihood(Shipped(), without, p.max_range, tiniest, x, y);
+  EXPECT_TRUE(std::isfinite(cost)) << cost;
+  EXPECT_GE(cost, kSonarTemper * (std::log(tiniest) - std::log(p.max_range)) - 1e-9);
 }
 
 // --- the log ------------------------------------------------------------------

@@ -36,6 +36,9 @@ double MarinaLogLikelihood(const MarinaMap& map, const MarinaRecord& r, double m
     return -std::numeric_limits<double>::infinity();
   const double pixel = map.image->frame().pixel_size;
   const double outlier = outlier_weight / max_range;  // uniform over the sonar's range
+  // Where the mixture underflows (a floor near the smallest double), its log
+  // is the outlier part's, taken in logs: finite, as the floor promises.
+  const double log_outlier = std::log(outlier_weight) - std::log(max_range);
   double sum = 0;
   for (const MarinaReturn& ret : r.returns) {
     if (!(ret.range < max_range)) continue;
@@ -44,7 +47,8 @@ double MarinaLogLikelihood(const MarinaMap& map, const MarinaRecord& r, double m
     const double sigma = std::max(
         pixel, std::hypot(ret.range_error, ret.range * (r.heading_error + ret.beam_half_width)));
     const double inlier = std::exp(-dist * dist / (2 * sigma * sigma)) / (kSqrtTwoPi * sigma);
-    sum += std::log((1 - outlier_weight) * inlier + outlier);
+    const double mixture = (1 - outlier_weight) * inlier + outlier;
+    sum += mixture > 0 ? std::log(mixture) : log_outlier;
   }
   return kSonarTemper * sum;
 }
