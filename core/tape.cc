@@ -28,21 +28,31 @@ void AppendDependentSlots(const std::vector<TapeInstr>& code, Selected selected,
 Tape::Tape(const ExprGraph& graph, const Constraint& constraint) : range_(constraint.range) {
   if (constraint.root < 0 || constraint.root >= graph.size())
     throw std::invalid_argument("Tape: constraint root is not a node of the graph");
-  // Reachable nodes; ids are already topologically ordered.
-  std::vector<char> reachable(constraint.root + 1, 0);
-  reachable[constraint.root] = 1;
-  for (int id = constraint.root; id >= 0; --id) {
-    if (!reachable[id]) continue;
-    const ExprNode& e = graph.node(id);
-    if (e.a >= 0) reachable[e.a] = 1;
-    if (e.b >= 0) reachable[e.b] = 1;
+  // The reachable nodes, found from the root (not by a scan of every node
+  // below it: m constraints over one graph would cost O(m^2)), ascending:
+  // ids are already topologically ordered.
+  // marked: a flag per node of the graphs seen so far, kept per thread and
+  // cleared after use, so that a tape costs its own size only.
+  thread_local std::vector<char> marked;
+  if (marked.size() <= static_cast<std::size_t>(constraint.root)) marked.resize(constraint.root + 1, 0);
+  std::vector<int> ids = {constraint.root};
+  marked[constraint.root] = 1;
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    const ExprNode& e = graph.node(ids[k]);
+    for (int operand : {e.a, e.b})
+      if (operand >= 0 && !marked[operand]) {
+        marked[operand] = 1;
+        ids.push_back(operand);
+      }
   }
-  std::vector<int> slot_of(constraint.root + 1, -1);
-  for (int id = 0; id <= constraint.root; ++id) {
-    if (!reachable[id]) continue;
+  for (int id : ids) marked[id] = 0;
+  std::sort(ids.begin(), ids.end());
+  auto slot_of = [&ids](int id) {
+    return static_cast<int>(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin());
+  };
+  for (int id : ids) {
     const ExprNode& e = graph.node(id);
-    slot_of[id] = static_cast<int>(code_.size());
-    TapeInstr in{e.op, e.a >= 0 ? slot_of[e.a] : -1, e.b >= 0 ? slot_of[e.b] : -1, e.n};
+    TapeInstr in{e.op, e.a >= 0 ? slot_of(e.a) : -1, e.b >= 0 ? slot_of(e.b) : -1, e.n};
     code_.push_back(in);
     constants_.push_back(e.op == Op::kConst ? e.value : Interval());
   }

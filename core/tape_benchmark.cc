@@ -1,6 +1,10 @@
 // The tape's forward and backward sweeps on one car-track constraint
-// x_k = x_{k-1} + ds cos(th_{k-1} + dth / 2).
+// x_k = x_{k-1} + ds cos(th_{k-1} + dth / 2); and compiling m lines over
+// one graph, whose time per line must not grow with m (it once scanned the
+// whole graph below each constraint: 100,000 lines took 33 s to compile).
 #include <benchmark/benchmark.h>
+
+#include <cmath>
 
 #include "core/tape.h"
 
@@ -37,6 +41,17 @@ void BM_TapeRevise(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_TapeRevise);
+
+void BM_CompileLines(benchmark::State& state) {
+  ConstraintSystem csp;
+  Expr x = csp.AddVariable("x", {-10, 10});
+  Expr y = csp.AddVariable("y", {-10, 10});
+  for (int i = 0; i < state.range(0); ++i)
+    csp.AddConstraint(std::cos(i) * x + std::sin(i) * y, Relation::kEq, csp.Constant(Interval(0.1, 0.2)));
+  for (auto _ : state) benchmark::DoNotOptimize(CompiledSystem(csp));
+  state.SetItemsProcessed(state.iterations() * state.range(0));  // per line: flat in m
+}
+BENCHMARK(BM_CompileLines)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace icp
