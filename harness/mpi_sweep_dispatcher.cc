@@ -42,6 +42,7 @@ Dispatcher::~Dispatcher() {
 void Dispatcher::Run() {
   const StopSignals signals;
   IdleBackoff backoff(std::chrono::milliseconds(1));
+  Clock::time_point last_check = Clock::now();
   while (StopSignals::Caught() == 0) {
     const double start = ThreadCpuSeconds();
     const bool sent = Dispatch();
@@ -69,6 +70,13 @@ void Dispatcher::Run() {
     // Only with every waiting message taken: after a long store here, a
     // live rank's heartbeats may still be queued.
     const auto now = Clock::now();
+    // Longer than the timeout since the last check: rank 0 did not run
+    // (suspended with the job, as `scontrol suspend` does, or storing a
+    // large run), so a rank's silence meanwhile says nothing: each has a
+    // fresh timeout to speak.
+    if (Seconds(now - last_check) > mpi_.rank_timeout_s)
+      for (Rank& r : ranks_) r.heard = now;
+    last_check = now;
     for (std::size_t r = 1; r < ranks_.size() && drained; ++r) {
       if (!ranks_[r].lost && Seconds(now - ranks_[r].heard) > mpi_.rank_timeout_s)
         Lose(r, "nothing from it for " + FormatDouble(mpi_.rank_timeout_s) + " s");

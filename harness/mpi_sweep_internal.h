@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <deque>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <ostream>
 #include <string>
@@ -56,6 +57,12 @@ inline constexpr std::string_view kNoFinalize = "no-finalize";
 inline constexpr std::size_t kChunkBytes = 1 << 20;
 
 bool Send(int dest, Tag tag, const std::string& bytes);
+// Send without blocking: polls until the message has left (true), or until
+// keep_waiting() says to give up (false; a receiver that died never takes a
+// large message, and a blocking send to it never returns).
+bool SendWhile(int dest, Tag tag, std::string bytes, const std::function<bool()>& keep_waiting);
+// Takes one heartbeat waiting from source, leaving other messages queued.
+bool TakeHeartbeat(int source);
 
 struct Message {
   int source = 0;
@@ -118,6 +125,12 @@ class WorkerRank {
 
  private:
   void StartRun(const std::string& bytes);
+  // Sends to rank 0 while it lives: false once nothing came from it for
+  // --rank-timeout (its heartbeats are taken while waiting); then rank 0 is
+  // lost and nothing more is sent.
+  bool SendToRankZero(Tag tag, std::string bytes);
+  // Whether rank 0 has been silent for --rank-timeout.
+  bool RankZeroSilent() const;
   void SendResult(FinishedRun& f);
   void SendDone(std::size_t index, const RunRecord& r, bool steps);
   // The matrix index of a finished run.
@@ -131,6 +144,8 @@ class WorkerRank {
   WorkerPool pool_;
   std::string machine_;
   std::unordered_map<std::string, std::size_t> in_flight_;  // key -> matrix index
+  Clock::time_point heard_;     // the last message from rank 0
+  bool rank_zero_lost_ = false;  // a send to it was given up
 };
 
 // --- Rank 0 (mpi_sweep_dispatcher.cc; heartbeats and lost ranks in

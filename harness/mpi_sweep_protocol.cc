@@ -5,6 +5,8 @@
 
 #include <cstddef>
 #include <exception>
+#include <functional>
+#include <memory>
 #include <string>
 
 #include "harness/mpi_sweep_internal.h"
@@ -20,6 +22,34 @@ double ThreadCpuSeconds() {
 bool Send(int dest, Tag tag, const std::string& bytes) {
   return MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, dest, tag,
                   MPI_COMM_WORLD) == MPI_SUCCESS;
+}
+
+bool SendWhile(int dest, Tag tag, std::string bytes, const std::function<bool()>& keep_waiting) {
+  // Owned here: a request given up on stays pending and may still read it.
+  auto buffer = std::make_unique<std::string>(std::move(bytes));
+  MPI_Request request;
+  if (MPI_Isend(buffer->data(), static_cast<int>(buffer->size()), MPI_BYTE, dest, tag, MPI_COMM_WORLD,
+                &request) != MPI_SUCCESS)
+    return false;
+  IdleBackoff backoff(std::chrono::milliseconds(10));
+  while (true) {
+    int done = 0;
+    if (MPI_Test(&request, &done, MPI_STATUS_IGNORE) != MPI_SUCCESS) return false;
+    if (done) return true;
+    if (!keep_waiting()) {
+      buffer.release();  // left to the pending request: the rank is about to end
+      return false;
+    }
+    backoff.Sleep();
+  }
+}
+
+bool TakeHeartbeat(int source) {
+  int flag = 0;
+  MPI_Status status;
+  if (MPI_Iprobe(source, kHeartbeat, MPI_COMM_WORLD, &flag, &status) != MPI_SUCCESS || !flag) return false;
+  MPI_Recv(nullptr, 0, MPI_BYTE, source, kHeartbeat, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  return true;
 }
 
 bool TryReceive(int source, Message* m) {

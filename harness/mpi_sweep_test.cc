@@ -260,6 +260,28 @@ TEST(MpiSweepTest, AKilledRankZeroLeavesAStoreThatARerunCompletes) {
   ExpectARerunRunsTheRest(command, dir, kept);
 }
 
+// With --enable-recovery (as examples/slurm/mpi.sbatch runs) Open MPI
+// leaves the job to its ranks when rank 0 dies: a worker whose run finishes
+// then cannot hand the result to anyone, and must still stop within
+// --rank-timeout (a blocking send to the dead rank 0 once kept it forever).
+TEST(MpiSweepTest, WorkersStopWhenRankZeroDiesUnderRecovery) {
+  const std::string spec = testing::WriteFile("mpi_slow.yaml", kSlowRuns);
+  const std::string dir = FreshDir("killed_rank0_recovery"), log = dir + ".log";
+  const std::string command =
+      MpiCommand(3, "run " + spec + " --mpi --jobs 1 --rank-timeout 2 --out " + dir, "--enable-recovery");
+  const pid_t mpirun = Start(command, log);
+  ASSERT_TRUE(testing::WaitFor([&] { return ReadFile(log).find("[1/6]") != std::string::npos; }, 20))
+      << ReadFile(log);
+  const pid_t rank0 = RankProcess(mpirun, 0);
+  ASSERT_GT(rank0, 0);
+  kill(rank0, SIGKILL);  // the runs in flight finish about a second later
+  ASSERT_TRUE(WaitExitWithin(mpirun, 30).has_value()) << "the worker ranks did not stop\n" << ReadFile(log);
+  const std::string out = ReadFile(log);
+  EXPECT_NE(out.find("nothing from rank 0 for 2 s: stopping"), std::string::npos) << out;
+  const std::size_t kept = RunsByKey(dir, false).size();
+  ExpectARerunRunsTheRest(MpiCommand(3, "run " + spec + " --mpi --jobs 1 --out " + dir), dir, kept);
+}
+
 // Ctrl-C or scancel: mpirun passes SIGTERM on; rank 0 stops the runs in
 // flight, keeps the finished ones and says so, and a rerun runs the rest.
 TEST(MpiSweepTest, SigtermToMpirunKeepsTheFinishedRunsAndSaysSo) {

@@ -12,6 +12,7 @@
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <utility>
 
 #include "harness/mpi_sweep_internal.h"
 #include "harness/provenance.h"
@@ -74,16 +75,16 @@ int WorkerRank::Run(std::string error, bool* peer_lost) {
   if (error.empty() && ec)
     error = RankName(rank_) + " cannot create its step directory " + step_dir_.string() + ": " +
             ec.message();
-  Send(0, kReady,
-       nlohmann::json{{"jobs", error.empty() ? jobs_ : 0}, {"error", error}, {"machine", machine_}}
-           .dump());
+  heard_ = Clock::now();
+  SendToRankZero(kReady, nlohmann::json{{"jobs", error.empty() ? jobs_ : 0}, {"error", error}, {"machine", machine_}}
+                             .dump());
   if (const int cpus = UsableCpus(); error.empty() && jobs_ > cpus)
     std::fprintf(stderr,
                  "icpbench: %s runs --jobs %d on %d CPU%s: mpirun bound it (mpirun --bind-to none "
                  "lets its runs use the whole node)\n",
                  RankName(rank_).c_str(), jobs_, cpus, cpus == 1 ? "" : "s");
   const StopSignals signals;
-  Clock::time_point heard = Clock::now(), sent = heard;
+  Clock::time_point sent = Clock::now(), last_check = sent;
   IdleBackoff backoff(std::chrono::milliseconds(10));
   while (true) {
     if (StopSignals::Caught() != 0) return 128 + StopSignals::Caught();
@@ -101,7 +102,7 @@ int WorkerRank::Run(std::string error, bool* peer_lost) {
     Message m;
     while (TryReceive(0, &m)) {
       idle = false;
-      heard = Clock::now();
+      heard_ = Clock::now();
       if (m.tag == kStop) {
         *peer_lost = m.bytes == kNoFinalize;
         return 0;
@@ -110,10 +111,15 @@ int WorkerRank::Run(std::string error, bool* peer_lost) {
     }
     const auto now = Clock::now();
     if (Seconds(now - sent) >= mpi_.heartbeat_s) {
-      Send(0, kHeartbeat, "");
+      SendToRankZero(kHeartbeat, "");
       sent = now;
     }
-    if (Seconds(now - heard) > mpi_.rank_timeout_s) {
+    // Longer than the timeout since the last check: this rank did not run
+    // (the job was suspended, as `scontrol suspend` does), so rank 0's
+    // silence meanwhile says nothing: it has a fresh timeout to speak.
+    if (Seconds(now - last_check) > mpi_.rank_timeout_s && !rank_zero_lost_) heard_ = now;
+    last_check = now;
+    if (rank_zero_lost_ || RankZeroSilent()) {
       std::fprintf(stderr, "icpbench: %s: nothing from rank 0 for %g s: stopping\n",
                    RankName(rank_).c_str(), mpi_.rank_timeout_s);
       *peer_lost = true;
@@ -143,6 +149,17 @@ void WorkerRank::StartRun(const std::string& bytes) {
   SendDone(index, f.record, false);
 }
 
+bool WorkerRank::RankZeroSilent() const { return Seconds(Clock::now() - heard_) > mpi_.rank_timeout_s; }
+
+bool WorkerRank::SendToRankZero(Tag tag, std::string bytes) {
+  if (rank_zero_lost_) return false;
+  rank_zero_lost_ = !SendWhile(0, tag, std::move(bytes), [this] {
+    while (TakeHeartbeat(0)) heard_ = Clock::now();
+    return !RankZeroSilent();
+  });
+  return !rank_zero_lost_;
+}
+
 void WorkerRank::SendResult(FinishedRun& f) {
   const std::size_t index = IndexOf(f);
   bool steps = !f.step_file.empty();
@@ -158,16 +175,16 @@ void WorkerRank::SendResult(FinishedRun& f) {
     while (steps && in) {
       in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
       const auto n = static_cast<std::size_t>(in.gcount());
-      if (n > 0) Send(0, kSteps, WithIndex(index, chunk.substr(0, n)));
+      if (n > 0 && !SendToRankZero(kSteps, WithIndex(index, chunk.substr(0, n)))) return;  // rank 0 is gone
     }
   }
   SendDone(index, f.record, steps);
 }
 
 void WorkerRank::SendDone(std::size_t index, const RunRecord& r, bool steps) {
-  Send(0, kDone, WithIndex(index, nlohmann::json{{"summary", SerializeSummary(r)},
-                                                 {"steps", steps},
-                                                 {"machine", machine_}}.dump()));
+  SendToRankZero(kDone, WithIndex(index, nlohmann::json{{"summary", SerializeSummary(r)},
+                                                        {"steps", steps},
+                                                        {"machine", machine_}}.dump()));
 }
 
 std::size_t WorkerRank::IndexOf(const FinishedRun& f) {
