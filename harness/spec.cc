@@ -154,10 +154,13 @@ class Reader {
       if (used == text.size() && !text.empty() && text[0] != '-' && !std::isspace(static_cast<unsigned char>(text[0])))
         return v;
       // An integer spelt as integer parameters may be ("1.0", "1e3"), up to
-      // 2^53, where a double still holds every integer.
-      double d = 0;
-      if (ParseDouble(text, &d) && d >= 0 && d <= 9007199254740992.0 && d == std::floor(d))
-        return static_cast<std::uint64_t>(d);
+      // 2^53, where a double still holds every integer; and exactly (the
+      // decimal's enclosure a point): 9007199254740993.0 is not 2^53.
+      Interval exact;
+      if (ParseDecimal(text, &exact) && exact.IsPoint()) {
+        const double d = exact.lo();
+        if (d >= 0 && d <= 9007199254740992.0 && d == std::floor(d)) return static_cast<std::uint64_t>(d);
+      }
       Fail(n, key, "'" + text + "' is not a non-negative integer");
     };
     if (seeds) {

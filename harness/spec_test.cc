@@ -304,7 +304,11 @@ TEST(SpecTest, NumbersAreDecimalAndSeedsTakeIntegerSpellings) {
   const Spec spec = ParseSpec("seeds: [1.0, 1, 1e3, 2]\nalgorithms: [hc4]\nproblems: [chain]\n", "s");
   ASSERT_EQ(spec.runs.size(), 3u);  // 1.0 and 1 are one seed
   EXPECT_EQ(spec.runs[1].spec.seed, 1000u);
-  for (const char* bad : {"1.5", "-1", "1e300", "x"})
+  // 2^53 + 1 has no double: spelt as a decimal it would read as 2^53.
+  EXPECT_EQ(ParseSpec("seeds: [9007199254740992.0, 9007199254740993]\nalgorithms: [hc4]\nproblems: [chain]\n", "s")
+                .runs.size(),
+            2u);
+  for (const char* bad : {"1.5", "-1", "1e300", "x", "9007199254740993.0", "9007199254740994.0"})
     EXPECT_NE(ErrorOf(std::string("seeds: [") + bad + "]\nalgorithms: [hc4]\nproblems: [chain]\n")
                   .find("is not a non-negative integer"),
               std::string::npos)

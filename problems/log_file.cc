@@ -14,14 +14,21 @@
 
 namespace icp {
 
+namespace {
+// "a " or "an " before what.
+std::string Article(const std::string& what) {
+  return what.find_first_of("aeiou") == 0 ? "an " + what : "a " + what;
+}
+}  // namespace
+
 std::ifstream OpenLogFile(const std::string& path, const std::string& what) {
   // A directory opens and reads as nothing; a pipe or a device (/dev/zero)
   // could block the reader, or never end: both are refused by their kind.
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
-  if (std::filesystem::is_directory(status)) throw std::invalid_argument(path + ": is a directory, not a " + what);
+  if (std::filesystem::is_directory(status)) throw std::invalid_argument(path + ": is a directory, not " + Article(what));
   if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
-    throw std::invalid_argument(path + ": is not a regular file (a pipe or a device), not a " + what);
+    throw std::invalid_argument(path + ": is not a regular file (a pipe or a device), not " + Article(what));
   errno = 0;
   std::ifstream in(path);
   if (!in) {

@@ -4,7 +4,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <numbers>
 #include <ostream>
@@ -151,9 +150,6 @@ std::vector<MarinaRecord> ReadMarinaLog(std::istream& in, const std::string& sou
 }
 
 std::vector<MarinaRecord> ReadMarinaLog(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw std::invalid_argument(path + ": no such log file (a regular file)");
   std::ifstream in = OpenLogFile(path, "marina-sonar log");
   return ReadMarinaLog(in, path);
 }

@@ -91,14 +91,21 @@ def solve(minibex, algorithm="hc4", repeat=1, timeout=math.inf, **params):
     return result
 
 
+def _seed(seed):
+    # The command line's rule for a seed: an integer in [0, 2^64); bool is not one.
+    if isinstance(seed, bool) or not isinstance(seed, int) or not 0 <= seed < 2**64:
+        raise ValueError(f"seed: {seed!r} is not a non-negative integer below 2^64")
+    return seed
+
+
 def problem(name, seed=0, **params):
     """A problem's steps as an iterator (icpbench.Step: truth, views)."""
-    return Problem(name, params, seed)
+    return Problem(name, params, _seed(seed))
 
 
 def estimator(name, seed=0, **params):
     """An algorithm to feed by hand: `.step(step)` returns an icpbench.Estimate."""
-    return Estimator(name, params, seed)
+    return Estimator(name, params, _seed(seed))
 
 
 def run(spec, out, jobs=1, force=False, no_retry=False, name="python"):

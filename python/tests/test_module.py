@@ -101,6 +101,15 @@ def test_a_sweep_from_a_dict_resumes(tmp_path):
     assert (again["planned"], again["ok"], again["already_stored"]) == (1, 0, 1)
 
 
+def test_a_bad_seed_raises_value_error():
+    for seed in (-1, 2**64, 1.5, float("nan"), True, "1"):
+        with pytest.raises(ValueError, match="not a non-negative integer"):
+            icpbench.problem("chain", seed=seed)
+        with pytest.raises(ValueError, match="not a non-negative integer"):
+            icpbench.estimator("hc4", seed=seed)
+    assert next(iter(icpbench.problem("chain", seed=2**64 - 1))).index == 0
+
+
 def test_a_bad_spec_raises_value_error(tmp_path):
     spec = _car_spec()
     spec["experiments"][0]["algorithms"] = ["no-such-algorithm"]
