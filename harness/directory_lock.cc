@@ -23,7 +23,8 @@ DirectoryLock::DirectoryLock(const std::string& dir, std::ostream& messages) {
     fd_ = -1;
     if (e != EWOULDBLOCK) ThrowErrno("cannot lock " + path, e);
     throw DirectoryLockedError("output directory " + dir + " is in use by another run or merge: " + path +
-                               " is held by PID " + (holder.empty() ? "?" : holder));
+                               " is held by PID " + (holder.empty() ? "?" : holder) +
+                               ": wait for it to end, or write elsewhere (another --out or OUT_DIR)");
   }
   if (!holder.empty() && holder != std::to_string(getpid()))
     messages << "icpbench: took over stale lock of PID " << holder << " (" << path << ")\n";

@@ -43,6 +43,10 @@ std::pair<int, int> SlurmShard(const EnvironmentLookup& env) {
                                 (min ? "MAX" : "MIN") + " is not");
   std::optional<std::pair<long long, long long>> from_range;
   if (min) {
+    if (*min > *max)
+      throw std::invalid_argument("--shard auto: SLURM_ARRAY_TASK_MIN=" + std::to_string(*min) +
+                                  " is above SLURM_ARRAY_TASK_MAX=" + std::to_string(*max) +
+                                  ": not the environment of a Slurm array task");
     if (*id < *min || *id > *max)
       throw std::invalid_argument("--shard auto: SLURM_ARRAY_TASK_ID=" + std::to_string(*id) +
                                   " is outside [SLURM_ARRAY_TASK_MIN, SLURM_ARRAY_TASK_MAX] = [" +
@@ -50,7 +54,10 @@ std::pair<int, int> SlurmShard(const EnvironmentLookup& env) {
     from_range = {{*id - *min, *max - *min + 1}};
   }
   if (count) {
-    if (*count < 1) throw std::invalid_argument("--shard auto: SLURM_ARRAY_TASK_COUNT=0");
+    if (*count < 1)
+      throw std::invalid_argument(
+          "--shard auto: SLURM_ARRAY_TASK_COUNT=0: an array has at least one task (not the environment "
+          "of a Slurm array task?)");
     if (from_range && from_range->second != *count)
       throw std::invalid_argument(
           "--shard auto: SLURM_ARRAY_TASK_COUNT=" + std::to_string(*count) +
@@ -84,7 +91,8 @@ std::pair<int, int> ParseShard(const std::string& text, const EnvironmentLookup&
     }
   } catch (const std::exception&) {
   }
-  throw std::invalid_argument("--shard " + text + ": expected i/n with 0 <= i < n, or auto");
+  throw std::invalid_argument("--shard " + text +
+                              ": expected i/n with 0 <= i < n (shards count from 0: 0/3, 1/3, 2/3), or auto");
 }
 
 std::pair<int, int> ParseShard(const std::string& text) {
