@@ -159,6 +159,41 @@ std::string LogError(const std::string& text) {
 
 // A UTF-8 byte-order mark at the start is skipped; file content quoted in a
 // message has its control and non-ASCII bytes escaped.
+TEST(MarinaLogTest, ReaderNamesTheLineAndField) {
+  const std::string step = "step,0,0.5,0,0.02,1.5,0.01,100,100\n";
+  const std::string ret = "return,0.3,12.5,0.3,0.015,0,,\n";
+  auto fails_with = [](const std::string& text, const std::string& what) {
+    std::istringstream in(text);
+    try {
+      ReadMarinaLog(in, "drive.csv");
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  fails_with("# nothing\n", "drive.csv: no step rows");
+  fails_with(ret, "drive.csv:1: a return before the first step row");
+  fails_with(step + "stepp,1\n", "drive.csv:2: unknown row kind 'stepp' (step, return)");
+  fails_with("step,0,abc,0,0.02,1.5,0.01,,\n", "drive.csv:1: field 3 (dvl_u): 'abc' is not a finite number");
+  fails_with("step,0,0.5,0,0.02,1.5,0.01\n", "drive.csv:1: a step row takes 8 fields after its kind; this one has 6");
+  fails_with(step + step, "drive.csv:2: field 2 (t): 0 is not after the previous step's 0");
+  fails_with("step,0,0.5,0,-1,1.5,0.01,,\n", "field 5 (dvl_error): -1 must be >= 0");
+  fails_with("step,0,0.5,0,0.02,1.5,0.01,3,\n", "truth_x and truth_y must be both given or both empty");
+  fails_with(step + "return,0.3,12.5,0.3,0.015,2,,\n", "drive.csv:2: field 6 (outlier): '2' must be 0, 1 or empty");
+  fails_with(step + "return,0.3,-1,0.3,0.015,0,,\n", "field 3 (range): -1 must be >= 0");
+  fails_with(step + "return,0.3,1e7,0.3,0.015,0,,\n", "field 3 (range): 1e+07 is beyond +-1e+06");
+  fails_with(step + "return,0.3,12.5,0.3,0.015,0,1,\n", "hit_x and hit_y must be both given or both empty");
+  std::istringstream good("# a log\n" + step + ret + "\nstep,1,0.5,0,0.02,1.5,0.01,,\r\n" + ret);
+  const std::vector<MarinaRecord> r = ReadMarinaLog(good, "ok");
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_TRUE(r[0].has_truth);
+  EXPECT_FALSE(r[1].has_truth);
+  ASSERT_EQ(r[1].returns.size(), 1u);
+  EXPECT_EQ(r[1].returns[0].range, 12.5);
+  EXPECT_TRUE(r[1].returns[0].has_outlier_flag);
+  EXPECT_FALSE(r[1].returns[0].has_hit);
+}
+
 TEST(MarinaInputsTest, LogByteOrderMarkSkippedAndQuotedBytesEscaped) {
   const std::string step = "step,0,0.5,0,0.02,1.5,0.01,10,10\n";
   std::istringstream bom("\xEF\xBB\xBF" + step);
