@@ -35,17 +35,23 @@ Tape::Tape(const ExprGraph& graph, const Constraint& constraint) : range_(constr
   // cleared after use, so that a tape costs its own size only.
   thread_local std::vector<char> marked;
   if (marked.size() <= static_cast<std::size_t>(constraint.root)) marked.resize(constraint.root + 1, 0);
-  std::vector<int> ids = {constraint.root};
+  std::vector<int> ids;
+  struct Unmark {  // also when an allocation throws: a stale mark would drop a node from a later tape
+    std::vector<int>& ids;
+    ~Unmark() {
+      for (int id : ids) marked[id] = 0;
+    }
+  } unmark{ids};
+  ids.push_back(constraint.root);
   marked[constraint.root] = 1;
   for (std::size_t k = 0; k < ids.size(); ++k) {
     const ExprNode& e = graph.node(ids[k]);
     for (int operand : {e.a, e.b})
       if (operand >= 0 && !marked[operand]) {
+        ids.push_back(operand);  // before the mark: a throwing push leaves no mark behind
         marked[operand] = 1;
-        ids.push_back(operand);
       }
   }
-  for (int id : ids) marked[id] = 0;
   std::sort(ids.begin(), ids.end());
   auto slot_of = [&ids](int id) {
     return static_cast<int>(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin());
