@@ -1,5 +1,6 @@
 #include "harness/map_command.h"
 
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -35,13 +36,28 @@ LandmarkMap MapOfSteps(const std::vector<StepRecord>& steps, const std::string& 
   return map;
 }
 
+namespace {
+// Whether key contains term, a number in the term ending where one in the
+// key does: '|seed=1' and 'w=2' do not match seed=10 or w=20.
+bool ContainsTerm(const std::string& key, const std::string& term) {
+  const bool ends_in_digit = !term.empty() && std::isdigit(static_cast<unsigned char>(term.back()));
+  for (std::size_t at = key.find(term); at != std::string::npos; at = key.find(term, at + 1)) {
+    const std::size_t next = at + term.size();
+    if (!ends_in_digit || next == key.size() ||
+        !(std::isdigit(static_cast<unsigned char>(key[next])) || key[next] == '.' || key[next] == 'e'))
+      return true;
+  }
+  return false;
+}
+}  // namespace
+
 LandmarkMap MapOfStoredRun(const std::string& dir, const std::vector<std::string>& terms,
                            std::string* run_key, std::vector<int>* left_out) {
   const auto store = ResultsStore::OpenReadOnly(StorePath(dir));
   std::vector<std::string> matches;
   for (const std::string& key : store->RunKeys()) {
     bool all = true;
-    for (const std::string& t : terms) all = all && key.find(t) != std::string::npos;
+    for (const std::string& t : terms) all = all && ContainsTerm(key, t);
     if (all) matches.push_back(key);
   }
   if (matches.size() != 1) {

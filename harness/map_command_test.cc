@@ -54,7 +54,7 @@ TEST(MapCommandTest, TheRunTheTermsSingleOut) {
   fs::create_directories(dir);
   {
     ResultsStore store(StorePath(dir.string()));
-    for (const char* w : {"2", "4"})
+    for (const char* w : {"2", "4", "20"})
       store.Insert(ExecuteRun(RunSpec{"digo", {}, "visual-landmarks", {{"w", w}, {"steps", "30"}}, 1, 0}));
   }
   std::string key;
@@ -67,8 +67,13 @@ TEST(MapCommandTest, TheRunTheTermsSingleOut) {
     MapOfStoredRun(dir.string(), {"digo"}, &key, &left_out);
     ADD_FAILURE() << "two runs match";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("2 runs"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("3 runs"), std::string::npos) << e.what();
   }
+  // A number in a term ends where the key's does: w=2 is not w=20.
+  MapOfStoredRun(dir.string(), {"digo", "w=2"}, &key, &left_out);
+  EXPECT_NE(key.find("w=2}"), std::string::npos) << key;
+  MapOfStoredRun(dir.string(), {"w=20", "|seed=1"}, &key, &left_out);
+  EXPECT_NE(key.find("w=20"), std::string::npos) << key;
   EXPECT_THROW(MapOfStoredRun(dir.string(), {"lic"}, &key, &left_out), std::invalid_argument);
   fs::remove_all(dir);
 }
