@@ -2,10 +2,10 @@
 
 #include <unistd.h>
 
-#include <array>
-#include <cstdio>
 #include <ctime>
 #include <fstream>
+
+#include "build_revision.h"
 
 namespace icp {
 
@@ -15,20 +15,9 @@ std::string Trim(std::string s) {
   return s;
 }
 
-// The revision of the source tree the binary was built from, asked of git
-// at run time (a configure-time value goes stale with new commits).
-std::string GitRevision() {
-  const std::string command =
-      "git -C '" ICPBENCH_SOURCE_DIR "' describe --always --dirty --abbrev=12 2>/dev/null";
-  std::string out;
-  if (FILE* pipe = popen(command.c_str(), "r")) {
-    std::array<char, 128> buf;
-    while (fgets(buf.data(), buf.size(), pipe)) out += buf.data();
-    pclose(pipe);
-  }
-  out = Trim(out);
-  return out.empty() ? "unknown" : out;
-}
+// The revision of the source tree the binary was built from, written by
+// the build (cmake/build_revision.cmake): later commits do not change it.
+std::string GitRevision() { return ICPBENCH_BUILD_REVISION; }
 
 std::string CpuModel() {
   std::ifstream in("/proc/cpuinfo");
