@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 
 #include "harness/environment_error.h"
@@ -36,6 +37,17 @@ int TryCreateFileIn(const std::string& dir) {
 
 void CheckWritableDirectory(const std::string& dir, const std::string& elsewhere) {
   std::error_code ec;
+  // The nearest part of the path that exists must be a directory.
+  for (std::filesystem::path p = dir; !p.empty(); p = p.parent_path()) {
+    const auto status = std::filesystem::status(p, ec);
+    if (!std::filesystem::exists(status)) {
+      if (p == p.parent_path()) break;
+      continue;
+    }
+    if (!std::filesystem::is_directory(status))
+      throw std::invalid_argument(dir + ": " + p.string() + " is a file, not a directory (" + elsewhere + ")");
+    break;
+  }
   if (!std::filesystem::is_directory(dir, ec)) return;
   // Any errno: a directory that takes no files (/proc says ENOENT) is not
   // one to write figures or a store in, whatever the reason.

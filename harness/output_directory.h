@@ -15,7 +15,8 @@ namespace icp {
 // EnvironmentError "cannot write in DIR: REASON (ADVICE)", the advice ending
 // with `elsewhere` (how this command writes elsewhere, e.g. "choose another
 // --out"). A dir that does not exist is left alone: creating it reports its
-// own error.
+// own error; but a dir that is a file, or lies under one, can never be made:
+// std::invalid_argument "DIR: FILE is a file, not a directory (ELSEWHERE)".
 void CheckWritableDirectory(const std::string& dir, const std::string& elsewhere);
 
 }  // namespace icp

@@ -58,6 +58,7 @@ PaperOutput BuildPaper(const std::string& dir) {
   RequireLatex();                                                  // before drawing anything
   const std::string paper_dir = dir + "/paper";
   const std::string elsewhere = PaperElsewhere(dir);
+  CheckWritableDirectory(paper_dir + "/generated", elsewhere);  // not under a file
   std::error_code error;
   std::filesystem::create_directories(paper_dir + "/generated", error);
   if (error) ThrowErrno("cannot create " + paper_dir, error.value(), elsewhere);

@@ -1,12 +1,14 @@
 // The commands that write outside a sweep (plot, merge, paper) into a place
 // they may not write: permission denied is the environment (exit code 3,
-// docs/cli.md#exit-codes), with advice that names the command's own way to
-// write elsewhere.
+// docs/cli.md#exit-codes), a path that is a file bad input (exit 2), each
+// with advice that names the command's own way to write elsewhere.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "tests/cli_helpers.h"
 
@@ -74,6 +76,25 @@ TEST_F(CliOutputsTest, MergeIntoAnUnwritableDirectoryIsTheEnvironment) {
   const Result r = Icpbench("merge " + kUnwritable + "/icpbench_merged " + dir_ + "/no_store");
   EXPECT_EQ(r.exit_code, 2) << r.out;
   EXPECT_NE(r.out.find("no_store"), std::string::npos) << r.out;
+}
+
+// An output path that is a file, or under one, can never be a directory:
+// bad input (exit 2) that names the file and how to write elsewhere, not
+// the library's "filesystem error: cannot create directories".
+TEST_F(CliOutputsTest, AnOutputPathThatIsAFileIsBadInput) {
+  ASSERT_EQ(run_.exit_code, 0) << run_.out;
+  const std::string file = WriteFile("cli_outputs_a_file", "not a directory\n");
+  const std::string spec = WriteFile("cli_outputs_file.yaml", "algorithms: [hc4]\nproblems: [chain]\n");
+  for (const auto& [args, advice] : std::vector<std::pair<std::string, std::string>>{
+           {"plot " + dir_ + "/store --out " + file, "another --out"},
+           {"plot " + dir_ + "/store --out " + file + "/figures", "another --out"},
+           {"merge " + file + " " + dir_ + "/store", "another OUT_DIR"},
+           {"run " + spec + " --out " + file + "/sub --jobs 1", "another --out"}}) {
+    const Result r = Icpbench(args);
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.out;
+    EXPECT_NE(r.out.find(file + " is a file, not a directory"), std::string::npos) << args << ": " << r.out;
+    EXPECT_NE(r.out.find(advice), std::string::npos) << args << ": " << r.out;
+  }
 }
 
 // paper writes DIR/paper: DIR read-only (a user who may not write it; root
