@@ -275,10 +275,12 @@ int main(int argc, char** argv) {
       if (map_out.empty()) {
         icp::WriteLandmarkMap(map, std::cout, "from run " + key);
       } else {
+        errno = 0;
         std::ofstream out(map_out);
+        if (!out) icp::ThrowErrno("cannot write the map " + map_out, errno != 0 ? errno : EIO, "give another --out");
         icp::WriteLandmarkMap(map, out, "from run " + key);
         out.close();
-        if (!out) throw std::runtime_error(map_out + ": cannot write the map");
+        if (!out) icp::ThrowErrno("cannot write the map " + map_out, errno != 0 ? errno : EIO, "give another --out");
         std::cerr << "icpbench: " << map.size() << " landmarks in " << map_out << "\n";
       }
     } else if (*report_cmd) {
