@@ -4,6 +4,7 @@
 #include "harness/results_store.h"
 
 #include <sqlite3.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
@@ -70,7 +71,16 @@ sqlite3* OpenExistingReadOnly(const std::string& path) {
   if (std::filesystem::file_size(path, ec) == 0) {
     throw StoreError("results store '" + path + "': empty file (0 bytes), not a results store");
   }
-  if (std::filesystem::exists(path + "-wal", ec)) return Open(path, SQLITE_OPEN_READONLY);
+  if (std::filesystem::exists(path + "-wal", ec)) {
+    // SQLite reads a write-ahead log through its index (-shm), which it must
+    // create when a killed sweep left none: impossible in a read-only place.
+    const std::string dir = std::filesystem::path(path).parent_path().string();
+    if (!std::filesystem::exists(path + "-shm", ec) && access(dir.empty() ? "." : dir.c_str(), W_OK) != 0)
+      throw EnvironmentError("results store '" + path + "': a sweep that did not finish left its write-ahead log (" +
+                             path + "-wal) without the index SQLite needs to read it, and this directory is "
+                             "read-only: copy the directory somewhere writable and read it there");
+    return Open(path, SQLITE_OPEN_READONLY);
+  }
   std::string uri = "file:";
   for (char c : std::filesystem::absolute(path, ec).string()) {
     // Percent-encode what a URI path cannot hold literally.
