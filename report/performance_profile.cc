@@ -128,9 +128,11 @@ TextTable ProfileTable(const std::vector<RunRecord>& runs, ProfileMetric metric)
       "configuration's " +
       std::string(time ? "mean solve time per CSP" : "mean x-y area") +
       " is at most τ times the least of any configuration there (the median over its runs "
-      "there when it has several). solved counts the instances where it has an ok run; a "
-      "failed, timed-out or skipped run, or an instance it never ran, counts as not solved, so "
-      "ρ tends to solved / instances, not to 1." +
+      "there when it has several). solved counts the instances where it has an ok run with a "
+      "defined " +
+      std::string(time ? "time" : "area (not every box empty)") +
+      "; a failed, timed-out or skipped run, or an instance it never ran, counts as not solved, "
+      "so ρ tends to solved / instances, not to 1." +
       (time ? std::string()
             : " The area says how tight an estimate is, not whether it holds the truth (the "
               "consistency column of the runs table does), and a particle filter's is the box "
