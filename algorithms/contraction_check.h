@@ -11,10 +11,6 @@
 
 namespace icp {
 
-// The first component of box with a NaN bound, or -1. Asked before
-// emptiness: a NaN bound reads as an empty component (!(lo <= hi)).
-int FirstNaNComponent(const Box& box);
-
 // Why box cannot be what a contractor made of initial (names: the
 // components'): a NaN bound (which would read as empty, !(lo <= hi)),
 // another number of components, or a component outside initial's; "" when

@@ -275,12 +275,16 @@ int main(int argc, char** argv) {
       if (map_out.empty()) {
         icp::WriteLandmarkMap(map, std::cout, "from run " + key);
       } else {
+        // Opening or writing: the errno says why (EIO when none is set).
+        auto cannot_write = [&] {
+          icp::ThrowErrno("cannot write the map " + map_out, errno != 0 ? errno : EIO, "give another --out");
+        };
         errno = 0;
         std::ofstream out(map_out);
-        if (!out) icp::ThrowErrno("cannot write the map " + map_out, errno != 0 ? errno : EIO, "give another --out");
+        if (!out) cannot_write();
         icp::WriteLandmarkMap(map, out, "from run " + key);
         out.close();
-        if (!out) icp::ThrowErrno("cannot write the map " + map_out, errno != 0 ? errno : EIO, "give another --out");
+        if (!out) cannot_write();
         std::cerr << "icpbench: " << map.size() << " landmarks in " << map_out << "\n";
       }
     } else if (*report_cmd) {

@@ -1,6 +1,7 @@
 #include "core/box.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace icp {
 
@@ -38,6 +39,16 @@ Box Intersect(const Box& a, const Box& b) {
   for (std::size_t d = 0; d < a.size(); ++d) out[d] = Intersect(a[d], b[d]);
   if (out.IsEmpty()) out.SetEmpty();
   return out;
+}
+
+int FirstNaNComponent(const Box& box) {
+  for (std::size_t i = 0; i < box.size(); ++i)
+    if (std::isnan(box[i].lo()) || std::isnan(box[i].hi())) return static_cast<int>(i);
+  return -1;
+}
+
+std::string ComponentName(const std::vector<std::string>& names, std::size_t i) {
+  return i < names.size() ? names[i] : "component " + std::to_string(i);
 }
 
 }  // namespace icp

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <initializer_list>
+#include <string>
 #include <vector>
 
 #include "core/interval.h"
@@ -48,6 +49,12 @@ class Box {
 Box Hull(const Box& a, const Box& b);
 // Component by component; empty in every component when some is.
 Box Intersect(const Box& a, const Box& b);
+// The first component of box with a NaN bound, or -1. Asked before
+// emptiness: a NaN bound reads as an empty component (!(lo <= hi)), which a
+// result checked only for emptiness would pass as "no solution".
+int FirstNaNComponent(const Box& box);
+// Component i's name in messages: names[i], or "component i" past them.
+std::string ComponentName(const std::vector<std::string>& names, std::size_t i);
 
 }  // namespace icp
 

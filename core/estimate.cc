@@ -80,20 +80,6 @@ double PavingEstimate::Area(int x, int y) const {
   return area;
 }
 
-namespace {
-// Component i's name, or its index past the names given.
-std::string ComponentName(const std::vector<std::string>& names, std::size_t i) {
-  return i < names.size() ? names[i] : "component " + std::to_string(i);
-}
-
-// The first component of box with a NaN bound, or box.size().
-std::size_t FirstNaN(const Box& box) {
-  for (std::size_t i = 0; i < box.size(); ++i)
-    if (std::isnan(box[i].lo()) || std::isnan(box[i].hi())) return i;
-  return box.size();
-}
-}  // namespace
-
 std::string PavingEstimate::Malformed(const std::vector<std::string>& names) const {
   for (const auto& [list, kind] : {std::pair{&inner_, "inner"}, std::pair{&boundary_, "boundary"}})
     for (std::size_t k = 0; k < list->size(); ++k) {
@@ -101,7 +87,7 @@ std::string PavingEstimate::Malformed(const std::vector<std::string>& names) con
       const std::string which = std::string("the paving's ") + kind + " box " + std::to_string(k);
       if (b.size() != dimension_)
         return which + " has " + std::to_string(b.size()) + " components, not " + std::to_string(dimension_);
-      if (const std::size_t c = FirstNaN(b); c < b.size())
+      if (const int c = FirstNaNComponent(b); c >= 0)
         return which + ": " + ComponentName(names, c) + " has a NaN bound";
     }
   return "";
@@ -199,7 +185,7 @@ std::string ParticleEstimate::Malformed(const std::vector<std::string>& names) c
       if (std::isnan(particles_.at<double>(i, c)))
         return "particle " + std::to_string(i) + ": " + ComponentName(names, c) + " is NaN";
   }
-  if (std::size_t c = region_ ? FirstNaN(*region_) : 0; region_ && c < region_->size())
+  if (const int c = region_ ? FirstNaNComponent(*region_) : -1; c >= 0)
     return "the region: " + ComponentName(names, c) + " has a NaN bound";
   for (std::size_t c = 0; c < centre_.size(); ++c)
     if (std::isnan(centre_[c])) return "the centre: " + ComponentName(names, c) + " is NaN";

@@ -7,7 +7,6 @@
 #include <optional>
 #include <string>
 
-#include "algorithms/contraction_check.h"
 #include "core/random.h"
 
 namespace icp {

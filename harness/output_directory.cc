@@ -59,4 +59,11 @@ void CheckWritableDirectory(const std::string& dir, const std::string& elsewhere
                            ")");
 }
 
+void CreateOutputDirectory(const std::string& dir, const std::string& elsewhere) {
+  CheckWritableDirectory(dir, elsewhere);
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) ThrowErrno("cannot create " + dir, ec.value(), elsewhere);
+}
+
 }  // namespace icp

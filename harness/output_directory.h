@@ -19,6 +19,11 @@ namespace icp {
 // std::invalid_argument "DIR: FILE is a file, not a directory (ELSEWHERE)".
 void CheckWritableDirectory(const std::string& dir, const std::string& elsewhere);
 
+// Creates dir and its parents for a command's output, checked as above
+// first; a failure to create it is "cannot create DIR: REASON (ADVICE)",
+// EnvironmentError where the environment is the cause.
+void CreateOutputDirectory(const std::string& dir, const std::string& elsewhere);
+
 }  // namespace icp
 
 #endif  // ICPBENCH_HARNESS_OUTPUT_DIRECTORY_H_

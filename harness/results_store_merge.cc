@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "harness/directory_lock.h"
-#include "harness/environment_error.h"
+#include "harness/output_directory.h"
 #include "harness/results_store_internal.h"
 
 namespace icp {
@@ -215,9 +215,7 @@ MergeSummary MergeStores(const std::string& out_dir, const std::vector<std::stri
   }
 
   // Write a temporary store beside OUT and rename it over OUT at the end.
-  std::error_code created;
-  fs::create_directories(out_dir, created);
-  if (created) ThrowErrno("cannot create " + out_dir, created.value(), "choose another OUT_DIR");
+  CreateOutputDirectory(out_dir, "choose another OUT_DIR");
   if (!lock) take_lock();
   const std::string tmp_path =
       out_path + std::string(kMergeFilePrefix) + std::to_string(static_cast<long long>(getpid())) + ".tmp";

@@ -19,10 +19,7 @@ volatile std::sig_atomic_t g_stop_signal = 0;
 extern "C" void OnStopSignal(int sig) { g_stop_signal = sig; }
 
 std::string CreatedDirectory(const std::string& dir) {
-  CheckWritableDirectory(dir, kChooseAnotherOut);  // not a file, nor under one
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) ThrowErrno("cannot create the output directory " + dir, ec.value());
+  CreateOutputDirectory(dir, kChooseAnotherOut);
   return dir;
 }
 

@@ -58,12 +58,8 @@ PaperOutput BuildPaper(const std::string& dir) {
   RequireLatex();                                                  // before drawing anything
   const std::string paper_dir = dir + "/paper";
   const std::string elsewhere = PaperElsewhere(dir);
-  CheckWritableDirectory(paper_dir + "/generated", elsewhere);  // not under a file
-  std::error_code error;
-  std::filesystem::create_directories(paper_dir + "/generated", error);
-  if (error) ThrowErrno("cannot create " + paper_dir, error.value(), elsewhere);
-  CheckWritableDirectory(paper_dir, elsewhere);  // one left by another user
-  CheckWritableDirectory(paper_dir + "/generated", elsewhere);
+  CreateOutputDirectory(paper_dir + "/generated", elsewhere);  // checks it, if it was there
+  CheckWritableDirectory(paper_dir, elsewhere);                 // one left by another user
   // The figures as `plot` draws them (every paper's, then the generic ones).
   const PlotOutput plots = PlotRuns(runs, paper_dir + "/figures", PaperFigures);
   for (const auto& [path, text] :

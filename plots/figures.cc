@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "harness/environment_error.h"
+#include "harness/output_directory.h"
 #include "plots/figures_internal.h"
 #include "report/report.h"
 
@@ -44,9 +45,7 @@ void RemoveSkippedFigures(const PlotOutput& out, const std::string& out_dir) {
 
 PlotOutput PlotRuns(const std::vector<RunRecord>& runs, const std::string& out_dir,
                     const FigureMaker& more) {
-  std::error_code error;
-  std::filesystem::create_directories(out_dir, error);
-  if (error) ThrowErrno("cannot create " + out_dir, error.value(), "choose another --out");
+  CreateOutputDirectory(out_dir, kChooseAnotherOut);
   PlotOutput out;
   if (more) more(runs, out_dir, &out);
   const std::vector<GroupSummary> groups = SummariseGroups(runs);

@@ -157,8 +157,6 @@ std::string LogError(const std::string& text) {
   return "(no error)";
 }
 
-// A UTF-8 byte-order mark at the start is skipped; file content quoted in a
-// message has its control and non-ASCII bytes escaped.
 TEST(MarinaLogTest, ReaderNamesTheLineAndField) {
   const std::string step = "step,0,0.5,0,0.02,1.5,0.01,100,100\n";
   const std::string ret = "return,0.3,12.5,0.3,0.015,0,,\n";
@@ -194,6 +192,8 @@ TEST(MarinaLogTest, ReaderNamesTheLineAndField) {
   EXPECT_FALSE(r[1].returns[0].has_hit);
 }
 
+// A UTF-8 byte-order mark at the start is skipped; file content quoted in a
+// message has its control and non-ASCII bytes escaped.
 TEST(MarinaInputsTest, LogByteOrderMarkSkippedAndQuotedBytesEscaped) {
   const std::string step = "step,0,0.5,0,0.02,1.5,0.01,10,10\n";
   std::istringstream bom("\xEF\xBB\xBF" + step);
