@@ -88,7 +88,10 @@ MpiSweepResult RunMpiSweep(const std::string& spec_file, const RunnerOptions& op
   BroadcastSpec(session.rank(), &text, &error);
   MpiSweepResult result;
   if (session.rank() != 0) {
-    if (!error.empty()) return {false, {}, 2};  // rank 0 says why
+    // Rank 0 says why and exits 2; this rank ends quietly, so that mpiexec,
+    // which ends the job at the first rank that fails, does not kill rank 0
+    // before its message is out.
+    if (!error.empty()) return {false, {}, 0};
     std::string spec_error;
     try {
       spec = ParseSpec(text, spec_file);
