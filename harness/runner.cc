@@ -38,6 +38,12 @@ TakenStep TakeStep(Estimator& estimator, View needs, const Step& step, const Sto
   if (!result.estimate) throw InvalidResult("no estimate");
   if (std::string why = InvalidEstimateReason(step.views, *result.estimate); !why.empty())
     throw InvalidResult(why);
+  // The store keeps one value per name: the annotation's would replace it.
+  for (const Property& p : result.properties)
+    for (const Property& a : step.annotations)
+      if (p.name == a.name)
+        throw InvalidResult("the estimator's property '" + p.name +
+                            "' has the name of one of the problem's annotations: rename it");
   taken.record = MeasureStep(step, *result.estimate);
   taken.record.status = std::string(ToString(result.summary.status));
   taken.record.solve_time_s = result.solve_time_s >= 0 ? result.solve_time_s : solve_time;

@@ -161,7 +161,7 @@ class Reader {
         const double d = exact.lo();
         if (d >= 0 && d <= 9007199254740992.0 && d == std::floor(d)) return static_cast<std::uint64_t>(d);
       }
-      Fail(n, key, "'" + text + "' is not a non-negative integer");
+      Fail(n, key, "'" + text + "' is not a non-negative integer below 2^64");
     };
     if (seeds) {
       std::vector<std::uint64_t> out;

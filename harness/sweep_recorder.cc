@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <map>
+#include <mutex>
 #include <ostream>
 #include <set>
 
@@ -25,27 +26,38 @@ std::string CreatedDirectory(const std::string& dir) {
 
 }  // namespace
 
+namespace {
+// The handlers before the first of the living StopSignals, and how many live.
+std::mutex g_signals_mutex;
+int g_signals_users = 0;
+struct sigaction g_old_int {}, g_old_term {}, g_old_hup {}, g_old_pipe {};
+}  // namespace
+
 StopSignals::StopSignals() {
+  std::lock_guard<std::mutex> lock(g_signals_mutex);
+  if (g_signals_users++ > 0) return;
   g_stop_signal = 0;
   struct sigaction sa {};
   sa.sa_handler = OnStopSignal;
   sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, &old_int_);
-  sigaction(SIGTERM, &sa, &old_term_);
-  sigaction(SIGHUP, &sa, &old_hup_);  // the terminal closed: stop as for Ctrl-C
+  sigaction(SIGINT, &sa, &g_old_int);
+  sigaction(SIGTERM, &sa, &g_old_term);
+  sigaction(SIGHUP, &sa, &g_old_hup);  // the terminal closed: stop as for Ctrl-C
   // A closed stderr (a pipe to `head`, a dropped ssh) must not kill the
   // sweep mid-store: writes to it fail instead, and the runs go on.
   struct sigaction ignore {};
   ignore.sa_handler = SIG_IGN;
   sigemptyset(&ignore.sa_mask);
-  sigaction(SIGPIPE, &ignore, &old_pipe_);
+  sigaction(SIGPIPE, &ignore, &g_old_pipe);
 }
 
 StopSignals::~StopSignals() {
-  sigaction(SIGINT, &old_int_, nullptr);
-  sigaction(SIGTERM, &old_term_, nullptr);
-  sigaction(SIGHUP, &old_hup_, nullptr);
-  sigaction(SIGPIPE, &old_pipe_, nullptr);
+  std::lock_guard<std::mutex> lock(g_signals_mutex);
+  if (--g_signals_users > 0) return;
+  sigaction(SIGINT, &g_old_int, nullptr);
+  sigaction(SIGTERM, &g_old_term, nullptr);
+  sigaction(SIGHUP, &g_old_hup, nullptr);
+  sigaction(SIGPIPE, &g_old_pipe, nullptr);
 }
 
 int StopSignals::Caught() { return g_stop_signal; }

@@ -23,7 +23,8 @@ namespace icp {
 
 // SIGINT/SIGTERM/SIGHUP are caught while one lives (Caught() says which
 // came, 0 while none), and SIGPIPE ignored; the previous handlers come back
-// after it.
+// after the last one (sweeps overlapping in threads of one process, as
+// icpbench.run can, share the handlers: a signal stops them all).
 class StopSignals {
  public:
   StopSignals();
@@ -35,9 +36,6 @@ class StopSignals {
   // exit stops those of its daemon threads); a sweep that starts later
   // begins with none caught.
   static void Request(int signal);
-
- private:
-  struct sigaction old_int_ {}, old_term_ {}, old_hup_ {}, old_pipe_ {};
 };
 
 class SweepRecorder {

@@ -6,9 +6,7 @@
 #include <pybind11/stl.h>
 
 #include <atomic>
-#include <chrono>
 #include <filesystem>
-#include <future>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -34,8 +32,8 @@ ParamMap ToParamMap(const py::dict& params) {
                             py::str(value.attr("dtype").attr("kind")).cast<std::string>() == "b";
     if (py::isinstance<py::bool_>(value) || numpy_bool)
       map[name] = PyObject_IsTrue(value.ptr()) == 1 ? "true" : "false";
-    else if (py::isinstance<py::float_>(value))
-      map[name] = py::str(py::module_::import("builtins").attr("repr")(value));  // round-trips
+    else if (py::isinstance<py::float_>(value))  // a float's repr round-trips (NumPy 2's
+      map[name] = py::str(py::repr(py::float_(PyFloat_AsDouble(value.ptr()))));  // says np.float64(...))
     else
       map[name] = py::str(value);
   }
@@ -49,7 +47,9 @@ namespace {
 // contractor is contracted again, as `solve --repeat` does). An entry holds
 // the text it was built from and serves only that text: a file replaced
 // with the same size and time (cp -p, rsync) is not answered from the old
-// one. A few entries at most.
+// one. A few entries at most. Texts (solve(text) writes each to a
+// temporary file) share the key "<minibex text>", one entry per algorithm
+// and parameters, so a loop over one text parses it once.
 struct Prepared {
   std::string text;
   std::shared_ptr<const ConstraintSystem> system;
@@ -62,11 +62,11 @@ std::map<std::string, Prepared>& PreparedCache() {
 // `solve`: the JSON the command line prints (solve --format json) and the
 // variables' names in order.
 py::tuple SolveJson(const std::string& file, const std::string& algorithm, const py::dict& params,
-                    int repeat, double timeout_s) {
+                    int repeat, double timeout_s, bool is_text) {
   SolveOptions options;
   options.file = file;
   std::string text = ReadMinibexFile(file);
-  std::string key = file + "|" + algorithm;
+  std::string key = (is_text ? "<minibex text>" : file) + "|" + algorithm;
   for (const auto& [name, value] : ToParamMap(params)) key += "|" + name + "=" + value;
   // Taken out of the cache while in use (the GIL, held here, orders the
   // cache's changes): a contractor serves one contraction at a time, so a
@@ -85,36 +85,9 @@ py::tuple SolveJson(const std::string& file, const std::string& algorithm, const
   options.format = "json";
   options.repeat = repeat;
   options.timeout_s = timeout_s;
-  // The solve runs in its own thread while this one, every 50 ms, lets
-  // Python see a Ctrl-C (its handler only flags the signal; the check needs
-  // the GIL): the solve is then cancelled and KeyboardInterrupt raised. A
-  // thread other than the main one sees no signal, as in Python itself.
   std::atomic<bool> cancel{false};
   options.cancel = &cancel;
-  SolveResult result;
-  bool interrupted = false;
-  bool exited = false;
-  {
-    WithoutGil release;
-    std::future<SolveResult> solving = std::async(std::launch::async, [&options] { return Solve(options); });
-    while (solving.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
-      if (Exiting()) {  // the interpreter's exit waits for this call
-        exited = cancel = true;
-        continue;
-      }
-      py::gil_scoped_acquire gil;
-      if (!interrupted && PyErr_CheckSignals() != 0) {
-        interrupted = true;
-        cancel = true;
-      }
-    }
-    if (!interrupted && !exited) result = solving.get();
-  }
-  if (interrupted) throw py::error_already_set();
-  if (exited) {
-    PyErr_SetString(PyExc_RuntimeError, "icpbench: solve cancelled, the interpreter is exiting");
-    throw py::error_already_set();
-  }
+  const SolveResult result = RunInterruptibly(cancel, "solve", [&options] { return Solve(options); });
   prepared.contractor = result.contractor;
   auto& cache = PreparedCache();
   if (cache.size() >= 16) cache.clear();
@@ -161,7 +134,7 @@ PYBIND11_MODULE(_icpbench, m) {
   m.def("list_json", &icp::ListPlugins, py::arg("what"), py::arg("format") = "json",
         "The registry `what` (algorithms or problems) as `icpbench list WHAT --format json`.");
   m.def("solve_json", &SolveJson, py::arg("file"), py::arg("algorithm"), py::arg("params"),
-        py::arg("repeat"), py::arg("timeout_s"),
+        py::arg("repeat"), py::arg("timeout_s"), py::arg("is_text") = false,
         "(solve --format json text, variable names) for a Minibex file.");
   BindExit(m);
   BindViews(m);

@@ -17,6 +17,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "algorithms/registry.h"
@@ -160,11 +161,30 @@ class PythonEstimator : public Estimator {
       throw py::value_error(std::string("step() returned ") + e.what());
     }
   }
+  // A property's value as the store keeps it: NumPy's integers and bools
+  // (a count from np.sum) as integers, its floats as reals; anything else
+  // but text is refused rather than stored as its str().
   static Property ToProperty(const std::string& name, const py::handle& value) {
-    if (py::isinstance<py::bool_>(value) || py::isinstance<py::int_>(value))
-      return {name, value.cast<std::int64_t>()};
-    if (py::isinstance<py::float_>(value)) return {name, value.cast<double>()};
-    return {name, std::string(py::str(value))};
+    const std::string kind =
+        py::hasattr(value, "dtype") ? py::str(value.attr("dtype").attr("kind")).cast<std::string>() : "";
+    if (py::isinstance<py::bool_>(value) || py::isinstance<py::int_>(value) ||
+        (kind.size() == 1 && std::string_view("biu").find(kind[0]) != std::string_view::npos &&
+         py::isinstance(value, py::module_::import("numpy").attr("generic"))))
+    {
+      const py::int_ integer(py::reinterpret_borrow<py::object>(value));
+      int overflow = 0;
+      const long long v = PyLong_AsLongLongAndOverflow(integer.ptr(), &overflow);
+      if (overflow != 0)
+        throw py::cast_error("property '" + name + "' is " + std::string(py::str(py::object(integer))) +
+                             ": beyond 64 bits");
+      return {name, static_cast<std::int64_t>(v)};
+    }
+    if (py::isinstance<py::float_>(value) ||
+        (kind == "f" && py::isinstance(value, py::module_::import("numpy").attr("generic"))))
+      return {name, PyFloat_AsDouble(value.ptr())};
+    if (py::isinstance<py::str>(value)) return {name, value.cast<std::string>()};
+    throw py::cast_error("property '" + name + "' is " + std::string(py::str(py::repr(value))) +
+                         " of type " + std::string(py::str(value.get_type().attr("__name__"))));
   }
 
   py::object instance_;
@@ -260,6 +280,8 @@ void Register(const std::string& name, py::object factory, const std::string& cl
 }
 
 }  // namespace
+
+bool IsPythonAlgorithm(const std::string& name) { return Registered().count(name) > 0; }
 
 void BindAlgorithms(py::module_& m) {
   py::class_<ParamInfo>(m, "ParamInfo")

@@ -5,9 +5,11 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <atomic>
 #include <chrono>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <variant>
 #include <vector>
@@ -53,15 +55,27 @@ py::array_t<T> MatArray(const cv::Mat& mat) {
   return out;
 }
 
-struct PyStep {
-  std::shared_ptr<const Step> step;
+// Which Problem object a step came from: an estimator follows one stream
+// of steps, as a run does.
+struct Stream {
+  std::string problem;
+  std::uint64_t seed = 0;
 };
 
+struct PyStep {
+  std::shared_ptr<const Step> step;
+  std::shared_ptr<const Stream> stream;
+};
+
+// Python threads may share one Problem or Estimator: with the GIL released
+// while they compute, a mutex makes their calls take turns.
 class PyProblem {
  public:
   PyProblem(const std::string& name, const py::dict& params, std::uint64_t seed) {
     const ProblemInfo& info = FindProblem(name);
     params_ = info.resolve(info.name, ToParamMap(params));
+    stream_ = std::make_shared<const Stream>(Stream{info.name, seed});
+    WithoutGil release;  // a long drive takes seconds to simulate
     problem_ = info.make(params_, seed);
   }
   std::string Name() const { return std::string(problem_->Name()); }
@@ -72,15 +86,18 @@ class PyProblem {
     bool more;
     {
       WithoutGil release;
+      std::lock_guard<std::mutex> turn(busy_);
       more = problem_->Next(step.get());
     }
     if (!more) throw py::stop_iteration();
-    return PyStep{std::move(step)};
+    return PyStep{std::move(step), stream_};
   }
 
  private:
   ParamMap params_;
+  std::shared_ptr<const Stream> stream_;
   std::unique_ptr<Problem> problem_;
+  std::mutex busy_;
 };
 
 // One step's result: the estimate, the estimator's report and the step's
@@ -105,23 +122,48 @@ class PyEstimator {
     if (!(timeout_s > 0))  // as solve(timeout=...) and `solve --timeout`
       throw py::value_error("timeout_s = " + FormatDouble(timeout_s) +
                             ": must be a number of seconds > 0 (inf: no limit)");
-    PyEstimate out;
+    // The estimator carries state from step to step (a window, a filter's
+    // cloud): another problem's or seed's step would be read as the next.
+    if (stream_ && stream_ != s.stream)
+      throw py::value_error("this estimator has stepped problem '" + stream_->problem + "' (seed " +
+                            std::to_string(stream_->seed) + "); this step is of '" + s.stream->problem +
+                            "' (seed " + std::to_string(s.stream->seed) +
+                            ") from another icpbench.problem(): make a new estimator for it");
+    stream_ = s.stream;
+    std::atomic<bool> cancel{false};
+    auto step = [this, &s, timeout_s, &cancel] {
+      std::lock_guard<std::mutex> turn(busy_);
+      StopCondition stop = timeout_s < std::numeric_limits<double>::infinity()
+                               ? StopCondition::After(std::chrono::duration<double>(timeout_s))
+                               : StopCondition();
+      stop.WithCancelFlag(&cancel);
+      PyEstimate out;
+      TakenStep taken = TakeStep(*estimator_, info_->needs, *s.step, stop);
+      judges_.Judge(*s.step, &taken);  // the properties icpbench run stores
+      taken.result.solve_time_s = taken.record.solve_time_s;
+      out.result = std::make_shared<StepResult>(std::move(taken.result));
+      out.record = std::move(taken.record);
+      out.space = s.step->views.space;
+      return out;
+    };
+    // A Python estimator's code sees Ctrl-C itself; a C++ one's step runs
+    // in a thread of its own while this one watches for it.
+    if (!IsPythonAlgorithm(info_->name)) {
+      if (!worker_) worker_ = std::make_unique<Worker>();
+      return RunInterruptibly(cancel, "the step", step, worker_.get());
+    }
     WithoutGil release;
-    StopCondition stop = timeout_s < std::numeric_limits<double>::infinity()
-                             ? StopCondition::After(std::chrono::duration<double>(timeout_s))
-                             : StopCondition();
-    stop.WithCancelFlag(&Exiting());
-    TakenStep taken = TakeStep(*estimator_, info_->needs, *s.step, stop);
-    judges_.Judge(*s.step, &taken);  // the properties icpbench run stores
-    taken.result.solve_time_s = taken.record.solve_time_s;
-    out.result = std::make_shared<StepResult>(std::move(taken.result));
-    out.record = std::move(taken.record);
-    out.space = s.step->views.space;
-    return out;
+    if (Exiting()) cancel = true;
+    return step();
   }
-  py::dict RunProperties() const {
-    Properties properties = estimator_->RunProperties();
-    for (Property& p : judges_.RunProperties()) properties.push_back(std::move(p));
+  py::dict RunProperties() {
+    Properties properties;
+    {
+      WithoutGil release;
+      std::lock_guard<std::mutex> turn(busy_);
+      properties = estimator_->RunProperties();
+      for (Property& p : judges_.RunProperties()) properties.push_back(std::move(p));
+    }
     return PropertiesToDict(properties);
   }
 
@@ -130,6 +172,9 @@ class PyEstimator {
   ParamMap params_;
   std::unique_ptr<Estimator> estimator_;
   StepJudges judges_;
+  std::shared_ptr<const Stream> stream_;  // of the steps stepped so far
+  std::mutex busy_;
+  std::unique_ptr<Worker> worker_;  // a C++ estimator's steps run there
 };
 
 const Estimate& EstimateOf(const PyEstimate& e) { return *e.result->estimate; }

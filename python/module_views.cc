@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 #include <string>
 
@@ -32,8 +33,8 @@ Box BoxFromBounds(const py::handle& lo, const py::handle& hi, std::size_t size) 
 
 Box BoxFromBounds(const std::vector<double>& l, const std::vector<double>& h, std::size_t size) {
   if (l.size() != size || h.size() != size)
-    throw py::value_error("a box needs " + std::to_string(size) + " lower and upper bounds, got " +
-                          std::to_string(l.size()) + " and " + std::to_string(h.size()));
+    throw py::value_error(std::to_string(l.size()) + " lower and " + std::to_string(h.size()) +
+                          " upper bounds for a box of " + std::to_string(size) + " components");
   Box box(size);
   // Empty is written lo +inf, hi -inf throughout (as the module returns it);
   // any other NaN or crossed bound is a bug of the caller's, not "no
@@ -45,10 +46,13 @@ Box BoxFromBounds(const std::vector<double>& l, const std::vector<double>& h, st
     return box;
   }
   for (std::size_t i = 0; i < size; ++i) {
-    if (!(l[i] <= h[i]))
+    // [+inf, +inf] and [-inf, -inf] hold no real number: an overflow in one
+    // component would otherwise empty the whole box.
+    if (!(l[i] <= h[i]) || l[i] == kInf || h[i] == -kInf)
       throw py::value_error("lo " + FormatDouble(l[i]) + " and hi " + FormatDouble(h[i]) +
                             " at component " + std::to_string(i) +
-                            " (NaN or lo > hi; an empty box is None, or lo +inf and hi -inf throughout)");
+                            " (NaN or lo > hi, or an infinite point; an empty box is None, "
+                            "or lo +inf and hi -inf throughout)");
     box[i] = Interval(l[i], h[i]);
   }
   return box;
@@ -81,14 +85,20 @@ py::tuple ContractCsp(const PyView& v, const py::handle& lo, const py::handle& h
   if (info.contractor == nullptr)
     throw py::value_error("'" + algorithm + "' is not a CSP contractor");
   Box box = BoxFromBounds(lo, hi, static_cast<std::size_t>(view.csp.num_variables()));
-  const ParamMap contractor_params = ContractorParams(ToParamMap(params));
-  {
-    WithoutGil release;
+  const ParamMap contractor_params = ToParamMap(params);
+  if (contractor_params.count("carry"))
+    throw py::value_error("carry is a parameter of an estimator over windows; contract() contracts "
+                          "the box it is given");
+  if (box.IsEmpty()) return BoundsOf(box);
+  std::atomic<bool> cancel{false};
+  const Box contracted = RunInterruptibly(cancel, "the contraction", [&] {
     std::unique_ptr<Contractor> contractor = info.contractor(contractor_params, view.csp);
-    ContractContext context(StopCondition().WithCancelFlag(&Exiting()));
-    if (!box.IsEmpty()) contractor->Contract(box, context);
-  }
-  return BoundsOf(box);
+    ContractContext context(StopCondition().WithCancelFlag(&cancel));
+    Box out = box;
+    contractor->Contract(out, context);
+    return out;
+  });
+  return BoundsOf(contracted);
 }
 
 const LandmarkObservationView& ObservationsOf(const PyView& v) {
@@ -166,13 +176,16 @@ py::tuple ContractSighting(const PyView& v, std::size_t i, int landmark, const p
   const AlgorithmInfo& info = FindAlgorithm(algorithm);
   if (info.contractor == nullptr) throw py::value_error("'" + algorithm + "' is not a CSP contractor");
   Box box = BoxFromBounds(lo, hi, 3);
-  if (!box.IsEmpty()) {
-    const ConstraintSystem csp = PoseSighting(l->x, l->y, view.observations[i], box);
-    WithoutGil release;
-    ContractContext context(StopCondition().WithCancelFlag(&Exiting()));
-    info.contractor({}, csp)->Contract(box, context);
-  }
-  return BoundsOf(box);
+  if (box.IsEmpty()) return BoundsOf(box);
+  const ConstraintSystem csp = PoseSighting(l->x, l->y, view.observations[i], box);
+  std::atomic<bool> cancel{false};
+  const Box contracted = RunInterruptibly(cancel, "the contraction", [&] {
+    ContractContext context(StopCondition().WithCancelFlag(&cancel));
+    Box out = box;
+    info.contractor({}, csp)->Contract(out, context);
+    return out;
+  });
+  return BoundsOf(contracted);
 }
 
 py::tuple ContractMeasurement(const PyView& v, std::size_t i, const py::handle& lo,

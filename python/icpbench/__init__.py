@@ -14,6 +14,8 @@ Bad input raises ValueError with the command line's message; the environment
 import inspect
 import json
 import math
+import numbers
+import operator
 import os
 import tempfile
 
@@ -63,13 +65,19 @@ def solve(minibex, algorithm="hc4", repeat=1, timeout=math.inf, **params):
     as floats (+-inf where the command line writes null), plus `lo` and `hi`:
     the box as NumPy arrays in the variables' order ("variables").
     """
+    if not isinstance(algorithm, str):
+        raise ValueError(f"algorithm: {algorithm!r} is not an algorithm's name")
+    if isinstance(repeat, bool) or not isinstance(repeat, numbers.Integral) or not 1 <= repeat < 2**31:
+        raise ValueError(f"repeat: {repeat!r} is not a count of contractions from 1 to 2^31 - 1")
+    if isinstance(timeout, bool) or not isinstance(timeout, numbers.Real):
+        raise ValueError(f"timeout: {timeout!r} is not a number of seconds")
     is_text = _looks_like_minibex_text(minibex)
     minibex = os.fspath(minibex)
     if is_text:
         with tempfile.NamedTemporaryFile("w", suffix=".bxx", delete=False) as f:
             f.write(minibex)
         try:
-            text, names = _icpbench.solve_json(f.name, algorithm, params, repeat, timeout)
+            text, names = _icpbench.solve_json(f.name, algorithm, params, repeat, timeout, True)
         except ValueError as e:  # the text's errors, not the temporary file's name
             raise ValueError(str(e).replace(f.name, "<minibex text>")) from None
         finally:
@@ -92,10 +100,15 @@ def solve(minibex, algorithm="hc4", repeat=1, timeout=math.inf, **params):
 
 
 def _seed(seed):
-    # The command line's rule for a seed: an integer in [0, 2^64); bool is not one.
-    if isinstance(seed, bool) or not isinstance(seed, int) or not 0 <= seed < 2**64:
+    # The command line's rule for a seed: an integer in [0, 2^64) (NumPy's
+    # integers too); bool is not one.
+    try:
+        value = None if isinstance(seed, (bool, np.bool_)) else operator.index(seed)
+    except TypeError:
+        value = None
+    if value is None or not 0 <= value < 2**64:
         raise ValueError(f"seed: {seed!r} is not a non-negative integer below 2^64")
-    return seed
+    return value
 
 
 def problem(name, seed=0, **params):
@@ -115,9 +128,14 @@ def run(spec, out, jobs=1, force=False, no_retry=False, name="python"):
     docs/specs.md). Runs already in OUT's store are skipped (a sweep resumes),
     failed ones retried unless no_retry. Progress goes to sys.stderr. Returns
     the sweep's counts: planned, already_stored, ok, failed, timed_out,
-    skipped; raises KeyboardInterrupt if a signal stopped it (finished runs
-    are kept).
+    skipped (and interrupted_by, the signal that stopped it or 0, and
+    stopped, the runs it stopped in flight); raises KeyboardInterrupt if a
+    signal stopped it (finished runs are kept).
     """
+    if isinstance(jobs, bool) or not isinstance(jobs, numbers.Integral) or not 1 <= jobs < 2**31:
+        raise ValueError(f"jobs: {jobs!r} is not a number of worker processes from 1 to 2^31 - 1")
+    if not os.fspath(out):
+        raise ValueError("out: an empty path; name the directory the sweep writes into")
     if isinstance(spec, dict):
         summary = _icpbench.run_sweep(json.dumps(spec, default=_json_value), False, name,  # YAML reads JSON
                                       os.fspath(out), jobs, force, no_retry)
@@ -152,6 +170,8 @@ def _declared(name, declaration):
                              f"(default, doc, [choices]), not a tuple of {len(declaration)}")
         default, doc, *rest = declaration
         choices = rest[0] if rest else None
+    if isinstance(default, np.generic):  # np.float64(1.0) declares a float
+        default = default.item()
     kind = _TYPES.get(type(default))
     if kind is None:
         raise ValueError(f"parameter '{name}': default {default!r} must be a bool, int, float or str")
@@ -197,6 +217,12 @@ def register_algorithm(name, cls, needs="csp", params=None, description=""):
     type is the default's (bool, int, float, str), checked like a C++
     plugin's. The runs' parameters include `python`, the class's import path.
     """
+    if not inspect.isclass(cls):
+        raise ValueError(f"{name}: register a class (whose instances have step(view)), "
+                         f"not {type(cls).__name__} {cls!r}")
+    if not isinstance(needs, str):
+        raise ValueError(f"{name}: needs={needs!r}: must be csp, measurement-set, probabilistic "
+                         f"or landmark-observations")
     params = params or {}
     if not isinstance(params, dict):
         raise ValueError(f"{name}: params must be a dict of name -> declaration, "
