@@ -25,6 +25,7 @@ using detail::Exec;
 using detail::Statement;
 
 constexpr int kBusyTimeoutMs = 30000;
+constexpr int kCloseCheckpointMs = 5000;  // a reader's query takes milliseconds
 
 sqlite3* Open(const std::string& path, int flags) {
   sqlite3* db = nullptr;
@@ -155,7 +156,18 @@ std::unique_ptr<ResultsStore> ResultsStore::OpenReadOnly(const std::string& path
   return std::unique_ptr<ResultsStore>(new ResultsStore(path, ReadOnlyTag{}));
 }
 
-ResultsStore::~ResultsStore() { sqlite3_close_v2(db_); }
+ResultsStore::~ResultsStore() {
+  // SQLite folds the WAL into the store and removes it when the last
+  // connection closes; a reader still open then (a page of `icpbench serve`)
+  // left the runs in -wal, and results.sqlite copied alone was malformed.
+  // So the writer folds it in first, waiting a little for readers between
+  // their queries; the WAL left is empty.
+  if (db_ != nullptr && !read_only_) {
+    sqlite3_busy_timeout(db_, kCloseCheckpointMs);
+    sqlite3_wal_checkpoint_v2(db_, nullptr, SQLITE_CHECKPOINT_TRUNCATE, nullptr, nullptr);
+  }
+  sqlite3_close_v2(db_);
+}
 
 std::string StorePath(const std::string& out_dir) { return out_dir + "/results.sqlite"; }
 

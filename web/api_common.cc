@@ -77,10 +77,13 @@ void SendJson(httplib::Response& res, const nlohmann::json& value) {
 }
 
 std::string ParamPath(const std::string& name) {
+  // A nested algorithm's parameters are stored as "inner.ratio": the dot is
+  // part of the name, which the path quotes.
   const bool ok = !name.empty() && name.size() <= 64 &&
                   name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                         "0123456789_-") == std::string::npos;
-  if (!ok) throw HttpError(400, "bad parameter name '" + name + "' (letters, digits, _ and -)");
+                                         "0123456789_-.") == std::string::npos;
+  if (!ok)
+    throw HttpError(400, "bad parameter name '" + name + "' (letters, digits, _, - and ., at most 64)");
   return "$.\"" + name + "\"";
 }
 

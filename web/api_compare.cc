@@ -63,9 +63,12 @@ void GetAggregate(const std::string& dir, const httplib::Request& req, httplib::
   const Expr x = Axis(req, "x", "none");
   StoreReader store(dir);
   Query q(store,
-          "SELECT g, x, count(m), avg(m), avg(m * m), min(m), max(m) FROM (SELECT " + group.sql +
+          // The spread about each group's mean, in a second pass (avg(m * m) -
+          // mean^2 lost every digit where the mean is large and the spread small).
+          "SELECT g, x, count(m), avg(m), sum((m - mean) * (m - mean)), min(m), max(m) FROM "
+          "(SELECT g, x, m, avg(m) OVER (PARTITION BY g, x) AS mean FROM (SELECT " + group.sql +
               " AS g, " + x.sql + " AS x, " + metric.sql + " AS m FROM runs r WHERE " + f.where +
-              " AND r.status = 'ok') WHERE m IS NOT NULL GROUP BY g, x ORDER BY g, x",
+              " AND r.status = 'ok') WHERE m IS NOT NULL) GROUP BY g, x ORDER BY g, x",
           Concat({&group.values, &x.values, &metric.values, &f.values}));
   nlohmann::json rows = nlohmann::json::array();
   while (q.Step()) {
@@ -80,7 +83,7 @@ void GetAggregate(const std::string& dir, const httplib::Request& req, httplib::
                           {"ci_lo", nullptr}, {"ci_hi", nullptr}};
     if (n >= 2) {
       // Normal approximation of the mean's 95% interval, from the sample variance.
-      const double var = std::max(0.0, (sqlite3_column_double(q.stmt(), 4) - mean * mean) * n / (n - 1));
+      const double var = sqlite3_column_double(q.stmt(), 4) / (n - 1);
       const double half = 1.96 * std::sqrt(var / n);
       row["ci_lo"] = Number(mean - half);
       row["ci_hi"] = Number(mean + half);

@@ -44,6 +44,13 @@ bool IsFigure(const fs::path& path) {
   return ext == ".png" || ext == ".pdf" || ext == ".svg";
 }
 
+// Whether DIR/figures is the store's own folder, not a symbolic link to
+// one elsewhere (whose files the canonical check below would take as inside).
+bool FiguresFolderIsOwn(const std::string& dir) {
+  std::error_code ec;
+  return !fs::is_symlink(fs::symlink_status(fs::path(dir) / "figures", ec));
+}
+
 // DIR/figures/NAME if NAME is a relative path of plain segments whose real
 // path is a regular file inside DIR/figures; else a 400 or 404.
 fs::path FigurePath(const std::string& dir, const std::string& name) {
@@ -58,8 +65,13 @@ fs::path FigurePath(const std::string& dir, const std::string& name) {
     start = slash + 1;
   }
   std::error_code ec;
+  // Not through a symbolic link, the folder's or the file's: what is served
+  // is what /api/figures lists, and nothing outside the store.
+  if (!FiguresFolderIsOwn(dir)) throw HttpError(404, "no figures in " + dir);
   const fs::path root = fs::canonical(fs::path(dir) / "figures", ec);
   if (ec) throw HttpError(404, "no figures in " + dir);
+  if (fs::is_symlink(fs::symlink_status(fs::path(dir) / "figures" / name, ec)))
+    throw HttpError(404, "no figure '" + name + "' (a symbolic link is not served)");
   const fs::path file = fs::canonical(root / name, ec);
   if (ec || !fs::is_regular_file(file, ec) || !IsFigure(file)) throw HttpError(404, "no figure '" + name + "'");
   const fs::path relative = file.lexically_relative(root);
@@ -73,7 +85,7 @@ void GetFigures(const std::string& dir, const httplib::Request& req, httplib::Re
   nlohmann::json names = nlohmann::json::array();
   std::error_code ec;
   const fs::path root = fs::path(dir) / "figures";
-  if (fs::is_directory(root, ec)) {
+  if (FiguresFolderIsOwn(dir) && fs::is_directory(root, ec)) {
     std::vector<std::string> found;
     for (const auto& e : fs::recursive_directory_iterator(root, ec)) {
       const std::string name = e.path().lexically_relative(root).generic_string();
@@ -99,7 +111,7 @@ void GetClaims(const std::string& dir, const httplib::Request& req, httplib::Res
     return;
   }
   nlohmann::json claims = nlohmann::json::parse(ReadFile(file), nullptr, /*exceptions=*/false);
-  if (claims.is_discarded()) throw HttpError(404, "paper/claims.json is not JSON");
+  if (claims.is_discarded()) throw HttpError(500, "paper/claims.json is not JSON");
   SendJson(res, {{"file", "paper/claims.json"}, {"claims", claims}});
 }
 

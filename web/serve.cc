@@ -10,7 +10,10 @@
 #include <sys/socket.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <set>
 #include <stdexcept>
@@ -48,7 +51,7 @@ void CheckAsset(const std::string& path) {
 std::string BadQuery(const httplib::Request& req) {
   const std::string& target = req.target;
   for (std::size_t at = target.find('%'); at != std::string::npos; at = target.find('%', at + 1))
-    if (target.compare(at, 3, "%00") == 0) return "a NUL byte (%00) in the query";
+    if (target.compare(at, 3, "%00") == 0) return "a NUL byte (%00) in the URL";
   // cpp-httplib splits on ';' too and keeps what follows a value's last '=':
   // limit=3;offset=1 read limit as 1. Such characters must be encoded.
   if (const std::size_t q = target.find('?'); q != std::string::npos) {
@@ -100,11 +103,25 @@ std::set<std::string> LoopbackHostNames(const std::string& host, const std::stri
                                         int port) {
   const std::vector<std::string> addresses = NumericAddresses(host);
   if (addresses.empty() || !std::all_of(addresses.begin(), addresses.end(), IsLoopback)) return {};
-  const std::string suffix = ":" + std::to_string(port);
-  std::set<std::string> names = {authority, "localhost" + suffix};
-  for (const std::string& a : addresses)
-    names.insert(a.find(':') != std::string::npos ? "[" + a + "]" + suffix : a + suffix);
+  std::set<std::string> names = {authority};
+  // Clients leave the default port out of Host: on port 80 the bare names.
+  for (const std::string& suffix : port == 80 ? std::vector<std::string>{":80", ""}
+                                              : std::vector<std::string>{":" + std::to_string(port)}) {
+    names.insert("localhost" + suffix);
+    for (const std::string& a : addresses)
+      names.insert(a.find(':') != std::string::npos ? "[" + a + "]" + suffix : a + suffix);
+  }
   return names;
+}
+
+// cpp-httplib slices whatever answer it sends by the request's Range header,
+// an error's JSON included (a 400 cut to its bytes 10-, a 416 in pieces).
+// An error is sent whole: the ranges are forgotten. The request is the
+// server's own (made non-const), handed to handlers as const.
+void SendWholeError(const httplib::Request& req, httplib::Response& res, int status,
+                    const std::string& message) {
+  const_cast<httplib::Request&>(req).ranges.clear();
+  SendError(res, status, message);
 }
 
 std::string Lowercase(std::string text) {
@@ -142,28 +159,42 @@ void Serve(const ServeOptions& options, const std::function<void(const std::stri
   // Read-only: any other method is a 405 naming the allowed ones.
   const auto not_allowed = [](const httplib::Request& req, httplib::Response& res) {
     res.set_header("Allow", "GET, HEAD");
-    SendError(res, 405, req.method + " is not allowed: the server only reads (GET, HEAD)");
+    SendWholeError(req, res, 405, req.method + " is not allowed: the server only reads (GET, HEAD)");
   };
   server.Post(".*", not_allowed);
   server.Put(".*", not_allowed);
   server.Patch(".*", not_allowed);
   server.Delete(".*", not_allowed);
   server.Options(".*", not_allowed);
-  server.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr e) {
+  server.set_exception_handler([](const httplib::Request& req, httplib::Response& res, std::exception_ptr e) {
     try {
       std::rethrow_exception(e);
     } catch (const HttpError& error) {
-      SendError(res, error.status, error.what());
+      SendWholeError(req, res, error.status, error.what());
     } catch (const std::exception& error) {
-      SendError(res, 500, error.what());
+      SendWholeError(req, res, 500, error.what());
     }
   });
   server.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
     if (!res.body.empty()) return;
-    if (res.status == 404) SendError(res, 404, "no such page: " + req.path);
-    else if (res.status == 414) SendError(res, 414, "the URL is too long");
-    else SendError(res, res.status, "bad request (HTTP status " + std::to_string(res.status) + ")");
+    if (res.status == 404) {
+      SendWholeError(req, res, 404, "no such page: " + req.path);
+    } else if (res.status == 414) {
+      SendWholeError(req, res, 414, "the URL is too long");
+    } else if (res.status == 413) {
+      SendWholeError(req, res, 413, "the request has a body: the server takes none");
+    } else if (res.status == 400 && req.method != "GET" && req.method != "HEAD") {
+      // cpp-httplib refuses a method it does not know, or a POST without a
+      // body, before routing: still a method the server does not allow.
+      res.set_header("Allow", "GET, HEAD");
+      SendWholeError(req, res, 405, req.method + " is not allowed: the server only reads (GET, HEAD)");
+    } else {
+      SendWholeError(req, res, res.status, "bad request (HTTP status " + std::to_string(res.status) + ")");
+    }
   });
+  // The API takes no body: a large one (1 GiB to a GET or a POST) was read
+  // whole into memory before the answer.
+  server.set_payload_max_length(64 * 1024);
 
   // cpp-httplib's default sets SO_REUSEPORT, with which a second server
   // binds a port in use and the kernel splits the requests between the two
@@ -193,35 +224,44 @@ void Serve(const ServeOptions& options, const std::function<void(const std::stri
     names.insert(Lowercase(name));
   server.set_pre_routing_handler([names](const httplib::Request& req, httplib::Response& res) {
     if (!names.empty() && names.count(Lowercase(req.get_header_value("Host"))) == 0) {
-      SendError(res, 403, "host '" + req.get_header_value("Host") + "' not served (use " +
+      SendWholeError(req, res, 403, "host '" + req.get_header_value("Host") + "' not served (use " +
                               *names.begin() + ")");
       return httplib::Server::HandlerResponse::Handled;
     }
     // Many ranges of one body would multiply it in the answer (300 ranges of
     // a 200 kB figure: 60 MB built in memory); one range is enough to resume.
     if (req.get_header_value("Range").find(',') != std::string::npos) {
-      SendError(res, 416, "one byte range per request");
+      SendWholeError(req, res, 416, "one byte range per request");
       return httplib::Server::HandlerResponse::Handled;
     }
     if (const std::string problem = BadQuery(req); !problem.empty()) {
-      SendError(res, 400, problem);
+      SendWholeError(req, res, 400, problem);
       return httplib::Server::HandlerResponse::Handled;
     }
     return httplib::Server::HandlerResponse::Unhandled;
   });
   on_listening("http://" + authority + "/");
 
-  std::thread waiter([&server, stop_signals] {
+  // The first signal stops the server, which waits for the re-runs in
+  // progress (up to 10 s each); a second one does not wait.
+  std::atomic<bool> finished{false};
+  std::thread waiter([&server, &finished, stop_signals] {
     int signal = 0;
     sigwait(&stop_signals, &signal);
+    if (finished) return;
     server.stop();
+    sigwait(&stop_signals, &signal);
+    if (finished) return;
+    std::fputs("icpbench serve: a second signal: stopped without waiting for the re-runs in progress\n",
+               stderr);
+    std::_Exit(128 + signal);
   });
   server.listen_after_bind();
-  // listen_after_bind returned by itself (a socket error): wake the waiter.
-  if (waiter.joinable()) {
-    pthread_kill(waiter.native_handle(), SIGTERM);
-    waiter.join();
-  }
+  // Stopped, or listen_after_bind returned by itself (a socket error): the
+  // waiter, in one of its waits, is woken to end.
+  finished = true;
+  pthread_kill(waiter.native_handle(), SIGTERM);
+  waiter.join();
 }
 
 }  // namespace icp::web

@@ -169,7 +169,7 @@ def test_claims_are_empty_until_the_paper_writes_them(server, store_dir):
         assert server.json("/api/claims") == {"file": "paper/claims.json", "claims": claims}
         with open(os.path.join(paper, "claims.json"), "w") as f:
             f.write("{not json")
-        assert "not JSON" in server.json("/api/claims", status=404)["error"]
+        assert "not JSON" in server.json("/api/claims", status=500)["error"]
         # A link to a file outside the store is not followed.
         outside = os.path.join(os.path.dirname(store_dir), "outside-claims.json")
         with open(outside, "w") as f:

@@ -2,10 +2,12 @@
 exit codes, and serving a store while `icpbench run` is still writing it."""
 import http.client
 import os
+import shutil
 import signal
 import socket
 import sqlite3
 import subprocess
+import threading
 import time
 
 import pytest
@@ -130,13 +132,24 @@ def test_it_serves_the_default_suites_store_while_the_sweep_writes_it(tmp_path):
         assert sweep.poll() is None, "the sweep ended before the test saw it write"
         assert seen == sorted(seen) and len(set(seen)) >= 3, seen  # it saw the store grow
     finally:
+        # Reading while the sweep closes its store: its runs stayed in -wal,
+        # and results.sqlite copied alone was malformed.
+        reading = threading.Event()
+        reading.set()
+        reader = threading.Thread(target=lambda: [s.get("/api/summary") for _ in iter(reading.is_set, False)])
+        reader.start()
         sweep.send_signal(signal.SIGINT)
-        assert sweep.wait(60) == 128 + signal.SIGINT
+        code = sweep.wait(60)
+        reading.clear()
+        reader.join()
+        assert code == 128 + signal.SIGINT
     try:
         stored = [r["id"] for r in s.json("/api/runs?limit=10000")]
         assert len(stored) >= seen[-1]
-        # Not immutable: the interrupted sweep may leave its runs in a -wal file.
-        db = sqlite3.connect(f"file:{out}/results.sqlite?mode=ro", uri=True)
+        alone = tmp_path / "alone"
+        alone.mkdir()
+        shutil.copy(os.path.join(out, "results.sqlite"), alone)
+        db = sqlite3.connect(f"file:{alone}/results.sqlite?immutable=1", uri=True)
         assert stored == [r[0] for r in db.execute("SELECT id FROM runs ORDER BY id")]
         db.close()
     finally:
