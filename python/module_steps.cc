@@ -216,7 +216,12 @@ void BindSteps(py::module_& m) {
       .def_property_readonly("hi", [](const PyEstimate& e) -> py::object {
         return BoundsOf(EstimateOf(e).Hull())[1];
       })
-      .def_property_readonly("centre", [](const PyEstimate& e) { return Array(EstimateOf(e).Centre()); })
+      .def_property_readonly("centre", [](const PyEstimate& e) {
+        std::vector<double> centre = EstimateOf(e).Centre();
+        // As lo and hi, one value per component: NaN where there is no centre.
+        if (centre.empty()) centre.assign(EstimateOf(e).Hull().size(), std::numeric_limits<double>::quiet_NaN());
+        return Array(centre);
+      }, "The estimate's centre (NaN throughout for an empty one).")
       .def("contains", [](const PyEstimate& e, const std::vector<double>& point) {
         const Estimate& estimate = EstimateOf(e);
         if (point.size() != estimate.Hull().size())

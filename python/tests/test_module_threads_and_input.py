@@ -172,3 +172,14 @@ def test_a_property_named_like_an_annotation_is_refused():
     assert "gps_x_lo" in step.annotations
     with pytest.raises(icpbench.InvalidResult, match="annotations: rename it"):
         icpbench.estimator("clashing").step(step)
+
+
+def test_an_empty_estimates_centre_has_a_nan_per_component():
+    class Nothing:
+        def step(self, view):
+            return None
+
+    icpbench.register_algorithm("nothing", Nothing)
+    estimate = icpbench.estimator("nothing").step(next(icpbench.problem("car-track", seed=1, steps=2, w=3)))
+    assert estimate.status == "empty"
+    assert len(estimate.centre) == len(estimate.lo) == 3 and np.isnan(estimate.centre).all()
