@@ -10,12 +10,13 @@ let options = null;
 
 // --- the state in the hash -------------------------------------------------
 function state() { return new URLSearchParams(location.hash.slice(1)); }
-function setState(changes) {
+// replace: correct the link in place (no new history entry, no redraw).
+function setState(changes, replace) {
   const s = state();
   for (const [k, v] of Object.entries(changes)) {
     if (v === '' || v === null || v === undefined) s.delete(k); else s.set(k, v);
   }
-  location.hash = s.toString();
+  if (replace) history.replaceState(null, '', '#' + s); else location.hash = s.toString();
 }
 // The API's filter query from the hash: experiment=..&param.w=..
 function filterQuery() {
@@ -43,6 +44,12 @@ function fmt(v) {
   if (typeof v === 'object') return JSON.stringify(v);
   return String(v);
 }
+// A value in full, as the API gave it: what a CSV holds (±inf as the store writes it).
+function full(v) {
+  if (typeof v !== 'number') return fmt(v);
+  if (isNaN(v)) return '';
+  return Number.isFinite(v) ? String(v) : v > 0 ? 'inf' : '-inf';
+}
 function num(v) { return v === 'inf' ? Infinity : v === '-inf' ? -Infinity : v; }
 // Fills table el with a header and rows (arrays of values); onclick(row index).
 function fillTable(el, header, rows, onclick, rowClass) {
@@ -57,17 +64,19 @@ function fillTable(el, header, rows, onclick, rowClass) {
       const td = tr.insertCell();
       td.textContent = fmt(v);
       if (typeof v === 'number') td.className = 'num';
+      // The display rounds; the cell keeps the full value for the CSV.
+      if (full(v) !== td.textContent) td.dataset.value = full(v);
     }
   });
 }
 function keyValueTable(el, object) {
   fillTable(el, ['name', 'value'], Object.entries(object));
 }
-// The table's cells as CSV, downloaded.
+// The table's cells as CSV, downloaded: the full values, not the rounded display.
 function downloadCsv(id) {
-  const quote = t => /[",\n]/.test(t) ? '"' + t.replace(/"/g, '""') + '"' : t;
+  const quote = t => /[",\n\r]/.test(t) ? '"' + t.replace(/"/g, '""') + '"' : t;
   const lines = [...document.getElementById(id).rows].map(
-    tr => [...tr.cells].map(c => quote(c.textContent)).join(','));
+    tr => [...tr.cells].map(c => quote(c.dataset.value ?? c.textContent)).join(','));
   const a = document.createElement('a');
   a.href = URL.createObjectURL(new Blob([lines.join('\n') + '\n'], {type: 'text/csv'}));
   a.download = id.replace('-table', '') + '.csv';
@@ -111,8 +120,9 @@ function drawFilters() {
 // --- runs ------------------------------------------------------------------
 async function drawRuns() {
   const s = state(), q = filterQuery();
-  const offset = Number(s.get('offset') || 0);
   const summary = await api('/api/summary?' + q);
+  const offset = pageOffset(s.get('offset'), summary.total);
+  if (String(offset) !== (s.get('offset') || '0')) setState({offset: offset || ''}, true);
   document.getElementById('counts').textContent =
     `${summary.total} runs: ` + ['ok', 'failed', 'timeout', 'skipped']
       .map(k => `${summary.status[k] || 0} ${k}`).join(', ');
@@ -134,12 +144,23 @@ async function drawRuns() {
                            r.time_mean_s, r.key]),
             i => setState({view: 'run', id: runs[i].id, key: runs[i].key, step: ''}),
             i => 'status-' + runs[i].status);
-  document.getElementById('page').textContent =
-    `${Math.min(offset + 1, summary.total)}–${offset + runs.length} of ${summary.total}`;
+  document.getElementById('page').textContent = pageText(offset, runs.length, summary.total);
   document.getElementById('prev').disabled = offset === 0;
   document.getElementById('next').disabled = offset + runs.length >= summary.total;
   document.getElementById('prev').onclick = () => setState({offset: Math.max(0, offset - PAGE)});
   document.getElementById('next').onclick = () => setState({offset: offset + PAGE});
+}
+
+// The link's offset as a whole number; one past the last run (the store or
+// the filters changed since the link was made) shows the last page instead.
+function pageOffset(text, total) {
+  const offset = Math.max(0, Math.floor(Number(text))) || 0;
+  return offset < total ? offset : Math.max(0, Math.floor((total - 1) / PAGE) * PAGE);
+}
+function pageText(offset, shown, total) {
+  if (total === 0) return 'no runs';
+  if (shown === 0) return `none of ${total} past ${offset}`;  // the store changed between the requests
+  return `${offset + 1}–${offset + shown} of ${total}`;
 }
 
 // --- comparison ------------------------------------------------------------
@@ -217,23 +238,45 @@ async function drawCompare() {
 }
 
 // --- one run ---------------------------------------------------------------
+// The id of the run the link names, or null for none. A link names the run by
+// its key too: a retried, forced or merged run has a new id, and the key finds
+// it; a key the store lacks is an error, not whichever run has the link's id.
+async function linkedRunId(s) {
+  const key = s.get('key');
+  if (key) {
+    const found = await api('/api/runs?key=' + encodeURIComponent(key));
+    if (found.length === 0) throw new Error(`The linked run (key ${key}) is not in this store.`);
+    const id = String(found[0].id);
+    if (id !== s.get('id')) setState({id}, true);  // the link's id is stale: correct it
+    return id;
+  }
+  if (s.get('id')) return s.get('id');
+  const first = await api('/api/runs?limit=1&' + filterQuery());
+  return first.length ? String(first[0].id) : null;
+}
+// Empties the run view, so that a run that cannot be shown leaves no other's.
+function clearRun(title) {
+  document.getElementById('run-title').textContent = title;
+  for (const t of ['run-info', 'run-properties', 'steps-table', 'step-values', 'step-properties'])
+    document.getElementById(t).replaceChildren();
+  for (const c of ['steps-chart', 'corridor-chart', 'estimate-chart'])
+    if (charts[c]) { charts[c].destroy(); delete charts[c]; }
+  document.getElementById('estimate-note').textContent = '';
+}
 async function drawRun() {
   const s = state(), input = document.getElementById('run-id');
   input.onchange = () => setState({id: input.value, key: '', step: ''});
-  let id = s.get('id');
-  // A link names the run by its key too: a retried, forced or merged run has
-  // a new id, and the key finds it.
-  if (s.get('key')) {
-    const found = await api('/api/runs?key=' + encodeURIComponent(s.get('key')));
-    if (found.length > 0) id = String(found[0].id);
+  let id, run;
+  try {
+    id = await linkedRunId(s);
+    if (id === null) { input.value = ''; clearRun('No runs (in this store or with these filters).'); return; }
+    input.value = id;
+    run = await api('/api/runs/' + id);
+  } catch (e) {
+    input.value = id || '';
+    clearRun('');
+    throw e;
   }
-  if (!id) {
-    const first = await api('/api/runs?limit=1&' + filterQuery());
-    if (first.length === 0) return;
-    id = String(first[0].id);
-  }
-  input.value = id;
-  const run = await api('/api/runs/' + id);
   document.getElementById('run-title').textContent =
     `${run.algorithm} on ${run.problem} (${run.status}${run.reason ? ': ' + run.reason : ''})`;
   const info = {key: run.key, spec: run.spec_file, seed: run.seed, timeout_s: run.timeout_s,
@@ -408,13 +451,34 @@ async function drawFigures() {
     box.appendChild(fig);
   }
 }
+// What a JSON value is, for messages about a file of the wrong shape.
+function jsonKind(v) {
+  if (v === null) return 'null';
+  if (Array.isArray(v)) return 'an array';
+  return {object: 'an object', number: 'a number', string: 'a string', boolean: 'a boolean'}[typeof v];
+}
+const isObject = v => v !== null && typeof v === 'object' && !Array.isArray(v);
+// claims.json is an array of objects, one a claim (icpbench paper writes it);
+// a file edited by hand or by another tool may be anything, so its shape is checked.
 async function drawClaims() {
-  const c = await api('/api/claims');
-  document.getElementById('claims-file').textContent = c.file
-    ? `From ${c.file}.` : 'No claims: icpbench paper DIR writes them.';
-  const claims = Array.isArray(c.claims) ? c.claims : c.claims.claims || [];
+  const c = await api('/api/claims'), table = document.getElementById('claims-table');
+  const text = document.getElementById('claims-file');
+  table.replaceChildren();
+  if (!c.file) { text.textContent = 'No claims: icpbench paper DIR writes them.'; return; }
+  const wrapped = isObject(c.claims) && 'claims' in c.claims;  // {"claims": [...]}
+  const list = wrapped ? c.claims.claims : c.claims;
+  if (!Array.isArray(list)) {
+    text.textContent = '';
+    throw new Error(`${c.file} is not a list of claims: ${wrapped ? 'its "claims" holds' : 'it holds'} ` +
+                    `${jsonKind(list)}, not an array of objects.`);
+  }
+  const claims = list.filter(isObject);
+  const skipped = list.map((r, i) => isObject(r) ? null : `#${i + 1} (${jsonKind(r)})`).filter(Boolean);
+  text.textContent = `From ${c.file}: ${claims.length} claim${claims.length === 1 ? '' : 's'}.` +
+    (skipped.length ? ' Skipped the entries that are not objects: ' +
+                      skipped.slice(0, 10).join(', ') + (skipped.length > 10 ? ', …' : '.') : '');
   const header = [...new Set(claims.flatMap(Object.keys))];
-  fillTable(document.getElementById('claims-table'), header, claims.map(r => header.map(h => r[h])));
+  fillTable(table, header, claims.map(r => header.map(h => r[h])));
 }
 
 // --- the page --------------------------------------------------------------
