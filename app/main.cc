@@ -71,6 +71,11 @@ void SetUpProcess() {
     if (fcntl(fd, F_GETFD) < 0 && errno == EBADF && open("/dev/null", O_RDWR) < 0) break;
   std::signal(SIGXFSZ, SIG_IGN);
 }
+
+// A closed stderr (a pipe to `head` that ended) must not end a sweep before
+// it starts, nor at its summary line: run ignores SIGPIPE from its first
+// message to its last (writes to the pipe then fail, and are lost).
+void KeepRunningWithoutStderr() { std::signal(SIGPIPE, SIG_IGN); }
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -223,6 +228,7 @@ int main(int argc, char** argv) {
     } else if (*list_cmd) {
       std::cout << icp::ListPlugins(what, list_format);
     } else if (*run_cmd) {
+      KeepRunningWithoutStderr();
       std::tie(run.shard_index, run.shard_count) = icp::ParseShard(shard);
       if (run.jobs < 1) throw std::invalid_argument("--jobs must be at least 1");
       // More workers than this only share the cores and use up processes

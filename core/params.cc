@@ -41,6 +41,8 @@ bool ParseDouble(const std::string& text, double* out) {
   errno = 0;
   double v = std::strtod(text.c_str(), &end);
   if (end != text.c_str() + text.size() || std::isnan(v)) return false;
+  // A value below the least double (1e-400) is not 0: refused, not rounded to it.
+  if (errno == ERANGE && v == 0) return false;
   *out = v;
   return true;
 }

@@ -131,7 +131,7 @@ std::vector<ParamInfo> DefaultParams(const std::string& owner) {
 std::string FormatDouble(double v);
 // A decimal number (sign, fraction, exponent; inf and infinity too), as a
 // parameter's or a spec's text: false for anything else (NaN, hexadecimal,
-// blanks, trailing text).
+// blanks, trailing text, a non-zero value that underflows to 0 such as 1e-400).
 bool ParseDouble(const std::string& text, double* out);
 
 }  // namespace icp

@@ -13,6 +13,7 @@ Progress::Progress(std::ostream& out, bool terminal, int total)
 void Progress::Done(const RunRecord& r, const SweepSummary& s, const std::string& where,
                     const std::string& in_flight) {
   ++done_;
+  if (r.status != RunStatus::kSkipped) ++ran_;  // a skipped run takes no time: not in the ETA
   if (terminal_) {
     DrawBar(s, in_flight);
     if (r.status != RunStatus::kOk && r.status != RunStatus::kSkipped)
@@ -23,8 +24,9 @@ void Progress::Done(const RunRecord& r, const SweepSummary& s, const std::string
   out_ << "[" << done_ << "/" << total_ << "] " << ToString(r.status) << " " << WithoutDefaults(r.spec).Key()
        << " (" << FormatSeconds(r.wall_time_s) << (where.empty() ? "" : ", " + where) << ")"
        << (r.reason.empty() ? "" : ": " + r.reason);
-  if (!in_flight.empty()) out_ << "  [in flight " << in_flight << ", ETA " << Eta() << "]";
-  out_ << "\n" << std::flush;
+  out_ << "  [" << (in_flight.empty() ? "" : "in flight " + in_flight + ", ") << "elapsed "
+       << FormatSeconds(Elapsed()) << ", ETA " << Eta() << "]\n"
+       << std::flush;
 }
 
 void Progress::InFlight(const SweepSummary& s, const std::string& in_flight) {
@@ -32,16 +34,18 @@ void Progress::InFlight(const SweepSummary& s, const std::string& in_flight) {
 }
 
 void Progress::Finish() {
-  if (terminal_ && done_ > 0) out_ << "\n";
+  if (terminal_ && drawn_) out_ << "\n";
 }
 
 void Progress::DrawBar(const SweepSummary& s, const std::string& in_flight) {
   const int width = 30;
   const int filled = total_ ? width * done_ / total_ : width;
   out_ << "\r[" << std::string(filled, '#') << std::string(width - filled, '.') << "] " << done_ << "/"
-       << total_ << " runs  ok " << s.ok << "  failed " << s.failed + s.timed_out;
+       << total_ << " runs  ok " << s.ok << "  failed " << s.failed << "  timed out " << s.timed_out
+       << "  skipped " << s.skipped;
   if (!in_flight.empty()) out_ << "  in flight " << in_flight;
-  out_ << "  ETA " << Eta() << "   " << std::flush;
+  out_ << "  " << FormatSeconds(Elapsed()) << ", ETA " << Eta() << "   " << std::flush;
+  drawn_ = true;
 }
 
 std::string Progress::FormatSeconds(double s) {
@@ -56,10 +60,14 @@ std::string Progress::FormatSeconds(double s) {
   return buf;
 }
 
+double Progress::Elapsed() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
 std::string Progress::Eta() const {
-  if (done_ == 0) return "?";
-  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  return FormatSeconds(elapsed / done_ * (total_ - done_));
+  if (done_ >= total_) return "0.0s";
+  if (ran_ == 0) return "?";
+  return FormatSeconds(Elapsed() / ran_ * (total_ - done_));
 }
 
 }  // namespace icp

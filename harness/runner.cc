@@ -141,6 +141,9 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
   const StopSignals signals;
   auto record = [&](FinishedRun& f) { recorder.Record(f.record, f.run.experiment, f.step_file); };
   bool start_failed = false;  // pipe() or fork() failed: start nothing more
+  // The bar is drawn from the start and then every second, so that a sweep
+  // of long runs shows its time and what is in flight before one ends.
+  auto last_drawn = std::chrono::steady_clock::time_point();
   while ((!queue.empty() && !start_failed) || pool.Running() > 0) {
     if (StopSignals::Caught() != 0) break;
     while (pool.HasRoom() && !queue.empty() && !start_failed) {
@@ -151,6 +154,10 @@ SweepSummary RunSweep(const Spec& spec, const RunnerOptions& options, std::ostre
         break;
       }
       queue.pop_front();
+    }
+    if (std::chrono::steady_clock::now() - last_drawn >= std::chrono::seconds(1)) {
+      recorder.progress().InFlight(recorder.summary(), std::to_string(pool.Running()));
+      last_drawn = std::chrono::steady_clock::now();
     }
     pool.Poll(100, record);
   }

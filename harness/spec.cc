@@ -44,6 +44,10 @@ class Reader {
       Fail(key, where,
            std::string("a key must be a single value, not a ") +
                (key.IsSequence() ? "list" : key.IsMap() ? "mapping" : "null"));
+    // yaml-cpp reads a merge key as a plain key named "<<".
+    if (key.Scalar() == "<<" && key.Tag() != "tag:yaml.org,2002:str" && key.Tag() != "!")
+      Fail(key, where, "YAML merge keys (<<) are not supported: write the keys out (an alias "
+                       "*name repeats a whole value)");
     return key.Scalar();
   }
 
@@ -96,6 +100,13 @@ class Reader {
     std::string name = Scalar(node, key);
     if (name.find('#') != std::string::npos)
       Fail(node, key, "'" + name + "': an experiment's name cannot hold '#' (runs are stored under SPEC#NAME)");
+    // Empty, it would be stored without its '#' and read back from the
+    // spec's path; a control character (NUL cut it short) is not a name.
+    if (name.find_first_not_of(" \t") == std::string::npos)
+      Fail(node, key, "an experiment's name cannot be empty");
+    for (const char c : name)
+      if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+        Fail(node, key, "an experiment's name cannot hold a control character");
     return name;
   }
 
@@ -122,7 +133,9 @@ class Reader {
   // A memory limit in MiB; 0 means none.
   double MemoryLimit(const YAML::Node& node, const std::string& key) const {
     const std::string text = Scalar(node, key);
-    if (text == "0") return 0;
+    double zero = 1;
+    if (ParseDouble(text, &zero) && zero == 0) return 0;  // 0, 0.0, -0
+    if (text == ".inf" || text == ".Inf" || text == ".INF") return kInf;
     const double v = Positive(node, key);
     if (v < kMinMemoryLimitMb)
       Fail(node, key, "'" + text + "' is below the least a worker needs (" +
@@ -151,17 +164,20 @@ class Reader {
       } catch (const std::exception&) {
         used = 0;
       }
-      if (used == text.size() && !text.empty() && text[0] != '-' && !std::isspace(static_cast<unsigned char>(text[0])))
+      // Decimal digits only: stoull also read 0x10 as 16 and skipped leading blanks.
+      if (used == text.size() && !text.empty() && text.find_first_not_of("0123456789") == std::string::npos)
         return v;
       // An integer spelt as integer parameters may be ("1.0", "1e3"), up to
       // 2^53, where a double still holds every integer; and exactly (the
       // decimal's enclosure a point): 9007199254740993.0 is not 2^53.
       Interval exact;
-      if (ParseDecimal(text, &exact) && exact.IsPoint()) {
+      const bool decimal = text.find_first_not_of("0123456789.eE+-") == std::string::npos;
+      if (decimal && ParseDecimal(text, &exact) && exact.IsPoint()) {
         const double d = exact.lo();
         if (d >= 0 && d <= 9007199254740992.0 && d == std::floor(d)) return static_cast<std::uint64_t>(d);
       }
-      Fail(n, key, "'" + text + "' is not a non-negative integer below 2^64");
+      Fail(n, key, "'" + text + "' is not a non-negative integer below 2^64 (in digits; with a "
+                   "point or an exponent, at most 2^53)");
     };
     if (seeds) {
       std::vector<std::uint64_t> out;
@@ -384,6 +400,7 @@ Spec ParseSpecText(const std::string& text, const std::string& source) {
                    {"name", "description", "timeout_s", "memory_limit_mb", "record", "seeds",
                     "repetitions", "experiments", "algorithms", "problems"});
   if (root["description"]) reader.Scalar(root["description"], "description");  // free text
+  if (root["name"]) reader.ExperimentName(root["name"], "name");  // the spec's, checked either way
   const double timeout = root["timeout_s"] ? reader.Timeout(root["timeout_s"], "timeout_s") : 600;
   const double memory = root["memory_limit_mb"]
                             ? reader.MemoryLimit(root["memory_limit_mb"], "memory_limit_mb")

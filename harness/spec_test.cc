@@ -360,5 +360,53 @@ TEST(SpecTest, AnExperimentNameCannotHoldAHash) {
             std::string::npos);
 }
 
+// What an outside probe of specs found, each refused with its reason.
+TEST(SpecTest, AnExperimentNameIsNotEmptyAndTheSpecsNameIsCheckedToo) {
+  // Empty, it was stored without its '#' and read back from the spec's path.
+  EXPECT_NE(ErrorOf("experiments:\n  - {name: '', algorithms: [hc4], problems: [chain]}\n")
+                .find("cannot be empty"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("experiments:\n  - {name: \"a\\0b\", algorithms: [hc4], problems: [chain]}\n")
+                .find("control character"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("name: [1, 2]\nexperiments:\n  - {name: a, algorithms: [hc4], problems: [chain]}\n")
+                .find("key 'name'"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("name: x#y\nexperiments:\n  - {name: a, algorithms: [hc4], problems: [chain]}\n")
+                .find("cannot hold '#'"),
+            std::string::npos);
+}
+
+TEST(SpecTest, AMergeKeyIsSaidToBeUnsupported) {
+  const std::string error = ErrorOf(
+      "algorithms: [hc4]\nproblems:\n  - {name: car-track, params: &d {steps: 10, w: 3}}\n"
+      "  - {name: car-track, params: {<<: *d, w: 4}}\n");
+  EXPECT_NE(error.find("merge keys (<<) are not supported"), std::string::npos) << error;
+}
+
+TEST(SpecTest, SeedsAreDecimalDigitsAndLimitsTakeEverySpellingOfZeroAndInfinity) {
+  for (const char* bad : {"0x10", " 5"})
+    EXPECT_NE(ErrorOf(std::string("seeds: ['") + bad + "']\nalgorithms: [hc4]\nproblems: [chain]\n")
+                  .find("is not a non-negative integer"),
+              std::string::npos)
+        << bad;
+  EXPECT_NE(ErrorOf("repetitions: 0x10\nalgorithms: [hc4]\nproblems: [chain]\n").find("not a non-negative"),
+            std::string::npos);
+  for (const char* zero : {"0", "0.0", "-0"})
+    EXPECT_EQ(ParseSpec(std::string("memory_limit_mb: ") + zero + "\nalgorithms: [hc4]\nproblems: [chain]\n", "s")
+                  .runs[0].spec.memory_limit_mb,
+              0)
+        << zero;
+  EXPECT_EQ(ParseSpec("memory_limit_mb: .inf\nalgorithms: [hc4]\nproblems: [chain]\n", "s").runs[0].spec.memory_limit_mb,
+            kInf);
+}
+
+TEST(SpecTest, AValueThatUnderflowsIsRefusedNotReadAsZero) {
+  // ratio: 1e-400 ran, and was stored, as ratio=0.
+  EXPECT_NE(ErrorOf("algorithms: [{name: hc4, params: {ratio: 1e-400}}]\nproblems: [chain]\n").find("ratio"),
+            std::string::npos);
+  EXPECT_EQ(ErrorOf("algorithms: [{name: hc4, params: {ratio: 1e-310}}]\nproblems: [chain]\n"), "no error");
+}
+
 }  // namespace
 }  // namespace icp

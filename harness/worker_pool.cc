@@ -88,7 +88,9 @@ void SetUpWorker(pid_t parent, unsigned alarm_s, rlim_t cpu_s, double memory_lim
   // reserve, so many threads (TBB, OpenCV) do not use the limit up. (ASan maps
   // terabytes of shadow memory: its builds run without the limit.)
   if (memory_limit_mb > 0) {
-    const auto bytes = static_cast<rlim_t>(memory_limit_mb * 1024 * 1024);
+    // Beyond what rlim_t holds (inf, 1e300 MiB) the cast would be undefined: no limit.
+    const double wanted = memory_limit_mb * 1024 * 1024;
+    const rlim_t bytes = wanted < 0x1p63 ? static_cast<rlim_t>(wanted) : RLIM_INFINITY;
     rlimit data{bytes, bytes};
     setrlimit(RLIMIT_DATA, &data);
   }
