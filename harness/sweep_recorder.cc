@@ -1,6 +1,7 @@
 #include "harness/sweep_recorder.h"
 
 #include <filesystem>
+#include <atomic>
 #include <map>
 #include <mutex>
 #include <ostream>
@@ -17,7 +18,11 @@ namespace icp {
 namespace {
 
 volatile std::sig_atomic_t g_stop_signal = 0;
-extern "C" void OnStopSignal(int sig) { g_stop_signal = sig; }
+std::atomic<bool> g_stop_flag{false};  // lock-free: safe to set in a handler
+extern "C" void OnStopSignal(int sig) {
+  g_stop_signal = sig;
+  g_stop_flag.store(true, std::memory_order_relaxed);
+}
 
 std::string CreatedDirectory(const std::string& dir) {
   CreateOutputDirectory(dir, kChooseAnotherOut);
@@ -37,6 +42,7 @@ StopSignals::StopSignals() {
   std::lock_guard<std::mutex> lock(g_signals_mutex);
   if (g_signals_users++ > 0) return;
   g_stop_signal = 0;
+  g_stop_flag = false;
   struct sigaction sa {};
   sa.sa_handler = OnStopSignal;
   sigemptyset(&sa.sa_mask);
@@ -62,7 +68,12 @@ StopSignals::~StopSignals() {
 
 int StopSignals::Caught() { return g_stop_signal; }
 
-void StopSignals::Request(int signal) { g_stop_signal = signal; }
+void StopSignals::Request(int signal) {
+  g_stop_signal = signal;
+  g_stop_flag = true;
+}
+
+const std::atomic<bool>& StopSignals::Flag() { return g_stop_flag; }
 
 SweepRecorder::SweepRecorder(const Spec& spec, const RunnerOptions& options, std::ostream& progress,
                              bool terminal)

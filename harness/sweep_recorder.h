@@ -5,6 +5,7 @@
 #ifndef ICPBENCH_HARNESS_SWEEP_RECORDER_H_
 #define ICPBENCH_HARNESS_SWEEP_RECORDER_H_
 
+#include <atomic>
 #include <csignal>
 #include <deque>
 #include <functional>
@@ -36,6 +37,8 @@ class StopSignals {
   // exit stops those of its daemon threads); a sweep that starts later
   // begins with none caught.
   static void Request(int signal);
+  // Raised with Caught(): a cancel flag for StopCondition::WithCancelFlag.
+  static const std::atomic<bool>& Flag();
 };
 
 class SweepRecorder {

@@ -85,9 +85,10 @@ py::tuple SolveJson(const std::string& file, const std::string& algorithm, const
   options.format = "json";
   options.repeat = repeat;
   options.timeout_s = timeout_s;
-  std::atomic<bool> cancel{false};
-  options.cancel = &cancel;
-  const SolveResult result = RunInterruptibly(cancel, "solve", [&options] { return Solve(options); });
+  const SolveResult result = RunCatchingSignals("solve", [&options](const std::atomic<bool>& cancel) {
+    options.cancel = &cancel;
+    return Solve(options);
+  });
   prepared.contractor = result.contractor;
   auto& cache = PreparedCache();
   if (cache.size() >= 16) cache.clear();

@@ -29,6 +29,12 @@ WithoutGil::~WithoutGil() {
 
 const std::atomic<bool>& Exiting() { return exiting; }
 
+bool IsMainThread() {
+  // Never destroyed: a Python object must not outlive the interpreter's end.
+  static const auto* main_thread = new py::object(py::module_::import("threading").attr("main_thread"));
+  return PyThread_get_thread_ident() == (*main_thread)().attr("ident").cast<unsigned long>();
+}
+
 void BindExit(py::module_& m) {
   // atexit hooks run before CPython starts to finalize, with the threads
   // still able to take the GIL: this one gives it up while it waits.

@@ -4,19 +4,16 @@
 
 #include <pybind11/pybind11.h>
 
+#include <signal.h>
+
 #include <atomic>
-#include <chrono>
-#include <condition_variable>
-#include <deque>
-#include <functional>
-#include <future>
-#include <mutex>
+#include <csignal>
 #include <optional>
 #include <string>
-#include <thread>
 #include <utility>
 
 #include "core/params.h"
+#include "harness/sweep_recorder.h"
 
 namespace icp::python {
 
@@ -49,85 +46,47 @@ class WithoutGil {
 const std::atomic<bool>& Exiting();
 void BindExit(py::module_& m);   // module_exit.cc: the atexit hook
 
-// A thread of its own for one object's calls (an Estimator stepped by
-// hand), so that a call need not start one: the calls run in turn, in the
-// order they came.
-class Worker {
- public:
-  Worker() : thread_([this] { Loop(); }) {}
-  ~Worker() {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      done_ = true;
-    }
-    wake_.notify_one();
-    thread_.join();
-  }
-  Worker(const Worker&) = delete;
-  Worker& operator=(const Worker&) = delete;
-  std::future<void> Post(std::function<void()> work) {
-    std::packaged_task<void()> task(std::move(work));
-    std::future<void> done = task.get_future();
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      tasks_.push_back(std::move(task));
-    }
-    wake_.notify_one();
-    return done;
-  }
+// Whether this is Python's main thread, the one that sees Ctrl-C (after a
+// fork, the thread that forked).
+bool IsMainThread();
 
- private:
-  void Loop() {
-    std::unique_lock<std::mutex> lock(mutex_);
-    while (true) {
-      wake_.wait(lock, [this] { return done_ || !tasks_.empty(); });
-      if (tasks_.empty()) return;  // done_
-      std::packaged_task<void()> task = std::move(tasks_.front());
-      tasks_.pop_front();
-      lock.unlock();
-      task();
-      lock.lock();
-    }
-  }
-
-  std::mutex mutex_;
-  std::condition_variable wake_;
-  std::deque<std::packaged_task<void()>> tasks_;
-  bool done_ = false;
-  std::thread thread_;  // last: started once the rest is ready
-};
-
-// Runs work (C++ that honours cancel and needs no GIL) on worker (a new
-// thread where worker is null) while this one, every 50 ms, lets Python see
-// a Ctrl-C (its handler only flags the signal; the check needs the GIL):
-// then cancel is raised and, once work has returned, KeyboardInterrupt. As
-// the interpreter exits, cancel is raised and RuntimeError("icpbench: WHAT
-// cancelled ...") thrown. A thread other than the main one sees no signal,
-// as in Python itself. Called with the GIL held; work's own exceptions
-// reach the caller.
+// Runs work(cancel) in this thread with the GIL released: C++ that needs no
+// GIL and stops soon after cancel is raised. On the main thread (unless
+// SIGINT is ignored, as in a sweep's worker) SIGINT, SIGTERM and SIGHUP are
+// caught meanwhile by the handlers sweeps use (StopSignals: a signal stops
+// a sweep running in another thread too) and raise cancel; afterwards
+// KeyboardInterrupt is raised for SIGINT, and SIGTERM or SIGHUP is raised
+// again once Python's handlers are back. Another thread sees no signal, as
+// in Python; there cancel is the interpreter's exit, after which
+// RuntimeError("icpbench: WHAT cancelled, the interpreter is exiting") is
+// raised. Called with the GIL held; work's own exceptions reach the caller.
 template <class Work>
-auto RunInterruptibly(std::atomic<bool>& cancel, const std::string& what, Work work,
-                      Worker* worker = nullptr) {
-  using Result = decltype(work());
+auto RunCatchingSignals(const std::string& what, Work work) {
+  using Result = decltype(work(std::declval<const std::atomic<bool>&>()));
   std::optional<Result> result;
-  bool interrupted = false, exited = false;
-  {
-    WithoutGil release;
-    auto task = [&result, &work] { result.emplace(work()); };
-    std::future<void> running =
-        worker != nullptr ? worker->Post(task) : std::async(std::launch::async, task);
-    while (running.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
-      if (Exiting()) {  // the interpreter's exit waits for this call
-        exited = cancel = true;
-        continue;
-      }
-      py::gil_scoped_acquire gil;
-      if (!interrupted && PyErr_CheckSignals() != 0) interrupted = cancel = true;
-    }
-    if (!interrupted && !exited) running.get();  // work's exception, if any
+  bool catching = IsMainThread();
+  if (catching) {
+    struct sigaction now {};
+    sigaction(SIGINT, nullptr, &now);
+    catching = now.sa_handler != SIG_IGN;
   }
-  if (interrupted) throw py::error_already_set();
-  if (exited) {
+  int caught = 0;
+  {
+    std::optional<StopSignals> signals;
+    if (catching) signals.emplace();
+    const std::atomic<bool>& cancel = catching ? StopSignals::Flag() : Exiting();
+    {
+      WithoutGil release;
+      result.emplace(work(cancel));
+    }
+    if (catching) caught = StopSignals::Caught();
+  }  // Python's handlers are back
+  if (caught == SIGINT) {
+    PyErr_SetNone(PyExc_KeyboardInterrupt);
+    throw py::error_already_set();
+  }
+  if (caught != 0) std::raise(caught);
+  if (!catching && Exiting()) {
     PyErr_SetString(PyExc_RuntimeError, ("icpbench: " + what + " cancelled, the interpreter is exiting").c_str());
     throw py::error_already_set();
   }

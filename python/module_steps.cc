@@ -130,8 +130,7 @@ class PyEstimator {
                             "' (seed " + std::to_string(s.stream->seed) +
                             ") from another icpbench.problem(): make a new estimator for it");
     stream_ = s.stream;
-    std::atomic<bool> cancel{false};
-    auto step = [this, &s, timeout_s, &cancel] {
+    auto step = [this, &s, timeout_s](const std::atomic<bool>& cancel) {
       std::lock_guard<std::mutex> turn(busy_);
       StopCondition stop = timeout_s < std::numeric_limits<double>::infinity()
                                ? StopCondition::After(std::chrono::duration<double>(timeout_s))
@@ -146,15 +145,10 @@ class PyEstimator {
       out.space = s.step->views.space;
       return out;
     };
-    // A Python estimator's code sees Ctrl-C itself; a C++ one's step runs
-    // in a thread of its own while this one watches for it.
-    if (!IsPythonAlgorithm(info_->name)) {
-      if (!worker_) worker_ = std::make_unique<Worker>();
-      return RunInterruptibly(cancel, "the step", step, worker_.get());
-    }
+    // A Python estimator's code sees Ctrl-C itself.
+    if (!IsPythonAlgorithm(info_->name)) return RunCatchingSignals("the step", step);
     WithoutGil release;
-    if (Exiting()) cancel = true;
-    return step();
+    return step(Exiting());
   }
   py::dict RunProperties() {
     Properties properties;
@@ -174,7 +168,6 @@ class PyEstimator {
   StepJudges judges_;
   std::shared_ptr<const Stream> stream_;  // of the steps stepped so far
   std::mutex busy_;
-  std::unique_ptr<Worker> worker_;  // a C++ estimator's steps run there
 };
 
 const Estimate& EstimateOf(const PyEstimate& e) { return *e.result->estimate; }

@@ -90,8 +90,7 @@ py::tuple ContractCsp(const PyView& v, const py::handle& lo, const py::handle& h
     throw py::value_error("carry is a parameter of an estimator over windows; contract() contracts "
                           "the box it is given");
   if (box.IsEmpty()) return BoundsOf(box);
-  std::atomic<bool> cancel{false};
-  const Box contracted = RunInterruptibly(cancel, "the contraction", [&] {
+  const Box contracted = RunCatchingSignals("the contraction", [&](const std::atomic<bool>& cancel) {
     std::unique_ptr<Contractor> contractor = info.contractor(contractor_params, view.csp);
     ContractContext context(StopCondition().WithCancelFlag(&cancel));
     Box out = box;
@@ -178,8 +177,7 @@ py::tuple ContractSighting(const PyView& v, std::size_t i, int landmark, const p
   Box box = BoxFromBounds(lo, hi, 3);
   if (box.IsEmpty()) return BoundsOf(box);
   const ConstraintSystem csp = PoseSighting(l->x, l->y, view.observations[i], box);
-  std::atomic<bool> cancel{false};
-  const Box contracted = RunInterruptibly(cancel, "the contraction", [&] {
+  const Box contracted = RunCatchingSignals("the contraction", [&](const std::atomic<bool>& cancel) {
     ContractContext context(StopCondition().WithCancelFlag(&cancel));
     Box out = box;
     info.contractor({}, csp)->Contract(out, context);
