@@ -1,14 +1,19 @@
 #include "core/near_names.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstddef>
 
 namespace icp {
 namespace {
 
+bool SameLetter(char a, char b) {
+  return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
+}
+
 // Optimal string alignment distance (Damerau-Levenshtein without repeated
 // edits of a substring): a swapped pair of letters, the commonest typo,
-// costs 1.
+// costs 1; case is ignored (HC4 is hc4 written as the paper writes it).
 std::size_t EditDistance(std::string_view a, std::string_view b) {
   const std::size_t n = a.size(), m = b.size();
   std::vector<std::vector<std::size_t>> d(n + 1, std::vector<std::size_t>(m + 1));
@@ -16,9 +21,9 @@ std::size_t EditDistance(std::string_view a, std::string_view b) {
   for (std::size_t j = 0; j <= m; ++j) d[0][j] = j;
   for (std::size_t i = 1; i <= n; ++i) {
     for (std::size_t j = 1; j <= m; ++j) {
-      const std::size_t substitution = d[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
+      const std::size_t substitution = d[i - 1][j - 1] + !SameLetter(a[i - 1], b[j - 1]);
       d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, substitution});
-      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+      if (i > 1 && j > 1 && SameLetter(a[i - 1], b[j - 2]) && SameLetter(a[i - 2], b[j - 1]))
         d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
     }
   }

@@ -121,6 +121,8 @@ TEST(NearNamesTest, SuggestsOnlyALikelyMisspelling) {
   EXPECT_EQ(DidYouMean("porblems", keys), "; did you mean 'problems'?");  // a swap is one edit
   EXPECT_EQ(DidYouMean("timeout", keys), "; did you mean 'timeout_s'?");  // 2 of 7 off
   EXPECT_EQ(DidYouMean("time", keys), "");  // 5 off
+  EXPECT_EQ(DidYouMean("Seeds", keys), "; did you mean 'seeds'?");  // case ignored
+  EXPECT_EQ(DidYouMean("HC4", {"hc3", "hc4", "bc4"}), "; did you mean 'hc4'?");
   EXPECT_EQ(DidYouMean("speed", keys), "");
   EXPECT_EQ(DidYouMean("", keys), "");
   EXPECT_EQ(DidYouMean("ab", {"ac", "ad"}), "");  // tied

@@ -378,6 +378,18 @@ class Reader {
 
 namespace {
 
+// Whether line `line` (0-based) of text has a tab before its first other character.
+bool IndentationHasATab(const std::string& text, int line) {
+  std::size_t start = 0;
+  for (int i = 0; i < line && start != std::string::npos; ++i) {
+    start = text.find('\n', start);
+    if (start != std::string::npos) ++start;
+  }
+  if (start == std::string::npos) return false;
+  const std::size_t first = text.find_first_not_of(" \t", start);
+  return text.find('\t', start) < (first == std::string::npos ? text.size() : first);
+}
+
 Spec ParseSpecText(const std::string& text, const std::string& source) {
   Reader reader(source);
   YAML::Node root;
@@ -392,6 +404,12 @@ Spec ParseSpecText(const std::string& text, const std::string& source) {
   } catch (const YAML::ParserException& e) {
     std::ostringstream out;
     out << source << ":" << e.mark.line + 1 << ":" << e.mark.column + 1 << ": " << e.msg;
+    // yaml-cpp says "illegal block entry" or the like for a tab it met in
+    // the indentation: YAML indents with spaces only.
+    if (e.mark.line >= 0 && IndentationHasATab(text, e.mark.line))
+      out << " (line " << e.mark.line + 1 << " is indented with a tab: YAML indents with spaces)";
+    else if (e.msg == "bad file")
+      out << " (nested too deeply?)";
     throw SpecError(out.str());
   }
   if (!root || root.IsNull()) throw SpecError(source + ": empty spec");

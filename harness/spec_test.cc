@@ -401,6 +401,11 @@ TEST(SpecTest, SeedsAreDecimalDigitsAndLimitsTakeEverySpellingOfZeroAndInfinity)
             kInf);
 }
 
+TEST(SpecTest, ATabInTheIndentationIsNamed) {
+  const std::string error = ErrorOf("algorithms:\n\t- hc4\nproblems: [chain]\n");
+  EXPECT_NE(error.find("line 2 is indented with a tab"), std::string::npos) << error;
+}
+
 TEST(SpecTest, AValueThatUnderflowsIsRefusedNotReadAsZero) {
   // ratio: 1e-400 ran, and was stored, as ratio=0.
   EXPECT_NE(ErrorOf("algorithms: [{name: hc4, params: {ratio: 1e-400}}]\nproblems: [chain]\n").find("ratio"),
