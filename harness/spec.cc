@@ -378,18 +378,6 @@ class Reader {
 
 namespace {
 
-// Whether line `line` (0-based) of text has a tab before its first other character.
-bool IndentationHasATab(const std::string& text, int line) {
-  std::size_t start = 0;
-  for (int i = 0; i < line && start != std::string::npos; ++i) {
-    start = text.find('\n', start);
-    if (start != std::string::npos) ++start;
-  }
-  if (start == std::string::npos) return false;
-  const std::size_t first = text.find_first_not_of(" \t", start);
-  return text.find('\t', start) < (first == std::string::npos ? text.size() : first);
-}
-
 Spec ParseSpecText(const std::string& text, const std::string& source) {
   Reader reader(source);
   YAML::Node root;
@@ -480,36 +468,6 @@ Spec ParseSpec(const std::string& text, const std::string& source) {
     out << ": " << e.msg;
     throw SpecError(out.str());
   }
-}
-
-ParamMap NonDefaultParams(const ParamMap& defaults, const ParamMap& params) {
-  ParamMap out;
-  for (const auto& [key, value] : params) {
-    const auto it = defaults.find(key);
-    if (it == defaults.end() || it->second != value) out[key] = value;
-  }
-  return out;
-}
-
-namespace {
-// The current defaults of a plugin's parameters ({} for one not registered).
-template <class Registry>
-ParamMap DefaultsOf(const Registry& registry, const std::string& name) {
-  ParamMap out;
-  for (const auto& info : registry)
-    if (info.name == name)
-      for (const ParamInfo& p : info.params(info.name)) out[p.name] = p.default_value;
-  return out;
-}
-}  // namespace
-
-ParamMap AlgorithmDefaults(const std::string& name) { return DefaultsOf(Algorithms(), name); }
-ParamMap ProblemDefaults(const std::string& name) { return DefaultsOf(Problems(), name); }
-
-RunSpec WithoutDefaults(RunSpec spec) {
-  spec.algorithm_params = NonDefaultParams(AlgorithmDefaults(spec.algorithm), spec.algorithm_params);
-  spec.problem_params = NonDefaultParams(ProblemDefaults(spec.problem), spec.problem_params);
-  return spec;
 }
 
 Spec LoadSpec(const std::string& path) { return ParseSpec(ReadSpecText(path), path); }

@@ -52,4 +52,15 @@ std::optional<YAML::Mark> SecondDocumentMark(const std::string& text) {
   return finder.second;
 }
 
+bool IndentationHasATab(const std::string& text, int line) {
+  std::size_t start = 0;
+  for (int i = 0; i < line && start != std::string::npos; ++i) {
+    start = text.find('\n', start);
+    if (start != std::string::npos) ++start;
+  }
+  if (start == std::string::npos) return false;
+  const std::size_t first = text.find_first_not_of(" \t", start);
+  return text.find('\t', start) < (first == std::string::npos ? text.size() : first);
+}
+
 }  // namespace icp

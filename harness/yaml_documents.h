@@ -17,6 +17,10 @@ namespace icp {
 // text that does not parse.
 std::optional<YAML::Mark> SecondDocumentMark(const std::string& text);
 
+// Whether line `line` (0-based) of text has a tab before its first other
+// character: yaml-cpp's "illegal block entry" and the like, said plainly.
+bool IndentationHasATab(const std::string& text, int line);
+
 }  // namespace icp
 
 #endif  // ICPBENCH_HARNESS_YAML_DOCUMENTS_H_
