@@ -118,8 +118,6 @@ class Reader {
   // A timeout in seconds; inf (YAML's .inf too) or any huge value means no
   // limit (the runner and StopCondition treat them so).
   double Timeout(const YAML::Node& node, const std::string& key) const {
-    const std::string text = Scalar(node, key);
-    if (text == ".inf" || text == ".Inf" || text == ".INF") return kInf;
     return Positive(node, key);
   }
 
@@ -135,7 +133,6 @@ class Reader {
     const std::string text = Scalar(node, key);
     double zero = 1;
     if (ParseDouble(text, &zero) && zero == 0) return 0;  // 0, 0.0, -0
-    if (text == ".inf" || text == ".Inf" || text == ".INF") return kInf;
     const double v = Positive(node, key);
     if (v < kMinMemoryLimitMb)
       Fail(node, key, "'" + text + "' is below the least a worker needs (" +
@@ -143,8 +140,10 @@ class Reader {
     return v;
   }
 
+  // A number > 0; inf in YAML's spellings (.inf, .Inf, .INF) too.
   double Positive(const YAML::Node& node, const std::string& key) const {
     const std::string text = Scalar(node, key);
+    if (text == ".inf" || text == ".Inf" || text == ".INF") return kInf;
     double v = 0;
     if (!ParseDouble(text, &v) || !(v > 0)) Fail(node, key, "'" + text + "' is not a positive number");
     return v;

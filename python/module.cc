@@ -23,14 +23,18 @@
 
 namespace icp::python {
 
+char DtypeKind(const py::handle& value) {
+  if (!py::hasattr(value, "dtype")) return 0;
+  const std::string kind = py::str(value.attr("dtype").attr("kind"));
+  return kind.size() == 1 ? kind[0] : 0;
+}
+
 ParamMap ToParamMap(const py::dict& params) {
   ParamMap map;
   for (const auto& [key, value] : params) {
     const std::string name = py::str(key);
     // NumPy's bool is a bool too (its text, "True", is not one).
-    const bool numpy_bool = py::hasattr(value, "dtype") &&
-                            py::str(value.attr("dtype").attr("kind")).cast<std::string>() == "b";
-    if (py::isinstance<py::bool_>(value) || numpy_bool)
+    if (py::isinstance<py::bool_>(value) || DtypeKind(value) == 'b')
       map[name] = PyObject_IsTrue(value.ptr()) == 1 ? "true" : "false";
     else if (py::isinstance<py::float_>(value))  // a float's repr round-trips (NumPy 2's
       map[name] = py::str(py::repr(py::float_(PyFloat_AsDouble(value.ptr()))));  // says np.float64(...))

@@ -17,7 +17,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "algorithms/registry.h"
@@ -165,12 +164,10 @@ class PythonEstimator : public Estimator {
   // (a count from np.sum) as integers, its floats as reals; anything else
   // but text is refused rather than stored as its str().
   static Property ToProperty(const std::string& name, const py::handle& value) {
-    const std::string kind =
-        py::hasattr(value, "dtype") ? py::str(value.attr("dtype").attr("kind")).cast<std::string>() : "";
+    const char kind = DtypeKind(value);  // a NumPy scalar's, not an array's
+    const bool numpy_scalar = kind != 0 && py::isinstance(value, py::module_::import("numpy").attr("generic"));
     if (py::isinstance<py::bool_>(value) || py::isinstance<py::int_>(value) ||
-        (kind.size() == 1 && std::string_view("biu").find(kind[0]) != std::string_view::npos &&
-         py::isinstance(value, py::module_::import("numpy").attr("generic"))))
-    {
+        (numpy_scalar && (kind == 'b' || kind == 'i' || kind == 'u'))) {
       const py::int_ integer(py::reinterpret_borrow<py::object>(value));
       int overflow = 0;
       const long long v = PyLong_AsLongLongAndOverflow(integer.ptr(), &overflow);
@@ -179,8 +176,7 @@ class PythonEstimator : public Estimator {
                              ": beyond 64 bits");
       return {name, static_cast<std::int64_t>(v)};
     }
-    if (py::isinstance<py::float_>(value) ||
-        (kind == "f" && py::isinstance(value, py::module_::import("numpy").attr("generic"))))
+    if (py::isinstance<py::float_>(value) || (numpy_scalar && kind == 'f'))
       return {name, PyFloat_AsDouble(value.ptr())};
     if (py::isinstance<py::str>(value)) return {name, value.cast<std::string>()};
     throw py::cast_error("property '" + name + "' is " + std::string(py::str(py::repr(value))) +

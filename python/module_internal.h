@@ -22,6 +22,9 @@ namespace py = pybind11;
 // A Python dict of parameters as the command line's key=value strings:
 // True/False become true/false, numbers and strings their str().
 ParamMap ToParamMap(const py::dict& params);
+// The NumPy dtype kind of value ('b' bool, 'i'/'u' integer, 'f' float, ...),
+// 0 for a value without a dtype (a Python number, a string).
+char DtypeKind(const py::handle& value);
 
 // C++ work done with the GIL released, counted so that the interpreter's
 // exit can wait for it. A daemon thread still inside such work when Python

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <functional>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -77,6 +79,17 @@ const ProbabilisticView& ModelOf(const PyView& v) {
   return *v.views->probabilistic;
 }
 
+// box contracted by the contractor make() builds, with the GIL released
+// and Ctrl-C stopping it (RunCatchingSignals).
+Box Contracted(const Box& box, const std::function<std::unique_ptr<Contractor>()>& make) {
+  return RunCatchingSignals("the contraction", [&](const std::atomic<bool>& cancel) {
+    ContractContext context(StopCondition().WithCancelFlag(&cancel));
+    Box out = box;
+    make()->Contract(out, context);
+    return out;
+  });
+}
+
 // Contracts (lo, hi) over the CSP's variables with a registered CSP contractor.
 py::tuple ContractCsp(const PyView& v, const py::handle& lo, const py::handle& hi,
                       const std::string& algorithm, const py::dict& params) {
@@ -90,14 +103,7 @@ py::tuple ContractCsp(const PyView& v, const py::handle& lo, const py::handle& h
     throw py::value_error("carry is a parameter of an estimator over windows; contract() contracts "
                           "the box it is given");
   if (box.IsEmpty()) return BoundsOf(box);
-  const Box contracted = RunCatchingSignals("the contraction", [&](const std::atomic<bool>& cancel) {
-    std::unique_ptr<Contractor> contractor = info.contractor(contractor_params, view.csp);
-    ContractContext context(StopCondition().WithCancelFlag(&cancel));
-    Box out = box;
-    contractor->Contract(out, context);
-    return out;
-  });
-  return BoundsOf(contracted);
+  return BoundsOf(Contracted(box, [&] { return info.contractor(contractor_params, view.csp); }));
 }
 
 const LandmarkObservationView& ObservationsOf(const PyView& v) {
@@ -177,13 +183,7 @@ py::tuple ContractSighting(const PyView& v, std::size_t i, int landmark, const p
   Box box = BoxFromBounds(lo, hi, 3);
   if (box.IsEmpty()) return BoundsOf(box);
   const ConstraintSystem csp = PoseSighting(l->x, l->y, view.observations[i], box);
-  const Box contracted = RunCatchingSignals("the contraction", [&](const std::atomic<bool>& cancel) {
-    ContractContext context(StopCondition().WithCancelFlag(&cancel));
-    Box out = box;
-    info.contractor({}, csp)->Contract(out, context);
-    return out;
-  });
-  return BoundsOf(contracted);
+  return BoundsOf(Contracted(box, [&] { return info.contractor({}, csp); }));
 }
 
 py::tuple ContractMeasurement(const PyView& v, std::size_t i, const py::handle& lo,

@@ -28,7 +28,13 @@ namespace icp::web {
 
 namespace {
 
-void SendError(httplib::Response& res, int status, const std::string& message) {
+// An error's JSON, sent whole: cpp-httplib slices whatever answer it sends
+// by the request's Range header (a 400 cut to its bytes 10-, a 416 in
+// pieces), so the ranges are forgotten. The request is the server's own
+// (made non-const), handed to handlers as const.
+void SendError(const httplib::Request& req, httplib::Response& res, int status,
+               const std::string& message) {
+  const_cast<httplib::Request&>(req).ranges.clear();
   res.status = status;
   res.set_content(nlohmann::json({{"error", message}}).dump(-1, ' ', false,
                                                            nlohmann::json::error_handler_t::replace),
@@ -114,14 +120,10 @@ std::set<std::string> LoopbackHostNames(const std::string& host, const std::stri
   return names;
 }
 
-// cpp-httplib slices whatever answer it sends by the request's Range header,
-// an error's JSON included (a 400 cut to its bytes 10-, a 416 in pieces).
-// An error is sent whole: the ranges are forgotten. The request is the
-// server's own (made non-const), handed to handlers as const.
-void SendWholeError(const httplib::Request& req, httplib::Response& res, int status,
-                    const std::string& message) {
-  const_cast<httplib::Request&>(req).ranges.clear();
-  SendError(res, status, message);
+// Read-only: any other method is a 405 naming the allowed ones.
+void SendNotAllowed(const httplib::Request& req, httplib::Response& res) {
+  res.set_header("Allow", "GET, HEAD");
+  SendError(req, res, 405, req.method + " is not allowed: the server only reads (GET, HEAD)");
 }
 
 std::string Lowercase(std::string text) {
@@ -156,40 +158,34 @@ void Serve(const ServeOptions& options, const std::function<void(const std::stri
   RegisterEstimateApi(server, options.dir);
   RegisterCompareApi(server, options.dir);
   RegisterFiles(server, options.dir, ICPBENCH_WEB_ASSETS, ICPBENCH_CHART_JS);
-  // Read-only: any other method is a 405 naming the allowed ones.
-  const auto not_allowed = [](const httplib::Request& req, httplib::Response& res) {
-    res.set_header("Allow", "GET, HEAD");
-    SendWholeError(req, res, 405, req.method + " is not allowed: the server only reads (GET, HEAD)");
-  };
-  server.Post(".*", not_allowed);
-  server.Put(".*", not_allowed);
-  server.Patch(".*", not_allowed);
-  server.Delete(".*", not_allowed);
-  server.Options(".*", not_allowed);
+  server.Post(".*", SendNotAllowed);
+  server.Put(".*", SendNotAllowed);
+  server.Patch(".*", SendNotAllowed);
+  server.Delete(".*", SendNotAllowed);
+  server.Options(".*", SendNotAllowed);
   server.set_exception_handler([](const httplib::Request& req, httplib::Response& res, std::exception_ptr e) {
     try {
       std::rethrow_exception(e);
     } catch (const HttpError& error) {
-      SendWholeError(req, res, error.status, error.what());
+      SendError(req, res, error.status, error.what());
     } catch (const std::exception& error) {
-      SendWholeError(req, res, 500, error.what());
+      SendError(req, res, 500, error.what());
     }
   });
   server.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
     if (!res.body.empty()) return;
     if (res.status == 404) {
-      SendWholeError(req, res, 404, "no such page: " + req.path);
+      SendError(req, res, 404, "no such page: " + req.path);
     } else if (res.status == 414) {
-      SendWholeError(req, res, 414, "the URL is too long");
+      SendError(req, res, 414, "the URL is too long");
     } else if (res.status == 413) {
-      SendWholeError(req, res, 413, "the request has a body: the server takes none");
+      SendError(req, res, 413, "the request has a body: the server takes none");
     } else if (res.status == 400 && req.method != "GET" && req.method != "HEAD") {
       // cpp-httplib refuses a method it does not know, or a POST without a
       // body, before routing: still a method the server does not allow.
-      res.set_header("Allow", "GET, HEAD");
-      SendWholeError(req, res, 405, req.method + " is not allowed: the server only reads (GET, HEAD)");
+      SendNotAllowed(req, res);
     } else {
-      SendWholeError(req, res, res.status, "bad request (HTTP status " + std::to_string(res.status) + ")");
+      SendError(req, res, res.status, "bad request (HTTP status " + std::to_string(res.status) + ")");
     }
   });
   // The API takes no body: a large one (1 GiB to a GET or a POST) was read
@@ -224,18 +220,18 @@ void Serve(const ServeOptions& options, const std::function<void(const std::stri
     names.insert(Lowercase(name));
   server.set_pre_routing_handler([names](const httplib::Request& req, httplib::Response& res) {
     if (!names.empty() && names.count(Lowercase(req.get_header_value("Host"))) == 0) {
-      SendWholeError(req, res, 403, "host '" + req.get_header_value("Host") + "' not served (use " +
-                              *names.begin() + ")");
+      SendError(req, res, 403, "host '" + req.get_header_value("Host") + "' not served (use " +
+                                   *names.begin() + ")");
       return httplib::Server::HandlerResponse::Handled;
     }
     // Many ranges of one body would multiply it in the answer (300 ranges of
     // a 200 kB figure: 60 MB built in memory); one range is enough to resume.
     if (req.get_header_value("Range").find(',') != std::string::npos) {
-      SendWholeError(req, res, 416, "one byte range per request");
+      SendError(req, res, 416, "one byte range per request");
       return httplib::Server::HandlerResponse::Handled;
     }
     if (const std::string problem = BadQuery(req); !problem.empty()) {
-      SendWholeError(req, res, 400, problem);
+      SendError(req, res, 400, problem);
       return httplib::Server::HandlerResponse::Handled;
     }
     return httplib::Server::HandlerResponse::Unhandled;
